@@ -1,0 +1,162 @@
+"""Jourdain and Reygner: sticky particle dynamics (SPD) and multitype SPD, Figures 1-7."""
+
+STICKY = config["sticky"]
+SPD_CODE = code("jit.py", "validation.py", "sticky/spd.py")
+SCALAR_CODE = SPD_CODE + code("norms.py", "sticky/measures.py", "sticky/exact.py", "sticky/cases.py")
+MSPD_CODE = SCALAR_CODE + code("sticky/mspd.py", "sticky/psystem.py")
+PLOT_CODE = code("plotting.py")
+
+# Figures 4-7 show two p-system runs: figure -> (case, panel kind).
+PSYSTEM_FIGURES = {
+    "fig4": ("rarefaction", "trajectories"),
+    "fig5": ("rarefaction", "fields"),
+    "fig6": ("shocks", "trajectories"),
+    "fig7": ("shocks", "fields"),
+}
+STICKY_FIGURES = expand("figures/sticky/fig{number}.{ext}", number=range(1, 8), ext=["pdf", "png"])
+
+
+rule sticky_fig1:
+    """Figure 1: one iteration of the hull algorithm on a small random example."""
+    input:
+        code=SPD_CODE + PLOT_CODE + code("sticky/hull_reference.py"),
+    output:
+        **figure("figures/sticky/fig1"),
+    params:
+        cfg=STICKY["fig1"],
+    log:
+        "logs/sticky/fig1.log",
+    script:
+        "../scripts/sticky/plot_fig1.py"
+
+
+rule sticky_scalar_data:
+    """Figures 2 and 3: SPD trajectories, u(t, x), profiles and exact L1 errors."""
+    input:
+        code=SCALAR_CODE,
+    output:
+        "results/sticky/{figure}.npz",
+    wildcard_constraints:
+        figure="fig2|fig3",
+    params:
+        cfg=lambda wildcards: STICKY[wildcards.figure],
+    log:
+        "logs/sticky/{figure}_data.log",
+    script:
+        "../scripts/sticky/scalar_data.py"
+
+
+rule sticky_scalar_figure:
+    """Figures 2 and 3: plot panels (a)-(d) from the cached results."""
+    input:
+        data="results/sticky/{figure}.npz",
+        code=PLOT_CODE,
+    output:
+        **figure("figures/sticky/{figure}"),
+    wildcard_constraints:
+        figure="fig2|fig3",
+    params:
+        case=lambda wildcards: STICKY[wildcards.figure]["case"],
+    log:
+        "logs/sticky/{figure}_plot.log",
+    script:
+        "../scripts/sticky/plot_scalar.py"
+
+
+rule sticky_psystem_data:
+    """Figures 4-7: iterated TSPD for the p-system, trajectories and space-time fields."""
+    input:
+        code=MSPD_CODE,
+    output:
+        "results/sticky/psystem_{case}.npz",
+    wildcard_constraints:
+        case="rarefaction|shocks",
+    params:
+        system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
+        cfg=lambda wildcards: STICKY["psystem"][wildcards.case],
+    log:
+        "logs/sticky/psystem_{case}.log",
+    script:
+        "../scripts/sticky/psystem_data.py"
+
+
+rule sticky_psystem_figure:
+    """Figures 4 and 6 (trajectories), 5 and 7 (w-, w+, u, v) from the cached runs."""
+    input:
+        data=lambda wildcards: f"results/sticky/psystem_{PSYSTEM_FIGURES[wildcards.figure][0]}.npz",
+        code=PLOT_CODE,
+    output:
+        **figure("figures/sticky/{figure}"),
+    wildcard_constraints:
+        figure="fig4|fig5|fig6|fig7",
+    params:
+        case=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][0],
+        kind=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][1],
+        x0=lambda wildcards: STICKY["psystem"][PSYSTEM_FIGURES[wildcards.figure][0]]["x0"],
+    log:
+        "logs/sticky/{figure}_plot.log",
+    script:
+        "../scripts/sticky/plot_psystem.py"
+
+
+rule sticky_lemma21:
+    """Lemma 2.1 and the tail examples: W1 error of the discretisation (2.1)."""
+    input:
+        code=code("validation.py", "norms.py", "sticky/measures.py"),
+    output:
+        "results/sticky/lemma21.npz",
+    params:
+        cfg=STICKY["lemma21"],
+    log:
+        "logs/sticky/lemma21.log",
+    script:
+        "../scripts/sticky/lemma21_data.py"
+
+
+rule sticky_remark33:
+    """Remark 3.3: exact t/(4n) error from one Dirac mass; SPD vs front tracking."""
+    input:
+        code=SCALAR_CODE + code("sticky/events.py"),
+    output:
+        "results/sticky/remark33.npz",
+    params:
+        cfg=STICKY["remark33"],
+    log:
+        "logs/sticky/remark33.log",
+    script:
+        "../scripts/sticky/remark33_data.py"
+
+
+rule sticky_tspd_convergence:
+    """Theorem 4.4: iterated TSPD errors against a fine reference run."""
+    input:
+        code=MSPD_CODE,
+    output:
+        "results/sticky/tspd_convergence.npz",
+    params:
+        system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
+        case=lambda wildcards: STICKY["psystem"][STICKY["tspd_convergence"]["case"]],
+        cfg=STICKY["tspd_convergence"],
+    log:
+        "logs/sticky/tspd_convergence.log",
+    script:
+        "../scripts/sticky/tspd_convergence_data.py"
+
+
+rule sticky_claims:
+    """Measure every sticky claim from the cached results."""
+    input:
+        burgers="results/sticky/fig2.npz",
+        concave="results/sticky/fig3.npz",
+        rarefaction="results/sticky/psystem_rarefaction.npz",
+        shocks="results/sticky/psystem_shocks.npz",
+        lemma21="results/sticky/lemma21.npz",
+        remark33="results/sticky/remark33.npz",
+        tspd="results/sticky/tspd_convergence.npz",
+        code=code("claims.py", "convergence.py", "sticky/hull_reference.py", "sticky/spd.py"),
+    output:
+        "results/sticky/claims.csv",
+    log:
+        "logs/sticky/claims.log",
+    script:
+        "../scripts/sticky/claims.py"

@@ -1,0 +1,43 @@
+"""Figures 4 to 7: MSPD trajectories (4, 6) and w-, w+, u, v in the space-time plane (5, 7)."""
+
+from particle_methods.plotting import label_panel, new_figure, save_figure
+from particle_methods.sticky.psystem import MINUS, PLUS
+from particle_methods.workflow import load_results, logged
+
+CASE_TITLES = {
+    "rarefaction": "p-system, w0+ >= w0- (x0 = {x0:g})",
+    "shocks": "p-system with shocks, w0+ = 1{{x >= 0}} (x0 = {x0:g})",
+}
+
+
+def trajectories(d, title, output):
+    fig, ax = new_figure(1, 1, width=7, height=5)
+    path = d["trajectories"]
+    ax.plot(path[:, MINUS], d["times"], color="tab:blue", lw=0.9)
+    ax.plot(path[:, PLUS], d["times"], color="tab:red", lw=0.9)
+    ax.plot([], [], color="tab:blue", label="type - (w-)")
+    ax.plot([], [], color="tab:red", label="type + (w+)")
+    ax.set(xlabel="x", ylabel="t")
+    ax.legend(loc="upper right")
+    step = d["times"][1] - d["times"][0]
+    ax.set_title(f"{title}: {path.shape[-1]} particles per type, iterated TSPD, Delta = {step:g}")
+    save_figure(fig, output.pdf, output.png)
+
+
+def fields(d, title, output):
+    fig, axes = new_figure(2, 2, width=11, height=8)
+    panels = [("w_minus", "(a) w-"), ("w_plus", "(b) w+"), ("u", "(c) specific volume u"), ("v", "(d) velocity v")]
+    for ax, (key, label) in zip(axes.flat, panels):
+        mesh = ax.pcolormesh(d["field_x"], d["times"], d[key], shading="auto", rasterized=True)
+        fig.colorbar(mesh, ax=ax, label=label.split(" ", 1)[1])
+        ax.set(xlabel="x", ylabel="t")
+        label_panel(ax, label)
+    n = d["field_path"].shape[-1]
+    fig.suptitle(f"{title}: iterated TSPD with n = {n} per type, Delta = {d['times'][1] - d['times'][0]:g}")
+    save_figure(fig, output.pdf, output.png)
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    data = load_results(snakemake.input.data)  # noqa: F821
+    heading = CASE_TITLES[snakemake.params.case].format(x0=snakemake.params.x0)  # noqa: F821
+    {"trajectories": trajectories, "fields": fields}[snakemake.params.kind](data, heading, snakemake.output)  # noqa: F821

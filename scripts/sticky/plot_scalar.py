@@ -1,0 +1,59 @@
+"""Figures 2 and 3: (a) trajectories, (b) u(t, x), (c) profiles, (d) log L1 error against p."""
+
+import matplotlib as mpl
+import numpy as np
+
+from particle_methods.plotting import label_panel, new_figure, save_figure
+from particle_methods.workflow import load_results, logged
+
+TITLES = {
+    "burgers_two_atoms": "Burgers equation (5.1) from (delta_-1 + delta_1)/2",
+    "concave_laplace": "concave flux u(1-u)/2 (5.3) from the Laplace law (5.4)",
+}
+
+
+def run(d, case, output):
+    fig, axes = new_figure(2, 2, width=11, height=8.5)
+    ax = axes[0, 0]
+    ax.plot(d["trajectories"], d["trajectory_times"], color="C0", lw=0.8)
+    ax.set(xlabel="x", ylabel="t")
+    label_panel(ax, f"(a) trajectories of {d['trajectories'].shape[1]} particles")
+
+    ax = axes[0, 1]
+    mesh = ax.pcolormesh(d["field_x"], d["field_times"], d["field"], shading="auto", vmin=0, vmax=1,
+                         rasterized=True)
+    fig.colorbar(mesh, ax=ax, label="u(t, x)")
+    ax.set(xlabel="x", ylabel="t")
+    label_panel(ax, "(b) u(t, x) in the space-time plane (SPD)")
+
+    ax = axes[1, 0]
+    colours = mpl.colormaps["viridis"](np.linspace(0, 0.9, d["profile_times"].size))
+    for t, particle, exact, colour in zip(d["profile_times"], d["profile_particle_cdf"],
+                                          d["profile_exact_cdf"], colours):
+        ax.step(d["field_x"], particle, where="post", color=colour, label=f"t = {t:g}")
+        ax.plot(d["field_x"], exact, "--", color="k", lw=0.7)
+    ax.plot([], [], "--", color="k", lw=0.7, label="exact entropy solution")
+    ax.set(xlabel="x", ylabel="u(t, x)")
+    ax.legend(ncol=2, loc="upper left" if case == "burgers_two_atoms" else "lower right")
+    label_panel(ax, "(c) profiles: SPD (steps) and exact (dashed)")
+
+    ax = axes[1, 1]
+    norm = mpl.colors.Normalize(d["error_times"].min(), d["error_times"].max())
+    cmap = mpl.colormaps["plasma"]
+    for t, errors in zip(d["error_times"], d["errors"]):
+        ax.plot(d["error_p"], np.log(errors), "o-", ms=3, color=cmap(0.9 * norm(t)))
+    fig.colorbar(mpl.cm.ScalarMappable(norm=mpl.colors.Normalize(norm.vmin, norm.vmax / 0.9), cmap=cmap),
+                 ax=ax, label="time t")
+    if case == "burgers_two_atoms":
+        p = d["error_p"].astype(float)
+        ax.plot(p, np.log(d["errors"][0, 0]) - np.log(2) * (p - p[0]) - 0.5, "k:",
+                label="slope -log 2 (order 1/n)")
+        ax.legend(loc="lower left")
+    ax.set(xlabel="p  (n = 2^p particles)", ylabel="log L1 error")
+    label_panel(ax, "(d) L1 error between SPD and entropy solution")
+    fig.suptitle(TITLES[case])
+    save_figure(fig, output.pdf, output.png)
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(load_results(snakemake.input.data), snakemake.params.case, snakemake.output)  # noqa: F821

@@ -1,0 +1,53 @@
+"""Sticky particle dynamics for 1D conservation laws and diagonal systems (Jourdain-Reygner).
+
+Public entry points:
+
+- :func:`spd_positions`, :func:`spd_trajectories`: SPD at given times (section 5.1.1);
+- :func:`velocities_from_flux`: initial velocities of section 1.1.3;
+- :func:`median_quantiles` (2.1), :func:`averaged_quantiles` (1.9): initial positions;
+- measures with exact quantiles (:class:`Atoms`, :class:`Laplace`, ...) and exact
+  entropy solutions (:class:`BurgersSolution`, :class:`ConcaveLaplaceSolution`);
+- :func:`mspd_trajectory`, :func:`mspd_positions`, :func:`rank_velocities`: the
+  iterated typewise SPD for diagonal systems (sections 4.1, 5.2.1);
+- :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants.
+"""
+
+from .exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux, concave_flux
+from .measures import (
+    Atoms,
+    Laplace,
+    Pareto,
+    QuantileMeasure,
+    TruncatedExponential,
+    Uniform,
+    Weibull,
+    averaged_quantiles,
+    median_quantiles,
+)
+from .mspd import mspd_positions, mspd_trajectory, rank_velocities
+from .psystem import PSystem
+from .spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux
+
+__all__ = [
+    "Atoms",
+    "BurgersSolution",
+    "ConcaveLaplaceSolution",
+    "Laplace",
+    "PSystem",
+    "Pareto",
+    "QuantileMeasure",
+    "TruncatedExponential",
+    "Uniform",
+    "Weibull",
+    "averaged_quantiles",
+    "burgers_flux",
+    "cluster_sizes",
+    "concave_flux",
+    "median_quantiles",
+    "mspd_positions",
+    "mspd_trajectory",
+    "rank_velocities",
+    "spd_positions",
+    "spd_trajectories",
+    "velocities_from_flux",
+]

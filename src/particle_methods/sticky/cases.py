@@ -1,0 +1,81 @@
+"""The test cases of section 5: initial data, flux or system, and exact solutions."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from ..norms import w1_to_measure
+from ..validation import integer_at_least, sorted_array
+from .exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux, concave_flux
+from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
+from .spd import spd_positions, velocities_from_flux
+
+
+@dataclass(frozen=True)
+class ScalarCase:
+    """A scalar conservation law (1.1) with u_0 = H*m and its exact entropy solution."""
+
+    initial: QuantileMeasure
+    flux: Callable
+    solution: Callable[[float], QuantileMeasure]
+    flux_lipschitz: float
+    """L_LC, the Lipschitz constant of lambda = flux' (assumption (LC))."""
+
+    def initial_state(self, n: int):
+        """Positions (2.1) and velocities (section 1.1.3) of n particles."""
+        return median_quantiles(self.initial, n), velocities_from_flux(self.flux, n)
+
+    def positions(self, n: int, t: float) -> np.ndarray:
+        """SPD positions at time t of n particles started from (2.1)."""
+        return spd_positions(*self.initial_state(n), t)
+
+    def error(self, n: int, t: float) -> float:
+        """L1 distance between the SPD CDF with n particles and u(t, .), exactly."""
+        return w1_to_measure(self.solution(t), self.positions(n, t))
+
+
+_TWO_ATOMS = Atoms([-1.0, 1.0])
+
+SCALAR_CASES = {
+    "burgers_two_atoms": ScalarCase(
+        initial=_TWO_ATOMS,
+        flux=burgers_flux,
+        solution=lambda t: BurgersSolution(_TWO_ATOMS, t),
+        flux_lipschitz=1.0,
+    ),
+    "concave_laplace": ScalarCase(
+        initial=Laplace(0.0),
+        flux=concave_flux,
+        solution=ConcaveLaplaceSolution,
+        flux_lipschitz=1.0,
+    ),
+}
+
+
+def psystem_initial_measures(case: str, x0: float) -> tuple[QuantileMeasure, QuantileMeasure]:
+    """Initial measures (m^-, m^+) of the two p-system cases of section 5.2.2.
+
+    ``rarefaction``: m^{+-}(dx) = exp(-|x +- x0|)/2, so w_0^+ >= w_0^- (Figures 4, 5).
+    ``shocks``: m^-(dx) = exp(-|x - x0|)/2 and w_0^+ = 1{x >= 0} (Figures 6, 7).
+    """
+    if case == "rarefaction":
+        return Laplace(x0), Laplace(-x0)
+    if case == "shocks":
+        return Laplace(x0), Atoms([0.0])
+    raise ValueError(f"unknown p-system case {case!r}: expected 'rarefaction' or 'shocks'")
+
+
+def psystem_initial_configuration(case: str, x0: float, n: int) -> np.ndarray:
+    """Configuration (1.9) of n particles per type, rows (w^-, w^+) as in :class:`PSystem`."""
+    n = integer_at_least("n", n, 1)
+    return np.array([averaged_quantiles(m, n) for m in psystem_initial_measures(case, x0)])
+
+
+def empirical_cdf(points, x) -> np.ndarray:
+    """CDF (1/n) #{k : points_k <= x} of the empirical measure of sorted ``points``."""
+    points = sorted_array("points", points)
+    return np.searchsorted(points, np.asarray(x, dtype=np.float64), side="right") / points.size
+

@@ -1,0 +1,59 @@
+"""Literal transcription of the pseudo-code of section 5.1.1, in plain Python.
+
+It works on the cumulative sums Q(k) = Q_t(k/n) as the paper writes it, keeps
+the list L of hull vertices (most recent first) and records each iteration, which
+Figure 1 draws. It is the baseline a user would write without a compiler; the
+compiled solver is :func:`particle_methods.sticky.spd.spd_positions`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .spd import _checked_state
+
+
+@dataclass(frozen=True)
+class HullIteration:
+    """One pass of the for loop: the list before, the vertices removed, the list after."""
+
+    k: int
+    before: tuple[int, ...]
+    removed: tuple[int, ...]
+    after: tuple[int, ...]
+
+
+def cumulative_free_positions(x, v, t: float) -> np.ndarray:
+    """Q(k) = sum_{k' <= k} (x_{k'} + t v_{k'}), k = 0..n, with Q(0) = 0."""
+    x, v = _checked_state(x, v)
+    return np.concatenate(([0.0], np.cumsum(x + t * v)))
+
+
+def hull_iterations(q) -> tuple[list[int], list[HullIteration]]:
+    """Run the pseudo-code on Q(0..n); return the final list L and every iteration."""
+    q = [float(value) for value in q]
+    vertices = [1, 0]
+    history = []
+    for k in range(2, len(q)):
+        before = tuple(vertices)
+        removed = []
+        while len(vertices) > 1 and (q[k] - q[vertices[0]]) / (k - vertices[0]) < (
+            q[vertices[0]] - q[vertices[1]]
+        ) / (vertices[0] - vertices[1]):
+            removed.append(vertices.pop(0))
+        vertices.insert(0, k)
+        history.append(HullIteration(k, before, tuple(removed), tuple(vertices)))
+    return vertices, history
+
+
+def spd_positions_python(x, v, t: float) -> np.ndarray:
+    """SPD positions from the hull vertices: slopes of the piecewise-linear hull."""
+    q = cumulative_free_positions(x, v, t)
+    vertices, _ = hull_iterations(q)
+    vertices = vertices[::-1]
+    positions = np.empty(len(q) - 1)
+    for left, right in zip(vertices[:-1], vertices[1:]):
+        positions[left:right] = (q[right] - q[left]) / (right - left)
+    return positions

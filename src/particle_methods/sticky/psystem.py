@@ -1,0 +1,104 @@
+"""The p-system of section 5.2.2 in Riemann invariants, as a 2x2 diagonal system (5.7).
+
+Unknowns: specific volume u in [0, nu] and velocity v; pressure
+
+    p(u) = kappa / (4 nu asinh^2(kappa/2)) [atan(kappa/2) - atan(kappa (u/nu - 1/2))],
+
+which satisfies (5.5). With a = asinh(kappa/2), c = sqrt(-p') and
+g(u) = int_0^u c - 1/2 = asinh(kappa (u/nu - 1/2)) / (2a), the Riemann invariants
+w^{+-} = v +- g(u) solve (5.7) with speeds
+
+    lambda^{+-}(w^-, w^+) = -+ kappa / (2 nu a) / cosh((w^+ - w^-) a),
+
+and (5.6) maps them back: u = nu (1/2 + sinh((w^+ - w^-) a) / kappa), v = (w^+ + w^-)/2.
+
+Types follow assumption (USH), fastest first: type 0 is w^- (lambda^- > 0) and
+type 1 is w^+ (lambda^+ < 0).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..validation import in_interval, integer_at_least, positive
+
+MINUS, PLUS = 0, 1
+
+
+@dataclass(frozen=True)
+class PSystem:
+    """p-system with reference specific volume ``nu`` and shape parameter ``kappa``."""
+
+    nu: float = 0.5
+    kappa: float = 5.0
+
+    def __post_init__(self):
+        positive("nu", self.nu)
+        positive("kappa", self.kappa)
+
+    d = 2
+
+    @property
+    def a(self) -> float:
+        """asinh(kappa/2)."""
+        return float(np.arcsinh(0.5 * self.kappa))
+
+    @property
+    def speed_scale(self) -> float:
+        """kappa / (2 nu asinh(kappa/2)): the largest characteristic speed."""
+        return self.kappa / (2.0 * self.nu * self.a)
+
+    def _volume(self, u):
+        return in_interval("specific volume u", u, 0.0, self.nu)
+
+    def pressure(self, u):
+        """Pressure law p(u) of section 5.2.2."""
+        u = self._volume(u)
+        scale = self.kappa / (4.0 * self.nu * self.a**2)
+        return scale * (np.arctan(0.5 * self.kappa) - np.arctan(self.kappa * (u / self.nu - 0.5)))
+
+    def sound_speed(self, u):
+        """c(u) = sqrt(-p'(u))."""
+        u = self._volume(u)
+        return self.speed_scale / np.sqrt(1.0 + (self.kappa * (u / self.nu - 0.5)) ** 2)
+
+    def g(self, u):
+        """g(u) = int_0^u c(r) dr - 1/2."""
+        u = self._volume(u)
+        return np.arcsinh(self.kappa * (u / self.nu - 0.5)) / (2.0 * self.a)
+
+    def riemann_invariants(self, u, v):
+        """(w^-, w^+) = (v - g(u), v + g(u))."""
+        g = self.g(u)
+        v = np.asarray(v, dtype=np.float64)
+        return v - g, v + g
+
+    def physical_variables(self, w_minus, w_plus):
+        """(u, v) from the Riemann invariants, relation (5.6)."""
+        w_minus = in_interval("w_minus", w_minus, 0.0, 1.0)
+        w_plus = in_interval("w_plus", w_plus, 0.0, 1.0)
+        u = self.nu * (0.5 + np.sinh((w_plus - w_minus) * self.a) / self.kappa)
+        return u, 0.5 * (w_plus + w_minus)
+
+    def speeds(self, w_minus, w_plus):
+        """(lambda^-, lambda^+) of (5.7)."""
+        w_minus = in_interval("w_minus", w_minus, 0.0, 1.0)
+        w_plus = in_interval("w_plus", w_plus, 0.0, 1.0)
+        magnitude = self.speed_scale / np.cosh((w_plus - w_minus) * self.a)
+        return magnitude, -magnitude
+
+    def speed_primitive(self, gamma: int, levels):
+        """Antiderivative of lambda^gamma in its own variable, at ``levels[..., :] = (w^-, w^+)``.
+
+        Both speeds are +-A / cosh(a (w^+ - w^-)) with A the speed scale, whose
+        antiderivative is the Gudermannian: -(A/a) atan(sinh(a (w^+ - w^-))) serves
+        for lambda^- in w^- and for lambda^+ in w^+ alike.
+        """
+        integer_at_least("gamma", gamma, 0)
+        if gamma >= self.d:
+            raise ValueError(f"gamma must be 0 (w^-) or 1 (w^+), got {gamma}")
+        levels = in_interval("levels", levels, 0.0, 1.0)
+        spread = levels[..., PLUS] - levels[..., MINUS]
+        return -(self.speed_scale / self.a) * np.arctan(np.sinh(self.a * spread))
