@@ -34,6 +34,7 @@ def run(p, output):
         label_panel(ax, title)
     axes[0].set_ylabel("cumulative sum Q(k)")
     axes[0].legend(loc="best")
+    axes[1].legend(loc="upper right")
     fig.suptitle("Brenier-Grenier hull: Andrew's monotone chain on the cumulative free-transport positions")
     save_figure(fig, output.pdf, output.png)
 

@@ -18,7 +18,7 @@ def trajectories(d, title, output):
     ax.plot([], [], color="tab:blue", label="type - (w-)")
     ax.plot([], [], color="tab:red", label="type + (w+)")
     ax.set(xlabel="x", ylabel="t")
-    ax.legend(loc="upper right")
+    ax.legend(loc="upper center")
     step = d["times"][1] - d["times"][0]
     ax.set_title(f"{title}: {path.shape[-1]} particles per type, iterated TSPD, Delta = {step:g}")
     save_figure(fig, output.pdf, output.png)

@@ -35,6 +35,12 @@ def run(p, output):
             positions = case.positions(int(n), t)
             errors[i, j] = w1_to_measure(solution, positions)
             clusters[i, j] = cluster_sizes(positions).size
+    # Larger n than plotted, where the asymptotic rate of the decay is measured (Figure 3 (d)).
+    rate_n = 2 ** np.asarray(p.get("rate_p", []), dtype=np.int64)
+    rate_errors = np.empty((error_times.size, rate_n.size))
+    for i, t in enumerate(error_times):
+        progress(f"asymptotic errors at t = {t:g} for n = {rate_n.tolist()}")
+        rate_errors[i] = [case.error(int(n), t) for n in rate_n]
     initial_errors = np.array([w1_to_measure(case.initial, case.initial_state(int(n))[0]) for n in error_n])
     # Distance from u(t, .) to the Heaviside function (all mass at 0): the plateau of Figure 3 (d).
     heaviside_errors = np.array([w1_to_measure(case.solution(t), np.zeros(1)) for t in error_times])
@@ -46,7 +52,7 @@ def run(p, output):
         profile_times=profile_times, profile_particle_cdf=profile_particle_cdf,
         profile_exact_cdf=profile_exact_cdf,
         error_p=np.asarray(p["error_p"]), error_n=error_n, error_times=error_times, errors=errors,
-        initial_errors=initial_errors, heaviside_errors=heaviside_errors, clusters=clusters,
+        rate_n=rate_n, rate_errors=rate_errors, initial_errors=initial_errors, heaviside_errors=heaviside_errors, clusters=clusters,
         flux_lipschitz=case.flux_lipschitz,
     )
 

@@ -66,6 +66,19 @@ class ConcaveLaplaceSolution(QuantileMeasure):
             root = special.lambertw(-0.5 * self.t * np.exp(-0.5 * self.t), 0).real
             self.shock_level = float(-root / self.t)
 
+    def _left_cdf(self, x):
+        """Level w < w_0(t) whose characteristic sits at x < 0: the root of
+        log(2w) + t (1/2 - w) = x, i.e. w = -W_0(-(t/2) e^{x - t/2}) / t."""
+        if self.t == 0.0:
+            return 0.5 * np.exp(x)
+        return -special.lambertw(-0.5 * self.t * np.exp(x - 0.5 * self.t), 0).real / self.t
+
+    def cdf(self, x):
+        """F_t(x): characteristics on each side, the atom of mass 1 - 2 w_0(t) at 0."""
+        x = np.asarray(x, dtype=np.float64)
+        left = self._left_cdf(-np.abs(x))
+        return np.where(x < 0, left, np.where(x > 0, 1.0 - left, 1.0 - self.shock_level))
+
     def _left_quantile(self, w):
         return self._laplace.quantile(w) + self.t * (0.5 - w)
 
