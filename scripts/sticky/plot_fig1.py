@@ -3,7 +3,7 @@
 import numpy as np
 
 from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.sticky.hull_reference import cumulative_free_positions, hull_iterations
+from particle_methods.sticky.hull_reference import cumulative_free_positions, hull_vertices
 from particle_methods.workflow import logged
 
 
@@ -12,7 +12,8 @@ def run(p, output):
     x = np.sort(rng.normal(size=p["particles"]))
     v = rng.normal(size=p["particles"])
     q = cumulative_free_positions(x, v, p["t"])
-    _, history = hull_iterations(q)
+    history = []
+    hull_vertices(q, trace=history)
     step = next(s for s in history if s.removed)
     k = np.arange(q.size)
     fig, axes = new_figure(1, 3, width=12, height=3.8, sharey=True)

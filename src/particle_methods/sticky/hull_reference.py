@@ -31,28 +31,33 @@ def cumulative_free_positions(x, v, t: float) -> np.ndarray:
     return np.concatenate(([0.0], np.cumsum(x + t * v)))
 
 
-def hull_iterations(q) -> tuple[list[int], list[HullIteration]]:
-    """Run the pseudo-code on Q(0..n); return the final list L and every iteration."""
+def hull_vertices(q, trace: list | None = None) -> list[int]:
+    """Run the pseudo-code on Q(0..n) and return the final list L of hull vertices.
+
+    L is written most recent first, as in the paper; it is stored reversed (a
+    Python list whose end is the paper's "first element") so that removing and
+    inserting at the front cost O(1), as the paper's complexity count assumes.
+    When ``trace`` is a list, one :class:`HullIteration` per pass is appended to it.
+    """
     q = [float(value) for value in q]
-    vertices = [1, 0]
-    history = []
+    stack = [0, 1]
     for k in range(2, len(q)):
-        before = tuple(vertices)
+        before = tuple(reversed(stack)) if trace is not None else ()
         removed = []
-        while len(vertices) > 1 and (q[k] - q[vertices[0]]) / (k - vertices[0]) < (
-            q[vertices[0]] - q[vertices[1]]
-        ) / (vertices[0] - vertices[1]):
-            removed.append(vertices.pop(0))
-        vertices.insert(0, k)
-        history.append(HullIteration(k, before, tuple(removed), tuple(vertices)))
-    return vertices, history
+        while len(stack) > 1 and (q[k] - q[stack[-1]]) / (k - stack[-1]) < (
+            q[stack[-1]] - q[stack[-2]]
+        ) / (stack[-1] - stack[-2]):
+            removed.append(stack.pop())
+        stack.append(k)
+        if trace is not None:
+            trace.append(HullIteration(k, before, tuple(removed), tuple(reversed(stack))))
+    return list(reversed(stack))
 
 
 def spd_positions_python(x, v, t: float) -> np.ndarray:
     """SPD positions from the hull vertices: slopes of the piecewise-linear hull."""
     q = cumulative_free_positions(x, v, t)
-    vertices, _ = hull_iterations(q)
-    vertices = vertices[::-1]
+    vertices = hull_vertices(q)[::-1]
     positions = np.empty(len(q) - 1)
     for left, right in zip(vertices[:-1], vertices[1:]):
         positions[left:right] = (q[right] - q[left]) / (right - left)

@@ -1,0 +1,102 @@
+"""End to end: the quick configuration of the Snakemake pipeline in a scratch directory."""
+
+import csv
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from particle_methods.claims import COLUMNS
+
+ROOT = Path(__file__).resolve().parents[1]
+QUICK = ROOT / "config" / "quick.yaml"
+STICKY_FIGURES = [f"figures/sticky/fig{number}.{ext}" for number in range(1, 8) for ext in ("pdf", "png")]
+STICKY_CLAIMS = {
+    "sticky.fig2d.order", "sticky.fig2d.ordering", "sticky.fig3d.plateau", "sticky.fig3d.decay_plotted",
+    "sticky.fig3d.decay_asymptotic", "sticky.fig3d.ordering", "sticky.thm31.bound", "sticky.remark33.dirac",
+    "sticky.remark33.concave", "sticky.remark33.contraction", "sticky.lemma21.iii", "sticky.lemma21.ii",
+    "sticky.thm44.order", "sticky.fig4.order_preserved", "sticky.fig4.no_same_type_collision",
+    "sticky.fig6.cluster_forms", "sticky.fig6.clusters_break_up", "sticky.fig6.order_recovered",
+    "sticky.cost.hull",
+}
+
+pytestmark = pytest.mark.pipeline
+
+
+def snakemake(workdir, *args, configs=()):
+    command = [sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory", str(workdir),
+               "--cores", "2", "--configfile", str(QUICK), *map(str, configs), *args]
+    return subprocess.run(command, capture_output=True, text=True, timeout=900)
+
+
+def planned_rules(result):
+    return set(re.findall(r"^rule (\w+):", result.stdout + result.stderr, flags=re.MULTILINE))
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory):
+    workdir = tmp_path_factory.mktemp("quick")
+    result = snakemake(workdir)
+    assert result.returncode == 0, result.stderr[-4000:]
+    return workdir
+
+
+def test_every_sticky_figure_is_built(workdir):
+    for name in STICKY_FIGURES:
+        path = workdir / name
+        assert path.is_file() and path.stat().st_size > 1000, name
+    assert (workdir / "figures/sticky/fig2.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_claims_table_and_summary(workdir):
+    with (workdir / "results/claims.csv").open(newline="") as handle:
+        reader = csv.DictReader(handle)
+        assert tuple(reader.fieldnames) == COLUMNS
+        rows = list(reader)
+    ids = [row["id"] for row in rows]
+    assert len(ids) == len(set(ids))
+    assert STICKY_CLAIMS <= set(ids)
+    assert {row["status"] for row in rows} <= {"pass", "fail"}
+    assert all(row["measured"] not in ("", "nan") for row in rows)
+    summary = (workdir / "results/claims.md").read_text()
+    assert f"{len(rows)} claims checked" in summary
+
+
+def test_second_run_has_nothing_to_do(workdir):
+    result = snakemake(workdir, "--dry-run")
+    assert result.returncode == 0
+    assert "Nothing to be done" in result.stdout + result.stderr
+
+
+def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
+    override = tmp_path / "override.yaml"
+    override.write_text("sticky:\n  lemma21:\n    n_values: [16, 64, 256, 1024, 2048]\n")
+    result = snakemake(workdir, "--dry-run", configs=[override])
+    assert result.returncode == 0, result.stderr[-2000:]
+    assert planned_rules(result) == {"sticky_lemma21", "sticky_claims", "claims_table", "all"}
+
+
+def test_verify_fails_exactly_when_a_claim_fails(workdir):
+    with (workdir / "results/claims.csv").open(newline="") as handle:
+        any_failure = any(row["status"] == "fail" for row in csv.DictReader(handle))
+    result = snakemake(workdir, "verify")
+    assert (result.returncode != 0) == any_failure
+
+
+@pytest.mark.parametrize(
+    "override, key",
+    [
+        ("sticky:\n  fig2:\n    field_particles: -1\n", "field_particles"),
+        ("sticky:\n  fig2:\n    tmax: 3\n", "tmax"),
+        ("sticky:\n  fig3:\n    case: heat_equation\n", "case"),
+    ],
+)
+def test_bad_configuration_stops_at_start_naming_the_key(tmp_path, override, key):
+    path = tmp_path / "bad.yaml"
+    path.write_text(override)
+    result = snakemake(tmp_path, "--dry-run", configs=[path])
+    assert result.returncode != 0
+    assert key in result.stdout + result.stderr
+    assert not (tmp_path / "results").exists()
