@@ -1,8 +1,8 @@
 """Rebuild every figure and checked claim of the three papers.
 
-    snakemake --cores 2                                     # full resolution
-    snakemake --cores 2 --configfile config/quick.yaml      # coarse, for tests and CI
-    snakemake verify                                        # fails when a claim fails
+snakemake --cores 2                                     # full resolution
+snakemake --cores 2 --configfile config/quick.yaml      # coarse, for tests and CI
+snakemake verify                                        # fails when a claim fails
 """
 
 from pathlib import Path

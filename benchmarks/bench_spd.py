@@ -48,12 +48,12 @@ def main():
         n = 10**exponent
         x = np.sort(rng.normal(size=n))
         v = rng.normal(size=n)
-        numba_time, ours = best_time(lambda: spd_positions(x, v, t), args.repeats)
-        scipy_time, theirs = best_time(lambda: isotonic_regression(x + t * v).x, args.repeats)
+        numba_time, ours = best_time(lambda x=x, v=v: spd_positions(x, v, t), args.repeats)
+        scipy_time, theirs = best_time(lambda x=x, v=v: isotonic_regression(x + t * v).x, args.repeats)
         difference = np.abs(ours - theirs).max()
         python_time = np.nan
         if exponent <= args.python_max_exponent:
-            python_time, plain = best_time(lambda: spd_positions_python(x, v, t), 1 if exponent >= 6 else 3)
+            python_time, plain = best_time(lambda x=x, v=v: spd_positions_python(x, v, t), 1 if exponent >= 6 else 3)
             difference = max(difference, np.abs(ours - plain).max())
         sizes.append(n)
         for key, value in zip(timings, (numba_time, scipy_time, python_time)):

@@ -2,7 +2,9 @@
 
 STICKY = config["sticky"]
 SPD_CODE = code("jit.py", "validation.py", "sticky/spd.py")
-SCALAR_CODE = SPD_CODE + code("norms.py", "sticky/measures.py", "sticky/exact.py", "sticky/cases.py")
+SCALAR_CODE = SPD_CODE + code(
+    "norms.py", "sticky/measures.py", "sticky/exact.py", "sticky/cases.py"
+)
 MSPD_CODE = SCALAR_CODE + code("sticky/mspd.py", "sticky/psystem.py")
 PLOT_CODE = code("plotting.py")
 
@@ -22,10 +24,10 @@ rule sticky_fig1:
         code=SPD_CODE + PLOT_CODE + code("sticky/hull_reference.py"),
     output:
         **figure("figures/sticky/fig1"),
-    params:
-        cfg=STICKY["fig1"],
     log:
         "logs/sticky/fig1.log",
+    params:
+        cfg=STICKY["fig1"],
     script:
         "../scripts/sticky/plot_fig1.py"
 
@@ -36,12 +38,12 @@ rule sticky_scalar_data:
         code=SCALAR_CODE,
     output:
         "results/sticky/{figure}.npz",
+    log:
+        "logs/sticky/{figure}_data.log",
     wildcard_constraints:
         figure="fig2|fig3",
     params:
         cfg=lambda wildcards: STICKY[wildcards.figure],
-    log:
-        "logs/sticky/{figure}_data.log",
     script:
         "../scripts/sticky/scalar_data.py"
 
@@ -53,12 +55,12 @@ rule sticky_scalar_figure:
         code=PLOT_CODE,
     output:
         **figure("figures/sticky/{figure}"),
+    log:
+        "logs/sticky/{figure}_plot.log",
     wildcard_constraints:
         figure="fig2|fig3",
     params:
         case=lambda wildcards: STICKY[wildcards.figure]["case"],
-    log:
-        "logs/sticky/{figure}_plot.log",
     script:
         "../scripts/sticky/plot_scalar.py"
 
@@ -69,13 +71,13 @@ rule sticky_psystem_data:
         code=MSPD_CODE,
     output:
         "results/sticky/psystem_{case}.npz",
+    log:
+        "logs/sticky/psystem_{case}.log",
     wildcard_constraints:
         case="rarefaction|shocks",
     params:
         system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
         cfg=lambda wildcards: STICKY["psystem"][wildcards.case],
-    log:
-        "logs/sticky/psystem_{case}.log",
     script:
         "../scripts/sticky/psystem_data.py"
 
@@ -87,14 +89,14 @@ rule sticky_psystem_figure:
         code=PLOT_CODE,
     output:
         **figure("figures/sticky/{figure}"),
+    log:
+        "logs/sticky/{figure}_plot.log",
     wildcard_constraints:
         figure="fig4|fig5|fig6|fig7",
     params:
         case=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][0],
         kind=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][1],
         x0=lambda wildcards: STICKY["psystem"][PSYSTEM_FIGURES[wildcards.figure][0]]["x0"],
-    log:
-        "logs/sticky/{figure}_plot.log",
     script:
         "../scripts/sticky/plot_psystem.py"
 
@@ -105,10 +107,10 @@ rule sticky_lemma21:
         code=code("validation.py", "norms.py", "sticky/measures.py"),
     output:
         "results/sticky/lemma21.npz",
-    params:
-        cfg=STICKY["lemma21"],
     log:
         "logs/sticky/lemma21.log",
+    params:
+        cfg=STICKY["lemma21"],
     script:
         "../scripts/sticky/lemma21_data.py"
 
@@ -119,10 +121,10 @@ rule sticky_remark33:
         code=SCALAR_CODE + code("sticky/events.py"),
     output:
         "results/sticky/remark33.npz",
-    params:
-        cfg=STICKY["remark33"],
     log:
         "logs/sticky/remark33.log",
+    params:
+        cfg=STICKY["remark33"],
     script:
         "../scripts/sticky/remark33_data.py"
 
@@ -133,12 +135,12 @@ rule sticky_tspd_convergence:
         code=MSPD_CODE,
     output:
         "results/sticky/tspd_convergence.npz",
+    log:
+        "logs/sticky/tspd_convergence.log",
     params:
         system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
         case=lambda wildcards: STICKY["psystem"][STICKY["tspd_convergence"]["case"]],
         cfg=STICKY["tspd_convergence"],
-    log:
-        "logs/sticky/tspd_convergence.log",
     script:
         "../scripts/sticky/tspd_convergence_data.py"
 

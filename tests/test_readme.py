@@ -10,5 +10,5 @@ def test_readme_python_example_runs():
     assert blocks
     namespace = {}
     for block in blocks:
-        exec(compile(block, "README.md", "exec"), namespace)  # noqa: S102
+        exec(compile(block, "README.md", "exec"), namespace)
     assert abs(namespace["error"] - namespace["t"] / (4 * namespace["n"])) < 1e-12

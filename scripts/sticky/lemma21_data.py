@@ -4,8 +4,15 @@ import numpy as np
 from scipy import integrate
 
 from particle_methods.norms import w1_to_measure
-from particle_methods.sticky.measures import Atoms, Laplace, Pareto, TruncatedExponential, Uniform, Weibull, \
-    median_quantiles
+from particle_methods.sticky.measures import (
+    Atoms,
+    Laplace,
+    Pareto,
+    TruncatedExponential,
+    Uniform,
+    Weibull,
+    median_quantiles,
+)
 from particle_methods.workflow import logged, progress, save_results
 
 

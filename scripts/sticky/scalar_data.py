@@ -52,7 +52,8 @@ def run(p, output):
         profile_times=profile_times, profile_particle_cdf=profile_particle_cdf,
         profile_exact_cdf=profile_exact_cdf,
         error_p=np.asarray(p["error_p"]), error_n=error_n, error_times=error_times, errors=errors,
-        rate_n=rate_n, rate_errors=rate_errors, initial_errors=initial_errors, heaviside_errors=heaviside_errors, clusters=clusters,
+        rate_n=rate_n, rate_errors=rate_errors, initial_errors=initial_errors,
+        heaviside_errors=heaviside_errors, clusters=clusters,
         flux_lipschitz=case.flux_lipschitz,
     )
 

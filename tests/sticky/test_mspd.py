@@ -53,7 +53,7 @@ def test_rank_velocities_match_quadrature_of_1_8(rng):
             strict = gamma > other  # (1.8): strict count towards lower types
             rank = np.sum(x[other] < x[gamma, k]) if strict else np.sum(x[other] <= x[gamma, k])
 
-            def speed(w):
+            def speed(w, gamma=gamma, other=other, rank=rank):
                 levels = np.empty(2)
                 levels[gamma], levels[other] = w, rank / n
                 return float(SYSTEM.speeds(levels[MINUS], levels[PLUS])[gamma])

@@ -21,7 +21,6 @@ import numpy as np
 from ..jit import njit
 from ..validation import finite_array, integer_at_least, nonnegative, same_length, sorted_array
 
-
 _MAX_PARTICLES = 2**31 - 1
 
 
