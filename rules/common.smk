@@ -4,6 +4,8 @@ from pathlib import Path
 
 from snakemake.utils import validate
 
+from particle_methods.workflow import module_dependencies
+
 ROOT = Path(workflow.basedir)
 PACKAGE = ROOT / "src" / "particle_methods"
 
@@ -11,10 +13,14 @@ PACKAGE = ROOT / "src" / "particle_methods"
 validate(config, str(ROOT / "config" / "schema.yaml"))
 
 
-def code(*modules):
-    """Absolute paths of package modules, listed as inputs so that editing one
-    reruns exactly the results that depend on it."""
-    return [str(PACKAGE / module) for module in modules]
+def imports(script):
+    """Package modules that scripts/<script> imports, directly or through each other.
+
+    Rules list them among their inputs, so editing a module reruns exactly the
+    results computed with it; the list is read from the import statements, so it
+    cannot drift from the code.
+    """
+    return module_dependencies(ROOT / "scripts" / script, PACKAGE)
 
 
 def figure(path_without_suffix):

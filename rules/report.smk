@@ -7,7 +7,7 @@ rule claims_table:
     """Merge every paper's claims into results/claims.csv and results/claims.md."""
     input:
         sources=CLAIM_SOURCES,
-        code=code("claims.py"),
+        code=[str(PACKAGE / "claims.py")],
     output:
         csv="results/claims.csv",
         markdown="results/claims.md",

@@ -1,12 +1,6 @@
 """Jourdain and Reygner: sticky particle dynamics (SPD) and multitype SPD, Figures 1-7."""
 
 STICKY = config["sticky"]
-SPD_CODE = code("jit.py", "validation.py", "sticky/spd.py")
-SCALAR_CODE = SPD_CODE + code(
-    "norms.py", "sticky/measures.py", "sticky/exact.py", "sticky/cases.py"
-)
-MSPD_CODE = SCALAR_CODE + code("sticky/mspd.py", "sticky/psystem.py")
-PLOT_CODE = code("plotting.py")
 
 # Figures 4-7 show two p-system runs: figure -> (case, panel kind).
 PSYSTEM_FIGURES = {
@@ -21,7 +15,7 @@ STICKY_FIGURES = expand("figures/sticky/fig{number}.{ext}", number=range(1, 8), 
 rule sticky_fig1:
     """Figure 1: one iteration of the hull algorithm on a small random example."""
     input:
-        code=SPD_CODE + PLOT_CODE + code("sticky/hull_reference.py"),
+        code=imports("sticky/plot_fig1.py"),
     output:
         **figure("figures/sticky/fig1"),
     log:
@@ -35,7 +29,7 @@ rule sticky_fig1:
 rule sticky_scalar_data:
     """Figures 2 and 3: SPD trajectories, u(t, x), profiles and exact L1 errors."""
     input:
-        code=SCALAR_CODE,
+        code=imports("sticky/scalar_data.py"),
     output:
         "results/sticky/{figure}.npz",
     log:
@@ -52,7 +46,7 @@ rule sticky_scalar_figure:
     """Figures 2 and 3: plot panels (a)-(d) from the cached results."""
     input:
         data="results/sticky/{figure}.npz",
-        code=PLOT_CODE,
+        code=imports("sticky/plot_scalar.py"),
     output:
         **figure("figures/sticky/{figure}"),
     log:
@@ -68,7 +62,7 @@ rule sticky_scalar_figure:
 rule sticky_psystem_data:
     """Figures 4-7: iterated TSPD for the p-system, trajectories and space-time fields."""
     input:
-        code=MSPD_CODE,
+        code=imports("sticky/psystem_data.py"),
     output:
         "results/sticky/psystem_{case}.npz",
     log:
@@ -86,7 +80,7 @@ rule sticky_psystem_figure:
     """Figures 4 and 6 (trajectories), 5 and 7 (w-, w+, u, v) from the cached runs."""
     input:
         data=lambda wildcards: f"results/sticky/psystem_{PSYSTEM_FIGURES[wildcards.figure][0]}.npz",
-        code=PLOT_CODE,
+        code=imports("sticky/plot_psystem.py"),
     output:
         **figure("figures/sticky/{figure}"),
     log:
@@ -104,7 +98,7 @@ rule sticky_psystem_figure:
 rule sticky_lemma21:
     """Lemma 2.1 and the tail examples: W1 error of the discretisation (2.1)."""
     input:
-        code=code("validation.py", "norms.py", "sticky/measures.py"),
+        code=imports("sticky/lemma21_data.py"),
     output:
         "results/sticky/lemma21.npz",
     log:
@@ -118,7 +112,7 @@ rule sticky_lemma21:
 rule sticky_remark33:
     """Remark 3.3: exact t/(4n) error from one Dirac mass; SPD vs front tracking."""
     input:
-        code=SCALAR_CODE + code("sticky/events.py"),
+        code=imports("sticky/remark33_data.py"),
     output:
         "results/sticky/remark33.npz",
     log:
@@ -132,7 +126,7 @@ rule sticky_remark33:
 rule sticky_tspd_convergence:
     """Theorem 4.4: iterated TSPD errors against a fine reference run."""
     input:
-        code=MSPD_CODE,
+        code=imports("sticky/tspd_convergence_data.py"),
     output:
         "results/sticky/tspd_convergence.npz",
     log:
@@ -155,7 +149,7 @@ rule sticky_claims:
         lemma21="results/sticky/lemma21.npz",
         remark33="results/sticky/remark33.npz",
         tspd="results/sticky/tspd_convergence.npz",
-        code=code("claims.py", "convergence.py", "sticky/hull_reference.py", "sticky/spd.py"),
+        code=imports("sticky/claims.py"),
     output:
         "results/sticky/claims.csv",
     log:

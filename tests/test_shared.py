@@ -63,3 +63,17 @@ def test_validation_messages_name_the_parameter():
         sorted_array("positions", [0.0, 2.0, 1.0])
     with pytest.raises(ValueError, match="w must lie in"):
         in_interval("w", [0.5, 1.5], 0.0, 1.0)
+
+
+def test_module_dependencies_follow_imports_transitively():
+    from pathlib import Path
+
+    from particle_methods.workflow import module_dependencies
+
+    root = Path(__file__).resolve().parents[1]
+    package = root / "src" / "particle_methods"
+    found = {Path(p).relative_to(package).as_posix() for p in
+             module_dependencies(root / "scripts" / "sticky" / "scalar_data.py", package)}
+    # Direct imports, relative imports inside the package (spd -> validation -> jit), nothing unused.
+    assert {"norms.py", "sticky/cases.py", "sticky/spd.py", "sticky/exact.py", "validation.py", "jit.py"} <= found
+    assert not {"sticky/mspd.py", "sticky/psystem.py", "plotting.py", "sticky/__init__.py"} & found

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import os
 import sys
@@ -42,3 +43,57 @@ def load_results(path) -> dict:
     """Load an ``.npz`` result file into a plain dictionary of arrays."""
     with np.load(path) as data:
         return {key: data[key] for key in data.files}
+
+
+def module_dependencies(script, package_dir) -> list[str]:
+    """Source files of the package that ``script`` imports, directly or through each other.
+
+    Rules list these among their inputs so that editing a module reruns exactly the
+    results computed with it. Absolute imports of the package and relative imports
+    inside it are followed; a package's ``__init__.py`` counts only when a name is
+    imported from it (its re-exports are then followed too).
+    """
+    package_dir = Path(package_dir).resolve()
+    package = package_dir.name
+    found: set[Path] = set()
+    pending = [Path(script).resolve()]
+    while pending:
+        path = pending.pop()
+        tree = ast.parse(path.read_text(), filename=str(path))
+        inside = path.is_relative_to(package_dir)
+        here = path.relative_to(package_dir.parent).with_suffix("").parts if inside else ()
+        for node in ast.walk(tree):
+            for parts, names in _imported(node, here):
+                if not parts or parts[0] != package:
+                    continue
+                for candidate in _module_files(package_dir.parent, parts, names):
+                    if candidate not in found:
+                        found.add(candidate)
+                        pending.append(candidate)
+    return sorted(str(path) for path in found)
+
+
+def _imported(node, here):
+    """(dotted module parts, imported names) for an import statement."""
+    if isinstance(node, ast.Import):
+        return [(tuple(alias.name.split(".")), ()) for alias in node.names]
+    if isinstance(node, ast.ImportFrom):
+        if node.level:
+            # ``here`` ends with the module's own name (or "__init__"): drop it, then go up.
+            base = here[: len(here) - node.level]
+            parts = (*base, *(node.module.split(".") if node.module else ()))
+        else:
+            parts = tuple(node.module.split("."))
+        return [(parts, tuple(alias.name for alias in node.names))]
+    return []
+
+
+def _module_files(root: Path, parts, names):
+    base = root.joinpath(*parts)
+    if base.with_suffix(".py").is_file():
+        return [base.with_suffix(".py").resolve()]
+    files = [(base / name).with_suffix(".py").resolve() for name in names
+             if (base / name).with_suffix(".py").is_file()]
+    if len(files) < len(names) and (base / "__init__.py").is_file():
+        files.append((base / "__init__.py").resolve())
+    return files
