@@ -13,6 +13,7 @@ configfile: str(Path(workflow.basedir) / "config" / "config.yaml")
 
 include: "rules/common.smk"
 include: "rules/sticky.smk"
+include: "rules/ltp.smk"
 include: "rules/report.smk"
 
 
@@ -21,5 +22,6 @@ rule all:
     default_target: True
     input:
         STICKY_FIGURES,
+        LTP_FIGURES,
         "results/claims.csv",
         "results/claims.md",

@@ -7,6 +7,7 @@ import contextlib
 import os
 import sys
 import time
+import traceback
 from pathlib import Path
 
 import numpy as np
@@ -19,7 +20,11 @@ def logged(log_path):
     log_path.parent.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
     with log_path.open("w") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
-        yield
+        try:
+            yield
+        except BaseException:
+            traceback.print_exc()
+            raise
         print(f"wall time: {time.perf_counter() - start:.2f} s", flush=True)
 
 

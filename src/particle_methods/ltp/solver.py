@@ -78,6 +78,14 @@ class Simulation:
         """The particles at the ``index``-th recorded step (-1 for the last)."""
         return Particles(self.centres[index], self.weights, self.widths[index], self.shape)
 
+    def densities(self, x) -> np.ndarray:
+        """rho_h at the points x for every recorded step: shape (recorded steps, len(x))."""
+        return np.array([self.at(i).density(x) for i in range(self.steps.size)])
+
+    def peak_densities(self) -> np.ndarray:
+        """max_k rho_h(x_k) at every recorded step: the height of the highest particle peak."""
+        return np.array([self.at(i).density(self.centres[i]).max() for i in range(self.steps.size)])
+
 
 def simulate(initial, potential: Potential, h: float, dt: float, t_final: float, *, shape: str = "b3",
              weights: str = "cell", method: str = "ltp", eps: float | None = None, record_every: int | None = None,

@@ -1,0 +1,185 @@
+"""Campos Pinto, Carrillo, Charles, Choi: linearly transformed particles, Figures 1-8."""
+
+LTP = config["ltp"]
+LTP_FIGURES = expand("figures/ltp/fig{number}.{ext}", number=range(1, 9), ext=["pdf", "png"])
+# Figures 5 and 6 share one layout: rows potential, density, velocity, particle size.
+LTP_ROW_TITLES = {
+    "fig5": "LTP, W = |x|^a/a from (6.2), h = 0.01, 200 steps",
+    "fig6": "LTP, W = |x|^3/3 - |x|^b/b from (6.2), h = 0.01, 200 steps",
+}
+
+
+rule ltp_fig1:
+    """Figure 1: the hat shape and its bi-orthogonal kernel."""
+    input:
+        code=imports("ltp/plot_fig1.py"),
+    output:
+        **figure("figures/ltp/fig1"),
+    log:
+        "logs/ltp/fig1.log",
+    params:
+        cfg=LTP["fig1"],
+    script:
+        "../scripts/ltp/plot_fig1.py"
+
+
+rule ltp_quadratic_data:
+    """Figures 2 and 3: LTP and SP runs for W = x^2 against the exact solution (6.4)."""
+    input:
+        code=imports("ltp/quadratic_data.py"),
+    output:
+        "results/ltp/quadratic.npz",
+    log:
+        "logs/ltp/quadratic.log",
+    params:
+        cfg=LTP["quadratic"],
+    script:
+        "../scripts/ltp/quadratic_data.py"
+
+
+rule ltp_quadratic_figures:
+    """Figures 2 and 3 from the cached W = x^2 runs."""
+    input:
+        data="results/ltp/quadratic.npz",
+        code=imports("ltp/plot_quadratic.py"),
+    output:
+        fig2_pdf="figures/ltp/fig2.pdf",
+        fig2_png="figures/ltp/fig2.png",
+        fig3_pdf="figures/ltp/fig3.pdf",
+        fig3_png="figures/ltp/fig3.png",
+    log:
+        "logs/ltp/quadratic_plot.log",
+    script:
+        "../scripts/ltp/plot_quadratic.py"
+
+
+rule ltp_fig4_data:
+    """Figure 4: LTP and SP with hat and B3 shapes for W = x^2/2."""
+    input:
+        code=imports("ltp/fig4_data.py"),
+    output:
+        "results/ltp/fig4.npz",
+    log:
+        "logs/ltp/fig4_data.log",
+    params:
+        cfg=LTP["fig4"],
+    script:
+        "../scripts/ltp/fig4_data.py"
+
+
+rule ltp_fig4:
+    """Figure 4 from the cached runs."""
+    input:
+        data="results/ltp/fig4.npz",
+        code=imports("ltp/plot_fig4.py"),
+    output:
+        **figure("figures/ltp/fig4"),
+    log:
+        "logs/ltp/fig4_plot.log",
+    script:
+        "../scripts/ltp/plot_fig4.py"
+
+
+rule ltp_rows_data:
+    """Figures 5 and 6: LTP runs with power and attractive-repulsive potentials."""
+    input:
+        code=imports("ltp/rows_data.py"),
+    output:
+        "results/ltp/{figure}.npz",
+    log:
+        "logs/ltp/{figure}_data.log",
+    wildcard_constraints:
+        figure="fig5|fig6",
+    params:
+        cfg=lambda wildcards: LTP[wildcards.figure],
+    script:
+        "../scripts/ltp/rows_data.py"
+
+
+rule ltp_rows_figure:
+    """Figures 5 and 6 from the cached runs."""
+    input:
+        data="results/ltp/{figure}.npz",
+        code=imports("ltp/plot_rows.py"),
+    output:
+        **figure("figures/ltp/{figure}"),
+    log:
+        "logs/ltp/{figure}_plot.log",
+    wildcard_constraints:
+        figure="fig5|fig6",
+    params:
+        title=lambda wildcards: LTP_ROW_TITLES[wildcards.figure],
+    script:
+        "../scripts/ltp/plot_rows.py"
+
+
+rule ltp_fig7_data:
+    """Figure 7: density snapshots from (6.3)."""
+    input:
+        code=imports("ltp/fig7_data.py"),
+    output:
+        "results/ltp/fig7.npz",
+    log:
+        "logs/ltp/fig7_data.log",
+    params:
+        cfg=LTP["fig7"],
+    script:
+        "../scripts/ltp/fig7_data.py"
+
+
+rule ltp_fig7:
+    """Figure 7 from the cached run."""
+    input:
+        data="results/ltp/fig7.npz",
+        code=imports("ltp/plot_fig7.py"),
+    output:
+        **figure("figures/ltp/fig7"),
+    log:
+        "logs/ltp/fig7_plot.log",
+    script:
+        "../scripts/ltp/plot_fig7.py"
+
+
+rule ltp_fig8_data:
+    """Figure 8: SP and LTP end states."""
+    input:
+        code=imports("ltp/fig8_data.py"),
+    output:
+        "results/ltp/fig8.npz",
+    log:
+        "logs/ltp/fig8_data.log",
+    params:
+        cfg=LTP["fig8"],
+    script:
+        "../scripts/ltp/fig8_data.py"
+
+
+rule ltp_fig8:
+    """Figure 8 from the cached runs."""
+    input:
+        data="results/ltp/fig8.npz",
+        code=imports("ltp/plot_fig8.py"),
+    output:
+        **figure("figures/ltp/fig8"),
+    log:
+        "logs/ltp/fig8_plot.log",
+    script:
+        "../scripts/ltp/plot_fig8.py"
+
+
+rule ltp_claims:
+    """Measure every LTP claim from the cached results."""
+    input:
+        quadratic="results/ltp/quadratic.npz",
+        fig4="results/ltp/fig4.npz",
+        fig5="results/ltp/fig5.npz",
+        fig6="results/ltp/fig6.npz",
+        fig7="results/ltp/fig7.npz",
+        fig8="results/ltp/fig8.npz",
+        code=imports("ltp/claims.py"),
+    output:
+        "results/ltp/claims.csv",
+    log:
+        "logs/ltp/claims.log",
+    script:
+        "../scripts/ltp/claims.py"

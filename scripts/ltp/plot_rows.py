@@ -1,0 +1,40 @@
+"""Figures 5 and 6: one column per potential; rows potential, density, velocity, particle size."""
+
+import matplotlib as mpl
+import numpy as np
+
+from particle_methods.plotting import new_figure, save_figure
+from particle_methods.workflow import load_results, logged
+
+ROWS = ("potential W", "density rho_h", "velocity -W' * rho_h", "particle size h_k / h")
+
+
+def run(d, title, output):
+    labels = list(d["labels"])
+    fig, axes = new_figure(4, len(labels), width=4.2 * len(labels), height=11)
+    axes = np.atleast_2d(axes).reshape(4, len(labels))
+    for column, label in enumerate(labels):
+        prefix = f"case{column}"
+        shown = d[f"{prefix}_shown"]
+        times = d[f"{prefix}_times"][shown]
+        colours = mpl.colormaps["viridis"](np.linspace(0, 0.9, shown.size))
+        axes[0, column].plot(d["x_potential"], d[f"{prefix}_potential"], "k-")
+        axes[0, column].set_title(f"W = {label}")
+        for colour, t, density, index in zip(colours, times, d[f"{prefix}_densities"], shown):
+            centres = d[f"{prefix}_centres"][index]
+            axes[1, column].plot(d["grid"], density, color=colour, label=f"t = {t:.3g}")
+            axes[2, column].plot(centres, d[f"{prefix}_velocities"][index], color=colour)
+            axes[3, column].plot(centres, d[f"{prefix}_widths"][index] / d["h"], color=colour)
+        axes[1, column].set_yscale("log")
+        axes[1, column].set_ylim(bottom=1e-2)
+        axes[1, column].legend(fontsize=7)
+        axes[3, column].set_yscale("log")
+        for row in range(4):
+            axes[row, column].set_xlabel("x")
+            axes[row, column].set_ylabel(ROWS[row])
+    fig.suptitle(title)
+    save_figure(fig, output.pdf, output.png)
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(load_results(snakemake.input.data), snakemake.params.title, snakemake.output)  # noqa: F821

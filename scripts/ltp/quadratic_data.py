@@ -1,0 +1,54 @@
+"""Figures 2 and 3: W = x^2 from (6.1), LTP against the exact solution (6.4) and the SP method."""
+
+import numpy as np
+
+from particle_methods.ltp import density_named, exact_density, potential, simulate
+from particle_methods.norms import grid_errors
+from particle_methods.workflow import logged, progress, save_results
+
+
+def errors(run, initial, w, t, grid):
+    return grid_errors(run.at(-1).density(grid), exact_density(initial, w, t, grid), grid)
+
+
+def run(p, output):
+    initial = density_named(p["initial"])
+    w = potential("quadratic")
+    t, dt = p["t"], p["dt"]
+    grid = np.linspace(initial.lower, initial.upper, p["grid_points"])
+    h_values = np.asarray(p["h_values"], dtype=float)
+    ltp_errors, sp_errors, mass_error, centre_drift = [], [], [], []
+    plot_density = {}
+    for h in h_values:
+        progress(f"h = {h:g}: LTP and SP with eps = h, {round(t / dt)} steps")
+        ltp = simulate(initial, w, h, dt, t)
+        sp = simulate(initial, w, h, dt, t, method="sp", eps=h)
+        ltp_errors.append(errors(ltp, initial, w, t, grid))
+        sp_errors.append(errors(sp, initial, w, t, grid))
+        mass_error.append(abs(np.trapezoid(ltp.at(-1).density(grid), grid) - 1.0))
+        centre_drift.append(abs(ltp.at(-1).centre_of_mass - ltp.at(0).centre_of_mass))
+        if h in p["plot_h"]:
+            plot_density[h] = ltp.at(-1).density(grid)
+
+    progress(f"SP with h = {p['sp_h']} and eps = {p['sp_eps']}")
+    sp_densities = np.array([simulate(initial, w, p["sp_h"], dt, t, method="sp", eps=eps).at(-1).density(grid)
+                             for eps in p["sp_eps"]])
+
+    scan = p["eps_scan"]
+    eps_values = np.geomspace(scan["eps_min"], scan["eps_max"], scan["count"])
+    progress(f"eps scan: h = {scan['h']}, dt = {scan['dt']}, {eps_values.size} values")
+    scan_ltp = errors(simulate(initial, w, scan["h"], scan["dt"], t), initial, w, t, grid)
+    scan_sp = np.array([errors(simulate(initial, w, scan["h"], scan["dt"], t, method="sp", eps=eps),
+                               initial, w, t, grid) for eps in eps_values])
+    save_results(
+        output, grid=grid, exact=exact_density(initial, w, t, grid), h_values=h_values,
+        ltp_errors=np.array(ltp_errors), sp_errors=np.array(sp_errors), mass_error=np.array(mass_error),
+        centre_drift=np.array(centre_drift), plot_h=np.array(sorted(plot_density, reverse=True)),
+        plot_density=np.array([plot_density[h] for h in sorted(plot_density, reverse=True)]),
+        sp_eps=np.asarray(p["sp_eps"], float), sp_densities=sp_densities, eps_values=eps_values,
+        scan_ltp=np.array(scan_ltp), scan_sp=scan_sp, order_points=p["order_points"], t=t,
+    )
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
