@@ -12,14 +12,20 @@ from particle_methods.claims import COLUMNS
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
-STICKY_FIGURES = [f"figures/sticky/fig{number}.{ext}" for number in range(1, 8) for ext in ("pdf", "png")]
-STICKY_CLAIMS = {
-    "sticky.fig2d.order", "sticky.fig2d.ordering", "sticky.fig2d.no_initial_error", "sticky.fig3d.plateau", "sticky.fig3d.decay_plotted",
-    "sticky.fig3d.decay_asymptotic", "sticky.fig3d.ordering", "sticky.thm31.bound", "sticky.remark33.dirac",
-    "sticky.remark33.concave", "sticky.remark33.contraction", "sticky.lemma21.iii", "sticky.lemma21.ii",
-    "sticky.thm44.order", "sticky.fig4.order_preserved", "sticky.fig4.no_same_type_collision",
-    "sticky.fig6.cluster_forms", "sticky.fig6.clusters_break_up", "sticky.fig6.order_recovered",
-    "sticky.cost.hull",
+FIGURES = {"sticky": 7, "ltp": 8}
+EXPECTED_FIGURES = [f"figures/{paper}/fig{number}.{ext}" for paper, count in FIGURES.items()
+                    for number in range(1, count + 1) for ext in ("pdf", "png")]
+EXPECTED_CLAIMS = {
+    "sticky.fig2d.order", "sticky.fig2d.ordering", "sticky.fig2d.no_initial_error", "sticky.fig3d.plateau",
+    "sticky.fig3d.decay_plotted", "sticky.fig3d.decay_asymptotic", "sticky.fig3d.ordering", "sticky.thm31.bound",
+    "sticky.remark33.dirac", "sticky.remark33.concave", "sticky.remark33.contraction", "sticky.lemma21.iii",
+    "sticky.lemma21.ii", "sticky.thm44.order", "sticky.fig4.order_preserved", "sticky.fig4.no_same_type_collision",
+    "sticky.fig6.cluster_forms", "sticky.fig6.clusters_break_up", "sticky.fig6.order_recovered", "sticky.cost.hull",
+    "ltp.fig2.order_l1", "ltp.fig2.order_linf", "ltp.fig3.best_sp_l1", "ltp.fig3.best_sp_linf", "ltp.fig4.hat",
+    "ltp.fig5.blowup_a1.5", "ltp.fig5.no_blowup_a2.5", "ltp.fig5.dirac", "ltp.fig6.b2.5_two_diracs",
+    "ltp.fig6.b2.5_equal_split", "ltp.fig6.b1.5_steady", "ltp.fig6.b1.5_edges", "ltp.fig7.finitely_many_diracs",
+    "ltp.fig8.sp_oscillates", "ltp.fig8.ltp_smooth", "ltp.mass.weights", "ltp.mass.quadrature",
+    "ltp.centre_of_mass.even_w", "ltp.centre_of_mass.quadratic",
 }
 
 pytestmark = pytest.mark.pipeline
@@ -43,8 +49,8 @@ def workdir(tmp_path_factory):
     return workdir
 
 
-def test_every_sticky_figure_is_built(workdir):
-    for name in STICKY_FIGURES:
+def test_every_figure_is_built(workdir):
+    for name in EXPECTED_FIGURES:
         path = workdir / name
         assert path.is_file() and path.stat().st_size > 1000, name
     assert (workdir / "figures/sticky/fig2.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -57,7 +63,7 @@ def test_claims_table_and_summary(workdir):
         rows = list(reader)
     ids = [row["id"] for row in rows]
     assert len(ids) == len(set(ids))
-    assert STICKY_CLAIMS <= set(ids)
+    assert EXPECTED_CLAIMS <= set(ids)
     assert {row["status"] for row in rows} <= {"pass", "fail"}
     assert all(row["measured"] not in ("", "nan") for row in rows)
     summary = (workdir / "results/claims.md").read_text()

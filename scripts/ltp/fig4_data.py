@@ -16,7 +16,8 @@ def run(p, output):
     for shape in ("hat", "b3"):
         progress(f"{shape}: LTP and SP (eps = {p['sp_eps']})")
         ltp = simulate(initial, w, p["h"], p["dt"], p["t"], shape=shape).at(-1).density(grid)
-        sp = simulate(initial, w, p["h"], p["dt"], p["t"], shape=shape, method="sp", eps=p["sp_eps"]).at(-1).density(grid)
+        sp_run = simulate(initial, w, p["h"], p["dt"], p["t"], shape=shape, method="sp", eps=p["sp_eps"])
+        sp = sp_run.at(-1).density(grid)
         results[f"{shape}_ltp"], results[f"{shape}_sp"] = ltp, sp
         results[f"{shape}_ltp_errors"] = np.array(grid_errors(ltp, exact, grid))
         results[f"{shape}_sp_errors"] = np.array(grid_errors(sp, exact, grid))

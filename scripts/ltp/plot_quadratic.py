@@ -1,6 +1,5 @@
 """Figures 2 and 3 from the cached W = x^2 runs."""
 
-import numpy as np
 
 from particle_methods.convergence import fit_order
 from particle_methods.plotting import label_panel, new_figure, save_figure

@@ -6,8 +6,8 @@ for (6.3)), so that cell integrals of rho^0 are exact differences of the CDF.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 from scipy import integrate, special

@@ -1,0 +1,70 @@
+"""Convolutions of singular and smooth kernels with the particle shapes, against quadrature."""
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from particle_methods.ltp import B3, HAT, potential
+from particle_methods.ltp.kernels import convolutions, density_at
+
+
+def power_integral(phi, lo, hi, t, p):
+    """int_lo^hi phi(y) |t - y|^p dy. Where the singular point t is an end of a piece,
+    QUADPACK's algebraic weight (x - lo)^p or (hi - x)^p integrates it exactly."""
+    if lo < t < hi:
+        return power_integral(phi, lo, t, t, p) + power_integral(phi, t, hi, t, p)
+    if hi == t:
+        return integrate.quad(phi, lo, hi, weight="alg", wvar=(0.0, p), epsabs=1e-15)[0]
+    if lo == t:
+        return integrate.quad(phi, lo, hi, weight="alg", wvar=(p, 0.0), epsabs=1e-15)[0]
+    return integrate.quad(lambda y: phi(y) * abs(t - y) ** p, lo, hi, epsabs=1e-15, epsrel=1e-13)[0]
+
+
+def reference(potential_, shape, centres, weights, widths, t):
+    """W'*rho_h and W''*rho_h at t by adaptive quadrature on each polynomial piece."""
+    first = second = 0.0
+    for xk, wk, hk in zip(centres, weights, widths):
+        knots = xk + hk * shape.breaks
+
+        def phi(y, xk=xk, hk=hk):
+            return float(shape((y - xk) / hk)) / hk
+
+        for lo, hi in zip(knots[:-1], knots[1:]):
+            for c, a in zip(potential_.coefficients, potential_.exponents):
+                # W' = c sign(z)|z|^(a-1): split where sign(t - y) changes.
+                left = power_integral(phi, lo, min(hi, t), t, a - 1) if lo < t else 0.0
+                right = power_integral(phi, max(lo, t), hi, t, a - 1) if hi > t else 0.0
+                first += wk * c * (left - right)
+                second += wk * c * (a - 1) * power_integral(phi, lo, hi, t, a - 2)
+    return first, second
+
+
+CENTRES = np.array([-0.4, 0.0, 0.013, 0.5])
+WEIGHTS = np.array([0.2, 0.3, 0.1, 0.4])
+WIDTHS = np.array([0.05, 0.01, 0.004, 0.2])
+TARGETS = np.array([-0.4, -0.37, 0.0, 0.006, 0.013, 0.05, 0.5, 0.93, 1.7])
+
+
+@pytest.mark.parametrize("shape", [HAT, B3], ids=lambda s: s.name)
+@pytest.mark.parametrize(
+    "w",
+    [potential("power", a=1.5), potential("attractive_repulsive", a=3, b=1.1), potential("attractive_repulsive",
+                                                                                         a=4, b=2.5),
+     potential("quadratic")],
+    ids=lambda w: w.name,
+)
+def test_convolutions_match_independent_quadrature(shape, w):
+    coefficients, exponents = w.as_arrays()
+    first, second = convolutions(TARGETS, CENTRES, WEIGHTS, WIDTHS, coefficients, exponents, shape.breaks,
+                                 shape.coefficients)
+    for i, t in enumerate(TARGETS):
+        expected_first, expected_second = reference(w, shape, CENTRES, WEIGHTS, WIDTHS, t)
+        assert first[i] == pytest.approx(expected_first, rel=1e-9, abs=1e-12)
+        assert second[i] == pytest.approx(expected_second, rel=1e-8, abs=1e-12)
+
+
+def test_density_matches_the_sum_of_shapes():
+    x = np.linspace(-1, 1, 301)
+    expected = sum(w * B3((x - c) / h) / h for c, w, h in zip(CENTRES, WEIGHTS, WIDTHS))
+    np.testing.assert_allclose(density_at(x, CENTRES, WEIGHTS, WIDTHS, B3.breaks, B3.coefficients), expected,
+                               atol=1e-12)
