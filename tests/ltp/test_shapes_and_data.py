@@ -25,7 +25,7 @@ def test_b3_matches_2_13():
 
 def test_hat_kernel_is_biorthogonal_2_17():
     for shift in (-2, -1, 0, 1, 2):
-        value = integrate.quad(lambda s: float(HAT(s) * hat_biorthogonal_kernel(s - shift)), -3, 3,
+        value = integrate.quad(lambda s, shift=shift: float(HAT(s) * hat_biorthogonal_kernel(s - shift)), -3, 3,
                                points=[-1, -0.5, 0, 0.5, 1, shift - 0.5, shift + 0.5])[0]
         assert value == pytest.approx(1.0 if shift == 0 else 0.0, abs=1e-12)
 
@@ -61,8 +61,9 @@ def test_biorthogonal_weights_make_the_error_orthogonal_to_the_kernels():
         kernel = lambda x, k=k: float(hat_biorthogonal_kernel((x - centres[k]) / h))  # noqa: E731
         knots = list(centres[k] + h * np.array([-1, -0.5, 0, 0.5, 1]))
         lo, hi = knots[0], knots[-1]
-        approx = integrate.quad(lambda x: rho_h(x) * kernel(x), lo, hi, points=knots[1:-1])[0]
-        exact = integrate.quad(lambda x: float(density.pdf(x)) * kernel(x), lo, hi, points=knots[1:-1])[0]
+        approx = integrate.quad(lambda x, kernel=kernel: rho_h(x) * kernel(x), lo, hi, points=knots[1:-1])[0]
+        exact = integrate.quad(lambda x, kernel=kernel: float(density.pdf(x)) * kernel(x), lo, hi,
+                               points=knots[1:-1])[0]
         assert approx == pytest.approx(exact, abs=1e-10)
 
 
