@@ -12,3 +12,4 @@ def test_readme_python_example_runs():
     for block in blocks:
         exec(compile(block, "README.md", "exec"), namespace)
     assert abs(namespace["error"] - namespace["t"] / (4 * namespace["n"])) < 1e-12
+    assert namespace["linf_error"] < 0.2
