@@ -1,0 +1,71 @@
+"""The blob method (Definition 2.2) and the particle method, integrated to high accuracy.
+
+Both move particles X_i from the grid points ih with masses m_j = rho0_j h^d by
+dX_i/dt = -sum_j m_j grad K(X_i - X_j) and carry densities by
+d rho_i/dt = -div v_i rho_i with div v_i = -sum_j m_j Delta K(X_i - X_j). The blob
+method uses K_delta = K * psi_delta with delta = h^q; the particle method uses K with
+grad K(0) := 0 (its density exists only where Delta K is a function).
+
+The ODE system is solved by scipy's DOP853 (explicit Runge-Kutta of order 8 with
+step control) at tolerances far below the method's error: the claims check that
+tightening them does not change the measured errors.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from ..validation import finite_array, positive
+from .kernels import Kernel, pair_energy, pair_sums
+
+
+@dataclass(frozen=True)
+class BlobRun:
+    """Trajectories (times, N, d), densities (times, N) or None, masses and initial points."""
+
+    kernel: Kernel
+    h: float
+    times: np.ndarray
+    positions: np.ndarray
+    densities: np.ndarray | None
+    masses: np.ndarray
+    evaluations: int
+
+    def energies(self) -> np.ndarray:
+        """E_delta of (2.4) along the run (the blob kernel's own K_delta)."""
+        kinds, coefficients, parameters = self.kernel.arrays()
+        return np.array([pair_energy(x, self.masses, kinds, coefficients, parameters) for x in self.positions])
+
+
+def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, with_density: bool = True,
+                        rtol: float = 1e-12, atol: float = 1e-14, h: float | None = None) -> BlobRun:
+    """Integrate Definition 2.2 for ``kernel`` from particles at ``points`` (N, d)."""
+    points = finite_array("points", points, ndim=2)
+    masses = finite_array("masses", masses)
+    times = finite_array("times", times)
+    if np.any(np.diff(times) < 0) or times[0] < 0:
+        raise ValueError("times must be non-negative and sorted")
+    rtol, atol = positive("rtol", rtol), positive("atol", atol)
+    n, dimension = points.shape
+    kinds, coefficients, parameters = kernel.arrays()
+    count = [0]
+
+    def rhs(_, state):
+        count[0] += 1
+        x = state[: n * dimension].reshape(n, dimension)
+        velocity, divergence = pair_sums(x, masses, kinds, coefficients, parameters)
+        if not with_density:
+            return velocity.ravel()
+        return np.concatenate([velocity.ravel(), -divergence * state[n * dimension:]])
+
+    start = points.ravel() if not with_density else np.concatenate([points.ravel(), densities0])
+    solution = solve_ivp(rhs, (0.0, times[-1]), start, method="DOP853", t_eval=times, rtol=rtol, atol=atol)
+    if not solution.success:
+        raise ValueError(f"the ODE integrator failed: {solution.message}")
+    states = solution.y.T
+    positions = states[:, : n * dimension].reshape(times.size, n, dimension)
+    densities = states[:, n * dimension:] if with_density else None
+    return BlobRun(kernel, h if h is not None else np.nan, times, positions, densities, masses, count[0])
