@@ -14,6 +14,7 @@ configfile: str(Path(workflow.basedir) / "config" / "config.yaml")
 include: "rules/common.smk"
 include: "rules/sticky.smk"
 include: "rules/ltp.smk"
+include: "rules/blob.smk"
 include: "rules/report.smk"
 
 
@@ -23,5 +24,6 @@ rule all:
     input:
         STICKY_FIGURES,
         LTP_FIGURES,
+        BLOB_FIGURES,
         "results/claims.csv",
         "results/claims.md",

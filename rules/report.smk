@@ -1,6 +1,6 @@
 """The repository-wide claims table, its Markdown summary and the verify target."""
 
-CLAIM_SOURCES = ["results/sticky/claims.csv", "results/ltp/claims.csv"]
+CLAIM_SOURCES = ["results/sticky/claims.csv", "results/ltp/claims.csv", "results/blob/claims.csv"]
 
 
 rule claims_table:

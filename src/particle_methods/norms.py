@@ -70,3 +70,15 @@ def grid_errors(values, reference, x) -> tuple[float, float]:
     if difference.shape != x.shape:
         raise ValueError("values, reference and x must have the same shape")
     return float(np.trapezoid(difference, x)), float(difference.max())
+
+
+def discrete_l1(values, reference, h: float, dimension: int = 1) -> float:
+    """Discrete L1_h norm h^d sum_i |values_i - reference_i| of the blob paper (section 4.1).
+
+    For vector quantities (trajectories in 2D) the last axis is the vector and |.| is
+    its Euclidean length.
+    """
+    difference = np.asarray(values, dtype=np.float64) - np.asarray(reference, dtype=np.float64)
+    if difference.ndim > 1 and dimension > 1:
+        difference = np.linalg.norm(difference, axis=-1)
+    return float(h**dimension * np.abs(difference).sum())

@@ -19,7 +19,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..validation import finite_array, positive
-from .kernels import Kernel, pair_energy, pair_sums
+from .initial import Data1D, data_1d, grid_1d
+from .kernels import Kernel, kernel_1d, pair_energy, pair_sums
+from .mollifiers import mollifier
 
 
 @dataclass(frozen=True)
@@ -69,3 +71,36 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
     positions = states[:, : n * dimension].reshape(times.size, n, dimension)
     densities = states[:, n * dimension:] if with_density else None
     return BlobRun(kernel, h if h is not None else np.nan, times, positions, densities, masses, count[0])
+
+
+def run_1d(data, kernel: str, h: float, times, *, method: str = "blob", order: int = 4, q: float = 0.9,
+           rtol: float = 1e-12, atol: float = 1e-14) -> BlobRun:
+    """Blob (default) or particle method in 1D from data (4.3)-(4.5) on the grid hZ of [-1, 1].
+
+    Parameters
+    ----------
+    data : a :class:`~particle_methods.blob.initial.Data1D` or its name ('smooth20', 'indicator', 'smooth10').
+    kernel : 'newtonian_attractive' (|x|/2), 'newtonian_repulsive' (-|x|/2) or 'cubic' (|x|^3/3).
+    h : grid step (must divide 1).  times : output times, sorted, from 0.
+    method : 'blob' (mollifier of ``order`` m, delta = h^q with 1/2 < q < 1) or 'particle'
+        (grad K(0) := 0; densities only for kernels whose Laplacian is a function).
+    """
+    if isinstance(data, str):
+        data = data_1d(data)
+    if not isinstance(data, Data1D):
+        raise ValueError(f"data must be Data1D or its name, got {data!r}")
+    points = grid_1d(h)
+    rho0 = data(points[:, 0])
+    masses = rho0 * h
+    if method == "blob":
+        q = float(q)
+        if not 0.5 < q < 1.0:
+            raise ValueError(f"q must lie in (1/2, 1), got {q}")
+        k = kernel_1d(kernel, mollifier(order, 1), h**q)
+        with_density = True
+    elif method == "particle":
+        k = kernel_1d(kernel)
+        with_density = kernel == "cubic"  # Delta K is a Dirac mass for the Newtonian kernels
+    else:
+        raise ValueError(f"unknown method {method!r}: expected 'blob' or 'particle'")
+    return integrate_particles(points, rho0, masses, k, times, with_density=with_density, rtol=rtol, atol=atol, h=h)
