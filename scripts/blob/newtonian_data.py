@@ -71,7 +71,8 @@ def run(p, output):
         exact_times=exact_times, exact_paths=exact_paths, density_times=density_times,
         density_index=np.array(density_index), exact_densities=exact_densities, masses=shown.masses,
         energies=energies, h_values=1.0 / inverse_h, trajectory_errors=table[:, 0], density_errors=table[:, 1],
-        evaluations=table[:, 2], mass_defect=mass_defect, tight_errors=tight[:2], method=np.array(p["method"]), order=p["order"],
+        evaluations=table[:, 2], mass_defect=mass_defect, tight_errors=tight[:2], method=np.array(p["method"]),
+        order=p["order"],
         q=p["q"], fit_points=p["fit_points"], zoom=np.asarray(p["zoom"], float), h=p["h"],
     )
 

@@ -3,7 +3,7 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import new_figure, save_figure
+from particle_methods.plotting import hide_minor_log_labels, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
 ROWS = {"newtonian_repulsive": "K = (-Delta)^{-1} = -|x|/2", "cubic": "K = |x|^3/3"}
@@ -25,6 +25,7 @@ def run(d, output):
                 order = fit_order(h[-k:], errors[-k:])
                 ax.loglog(h, errors, style, ms=4, label=f"{part}: order {order:.2f}")
             ax.set(xlabel="h", title=f"{ROWS[kernel]}, {title}")
+            hide_minor_log_labels(ax)
             ax.legend(loc="lower right")
         axes[row, 0].set_ylabel("L1_h error at t = 0.5")
     fig.suptitle(f"Errors for data (4.5), delta = h^{float(d['q']):g}")

@@ -3,7 +3,7 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import label_panel, new_figure, save_figure
+from particle_methods.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
 TRAJECTORIES_SHOWN = 26
@@ -55,6 +55,7 @@ def run(d, title, output):
         reference = d["trajectory_errors"][-1] * (h / h[-1]) ** (4 * float(d["q"]))
         ax_d.loglog(h, reference, "k:", label=f"slope m q = {4 * float(d['q']):.1f}")
     ax_d.set(xlabel="h", ylabel="L1_h error at t = 0.5")
+    hide_minor_log_labels(ax_d)
     ax_d.legend()
     label_panel(ax_d, "D. errors against h")
     fig.suptitle(title)

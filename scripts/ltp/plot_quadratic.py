@@ -2,7 +2,7 @@
 
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import label_panel, new_figure, save_figure
+from particle_methods.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
 
@@ -23,6 +23,7 @@ def figure2(d, output):
         order = fit_order(d["h_values"][-k:], errors[-k:])
         ax.loglog(d["h_values"], errors, marker + "-", label=f"LTP {name} error (order {order:.2f})")
     ax.set(xlabel="h", ylabel="error at t = 0.5")
+    hide_minor_log_labels(ax)
     ax.legend()
     label_panel(ax, "(b) LTP errors against h")
 
@@ -51,6 +52,7 @@ def figure3(d, output):
         ax.loglog(d["h_values"], d["sp_errors"][:, column], "o-", color=colour, label=f"SP (eps = h) {name}")
         ax.loglog(d["h_values"], d["ltp_errors"][:, column], "s--", color=colour, label=f"LTP {name}")
     ax.set(xlabel="h", ylabel="error at t = 0.5")
+    hide_minor_log_labels(ax)
     ax.legend()
     label_panel(ax, "(b) dt = 1e-4, eps = h")
     fig.suptitle("SP against LTP errors, W = x^2, data (6.1)")

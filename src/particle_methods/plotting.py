@@ -43,3 +43,11 @@ def save_figure(fig, pdf_path, png_path=None) -> None:
     fig.savefig(pdf_path)
     fig.savefig(png_path)
     plt.close(fig)
+
+
+def hide_minor_log_labels(ax) -> None:
+    """Keep minor ticks on log axes but drop their labels, which crowd short decades."""
+    from matplotlib.ticker import NullFormatter
+
+    ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.yaxis.set_minor_formatter(NullFormatter())
