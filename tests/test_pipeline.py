@@ -12,7 +12,7 @@ from particle_methods.claims import COLUMNS
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
-FIGURES = {"sticky": 7, "ltp": 8}
+FIGURES = {"sticky": 7, "ltp": 8, "blob": 4}
 EXPECTED_FIGURES = [f"figures/{paper}/fig{number}.{ext}" for paper, count in FIGURES.items()
                     for number in range(1, count + 1) for ext in ("pdf", "png")]
 EXPECTED_CLAIMS = {
@@ -26,6 +26,11 @@ EXPECTED_CLAIMS = {
     "ltp.fig6.b2.5_equal_split", "ltp.fig6.b1.5_steady", "ltp.fig6.b1.5_edges", "ltp.fig7.finitely_many_diracs",
     "ltp.fig8.sp_oscillates", "ltp.fig8.ltp_smooth", "ltp.mass.weights", "ltp.mass.quadrature",
     "ltp.centre_of_mass.even_w", "ltp.centre_of_mass.quadratic",
+    "blob.fig1d.order_trajectory", "blob.fig1d.order_density", "blob.fig2.order", "blob.fig2.below_blob",
+    "blob.fig3.slower_trajectory", "blob.fig3.slower_density", "blob.fig1c.no_collision", "blob.fig2.no_bending",
+    "blob.integrator", "blob.energy.decrease", "blob.mass", "blob.fig4.m4_cubic_trajectory",
+    "blob.fig4.m6_cubic_density", "blob.fig4.cubic_particle_beats_m4_trajectory", "blob.fig4.cubic_m6_best",
+    "blob.fig4.cubic_reference",
 }
 
 pytestmark = pytest.mark.pipeline

@@ -1,0 +1,88 @@
+"""Mollifiers (4.1), (4.2) and the closed-form mollified kernels against numerical convolution."""
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from particle_methods.blob.kernels import POWER, Kernel, kernel_1d, pair_energy, pair_sums
+from particle_methods.blob.mollifiers import mollifier
+
+
+@pytest.mark.parametrize("order", [4, 6])
+def test_1d_moment_conditions(order):
+    psi = mollifier(order, 1)
+    moments = [integrate.quad(lambda x, k=k: x**k * float(psi(abs(x))), -np.inf, np.inf)[0] for k in range(order + 1)]
+    assert moments[0] == pytest.approx(1.0, abs=1e-12)
+    np.testing.assert_allclose(moments[1:order], 0.0, atol=1e-12)
+    assert abs(moments[order]) > 0.1  # exactly order m, not more
+
+
+def test_2d_moment_conditions():
+    psi = mollifier(4, 2)
+    radial = [integrate.quad(lambda r, k=k: 2 * np.pi * r ** (k + 1) * float(psi(r)), 0, np.inf)[0] for k in (0, 2, 4)]
+    assert radial[0] == pytest.approx(1.0, abs=1e-12)
+    assert radial[1] == pytest.approx(0.0, abs=1e-12)  # |x|^2 moment: the only even one below m = 4
+    assert abs(radial[2]) > 0.1
+
+
+def test_scaled_mollifier_keeps_unit_mass():
+    psi = mollifier(6, 1)
+    for delta in (0.01, 0.3):
+        mass = integrate.quad(lambda x, delta=delta: float(psi(abs(x), delta)), -np.inf, np.inf)[0]
+        assert mass == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("name", ["newtonian_attractive", "newtonian_repulsive", "cubic"])
+@pytest.mark.parametrize("order", [4, 6])
+def test_closed_forms_match_numerical_convolution(name, order):
+    psi, delta = mollifier(order, 1), 0.2
+    smooth, raw = kernel_1d(name, psi, delta), kernel_1d(name)
+
+    def convolve(column, x, odd):
+        def integrand(y):
+            z = x - y
+            value = float(raw.profile(np.array(abs(z)))[column])
+            return (value * z if odd else value) * float(psi(abs(y), delta))
+        return integrate.quad(integrand, -10, 10, points=[x], limit=400, epsabs=1e-14)[0]
+
+    for x in (0.0, 0.03, 0.25, 1.1):
+        k, g, lap = (float(v) for v in smooth.profile(np.array(x)))
+        assert k == pytest.approx(convolve(0, x, False), abs=1e-12)
+        if x > 0:
+            assert g * x == pytest.approx(convolve(1, x, True), abs=1e-12)
+        if name == "cubic":
+            assert lap == pytest.approx(convolve(2, x, False), abs=1e-12)
+        else:  # Delta K_delta = +-psi_delta for the Newtonian kernels
+            sign = 1 if name == "newtonian_attractive" else -1
+            assert lap == pytest.approx(sign * float(psi(x, delta)), rel=1e-12)
+
+
+def test_pair_sums_match_numpy_broadcasting(rng):
+    for dimension in (1, 2):
+        x = rng.normal(size=(40, dimension))
+        m = rng.uniform(0.1, 1, 40)
+        kernel = Kernel("test", dimension, (POWER, POWER), (1.0, -1.0), (4.0, 2.5))
+        velocity, divergence = pair_sums(x, m, *kernel.arrays())
+        diff = x[:, None, :] - x[None, :, :]
+        r = np.linalg.norm(diff, axis=-1)
+        g = r**2 - r**0.5
+        lap = (4 + dimension - 2) * r**2 - (2.5 + dimension - 2) * r**0.5
+        np.testing.assert_allclose(velocity, -(m[None, :, None] * g[..., None] * diff).sum(axis=1), atol=1e-12)
+        np.testing.assert_allclose(divergence, -(m[None, :] * lap).sum(axis=1), atol=1e-12)
+        energy = 0.5 * (m[:, None] * m[None, :] * (r**4 / 4 - r**2.5 / 2.5)).sum()
+        assert pair_energy(x, m, *kernel.arrays()) == pytest.approx(energy, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "make, message",
+    [
+        (lambda: mollifier(8, 1), "unknown mollifier order"),
+        (lambda: kernel_1d("morse"), "unknown kernel"),
+        (lambda: kernel_1d("cubic", mollifier(4, 1), 0.0), "delta must be positive"),
+        (lambda: kernel_1d("cubic", mollifier(4, 2), 0.1), "1D mollifier"),
+        (lambda: mollifier(4, 1).scaled_widths(-1.0), "delta must be positive"),
+    ],
+)
+def test_bad_input(make, message):
+    with pytest.raises(ValueError, match=message):
+        make()
