@@ -13,3 +13,4 @@ def test_readme_python_example_runs():
         exec(compile(block, "README.md", "exec"), namespace)
     assert abs(namespace["error"] - namespace["t"] / (4 * namespace["n"])) < 1e-12
     assert namespace["linf_error"] < 0.2
+    assert namespace["exact_x"].shape == namespace["x"][0].shape and namespace["particle"].densities is not None
