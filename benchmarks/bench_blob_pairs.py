@@ -7,10 +7,9 @@ for the m = 4 mollified cubic kernel (two Gaussian terms, erf and exp per pair) 
 random particles in [-1, 1], with delta = 0.05.
 """
 
-import time
-
 import numpy as np
 from scipy import special
+from timing import best_time
 
 from particle_methods.blob.kernels import kernel_1d, pair_sums
 from particle_methods.blob.mollifiers import mollifier
@@ -31,16 +30,6 @@ def numpy_pair_sums(x, m, weights, widths):
     return velocity, divergence
 
 
-def best(function, repeats=3):
-    function()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return min(times)
-
-
 def main():
     psi, delta = mollifier(4, 1), 0.05
     kernel = kernel_1d("cubic", psi, delta)
@@ -51,8 +40,8 @@ def main():
     for n in (1000, 10000):
         x = np.sort(rng.uniform(-1, 1, n))
         m = np.full(n, 2.0 / n)
-        ours = best(lambda x=x, m=m: pair_sums(x[:, None], m, *arrays))
-        theirs = best(lambda x=x, m=m: numpy_pair_sums(x, m, psi.weights, widths), repeats=1)
+        ours, _ = best_time(lambda x=x, m=m: pair_sums(x[:, None], m, *arrays))
+        theirs, _ = best_time(lambda x=x, m=m: numpy_pair_sums(x, m, psi.weights, widths), repeats=1)
         v1, d1 = pair_sums(x[:, None], m, *arrays)
         v2, d2 = numpy_pair_sums(x, m, psi.weights, widths)
         assert np.allclose(v1[:, 0], v2, atol=1e-10) and np.allclose(d1, d2, atol=1e-10)

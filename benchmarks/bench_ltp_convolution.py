@@ -10,10 +10,9 @@ ones) and compares the time per evaluation with a compiled loop doing nothing bu
 the same power function: the ratio says how close the kernel is to its floor.
 """
 
-import time
-
 import numba
 import numpy as np
+from timing import best_time
 
 from particle_methods.ltp import B3, potential
 from particle_methods.ltp.kernels import GAUSS_TIERS, NEAR, convolutions
@@ -42,16 +41,6 @@ def evaluations_per_pair(centres, widths):
     return float(count.mean())
 
 
-def best(function, repeats=5):
-    function()
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return min(times)
-
-
 def main():
     for a in (1.5, 1.1):
         report(a)
@@ -61,14 +50,14 @@ def report(a):
     w = potential("power", a=a)
     coefficients, exponents = w.as_arrays()
     samples = np.random.default_rng(0).uniform(1e-3, 2.0, 10**7)
-    floor = best(lambda: power_floor(samples, a - 2.0)) / samples.size
+    floor = best_time(lambda: power_floor(samples, a - 2.0))[0] / samples.size
     print(f"W = {w.name}: the power |z|^{a - 2:g} alone costs {floor * 1e9:.2f} ns per call (all threads)")
     print(f"{'N':>6} {'time [ms]':>10} {'pairs/s':>12} {'evals/pair':>11} {'ns/eval':>8} {'vs floor':>9}")
     for n in (200, 400, 800, 1600, 3200):
         centres = np.linspace(-1, 1, n)
         widths = np.full(n, 2.0 / n)
         weights = np.full(n, 1.0 / n)
-        elapsed = best(lambda c=centres, h=widths, m=weights: convolutions(
+        elapsed, _ = best_time(lambda c=centres, h=widths, m=weights: convolutions(
             c, c, m, h, coefficients, exponents, B3.breaks, B3.coefficients))
         per_pair = evaluations_per_pair(centres, widths)
         per_eval = elapsed / (n * n * per_pair)

@@ -13,23 +13,14 @@ exponent of each method (time ~ n^slope) over n >= 10^5.
 """
 
 import argparse
-import time
 
 import numpy as np
 from scipy.optimize import isotonic_regression
+from timing import best_time
 
 from particle_methods.convergence import fit_order
 from particle_methods.sticky import spd_positions
 from particle_methods.sticky.hull_reference import spd_positions_python
-
-
-def best_time(function, repeats):
-    best, result = np.inf, None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = function()
-        best = min(best, time.perf_counter() - start)
-    return best, result
 
 
 def main():
