@@ -34,3 +34,20 @@ def newtonian_exact(data: Data1D, kernel: str, alpha, t: float):
     density = np.zeros_like(alpha)
     density[positive] = 1.0 / (1.0 / rho0[positive] - sign * t)
     return alpha - sign * t * data.mass_from_origin(alpha), density
+
+
+def newtonian_exact_2d(data, points, t: float):
+    """Attractive 2D Newtonian kernel log|x|/(2 pi), radial data: |X|^2 = r0^2 - 2 t m(r0) (mass
+    coordinates, section 4.1) along rays, rho = (1/rho0 - t)^{-1}; blow-up at t = 1/max rho0."""
+    t = nonnegative("t", t)
+    points = finite_array("points", points, ndim=2)
+    rho0 = data(points)
+    if t >= 1.0 / rho0.max():
+        raise ValueError(f"t = {t} is past the blow-up time {1.0 / rho0.max()} of the exact solution")
+    r0 = np.linalg.norm(points, axis=1)
+    r = np.sqrt(np.maximum(r0**2 - 2.0 * t * data.mass_from_origin(r0), 0.0))
+    scale = np.divide(r, r0, out=np.zeros_like(r0), where=r0 > 0)
+    density = np.zeros_like(r0)
+    inside = rho0 > 0
+    density[inside] = 1.0 / (1.0 / rho0[inside] - t)
+    return points * scale[:, None], density

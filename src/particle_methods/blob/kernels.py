@@ -11,6 +11,10 @@ per Gaussian, each in closed form:
 - GAUSS_CUBIC_1D, (|x|^3/3) * G_s: with Z ~ N(x, s^2/2),
   k = E|Z|^3/3, grad = E[Z|Z|] = (x^2 + s^2/2) erf(x/s) + x s e^{-x^2/s^2}/sqrt(pi),
   Laplacian = 2 E|Z| = 2 (x erf(x/s) + s e^{-x^2/s^2}/sqrt(pi)).
+- LOG_2D, log|x|/(2 pi) in 2D (the Newtonian kernel): grad = x/(2 pi |x|^2), Laplacian a
+  Dirac mass (0 away from the origin), grad K(0) := 0.
+- GAUSS_LOG_2D, (log|x|/(2 pi)) * G_s in 2D: grad = x (1 - e^{-r^2/s^2})/(2 pi r^2),
+  Laplacian = G_s = e^{-r^2/s^2}/(pi s^2), k = (log r + E1(r^2/s^2)/2)/(2 pi).
 - POWER, |x|^a/a unmollified in d dimensions: grad = x |x|^{a-2},
   Laplacian = (a + d - 2)|x|^{a-2}; grad K(0) := 0 as in the particle method, and a
   polynomial kernel of degree below m is left unchanged by mollification (Remark 3.4).
@@ -31,7 +35,7 @@ from ..jit import njit
 from ..validation import finite_number
 from .mollifiers import Mollifier
 
-GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER = 0, 1, 2
+GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG_2D, GAUSS_LOG_2D = 0, 1, 2, 3, 4
 _SQRT_PI = math.sqrt(math.pi)
 #: Beyond this many widths erfc and the Gaussian are below 1e-17 relative: erf = 1, e = 0 exactly
 #: in double precision, and the mollified kernel equals the raw one.
@@ -46,9 +50,57 @@ def _gauss_parts(r, s):
     return math.erf(r / s), math.exp(-(r / s) ** 2)
 
 
+_EULER_GAMMA = 0.5772156649015329
+
+
 @njit
-def _term(kind, coefficient, parameter, r, dimension):
-    """(k(r), g(r), l(r)) of one term at distance r >= 0."""
+def _exp1(x):
+    """Exponential integral E1(x), x > 0: power series below 1, continued fraction above."""
+    if x < 1.0:
+        total = 0.0
+        term = 1.0
+        for k in range(1, 40):
+            term *= -x / k
+            total -= term / k
+        return -_EULER_GAMMA - math.log(x) + total
+    # Lentz's continued fraction for e^x E1(x) = 1/(x + 1/(1 + 1/(x + 2/(1 + 2/(x + ...))))).
+    b = x + 1.0
+    c = 1e300
+    d = 1.0 / b
+    result = d
+    for i in range(1, 200):
+        a = -float(i * i)
+        b += 2.0
+        d = 1.0 / (a * d + b)
+        c = b + a / c
+        delta = c * d
+        result *= delta
+        if abs(delta - 1.0) < 1e-16:
+            break
+    return result * math.exp(-x)
+
+
+@njit
+def _term(kind, coefficient, parameter, r, dimension, potential):
+    """(k(r), g(r), l(r)) of one term at distance r >= 0; k only when ``potential`` (else 0)."""
+    if kind == GAUSS_LOG_2D:
+        s = parameter
+        z = (r / s) ** 2
+        if r > _GAUSS_CUTOFF * s:  # e^{-z} < 1e-18: the raw kernel in double precision
+            k = coefficient * math.log(r) / (2 * math.pi) if potential else 0.0
+            return k, coefficient / (2 * math.pi * r * r), 0.0
+        e = math.exp(-z)
+        if r > 0:
+            k = coefficient * (math.log(r) + 0.5 * _exp1(z)) / (2 * math.pi) if potential else 0.0
+            one_minus_e = 1.0 - e if z > 1e-3 else -math.expm1(-z)
+            return k, coefficient * one_minus_e / (2 * math.pi * r * r), coefficient * e / (math.pi * s * s)
+        k = coefficient * (math.log(s) - 0.5 * _EULER_GAMMA) / (2 * math.pi) if potential else 0.0
+        return k, coefficient / (2 * math.pi * s * s), coefficient / (math.pi * s * s)
+    if kind == LOG_2D:
+        if r == 0.0:
+            return 0.0, 0.0, 0.0
+        k = coefficient * math.log(r) / (2 * math.pi) if potential else 0.0
+        return k, coefficient / (2 * math.pi * r * r), 0.0
     if kind == GAUSS_ABS_1D:
         s = parameter
         erf, e = _gauss_parts(r, s)
@@ -73,10 +125,10 @@ def _term(kind, coefficient, parameter, r, dimension):
 
 
 @njit
-def _profile(kinds, coefficients, parameters, r, dimension):
+def _profile(kinds, coefficients, parameters, r, dimension, potential):
     k = g = lap = 0.0
     for term in range(kinds.size):
-        tk, tg, tl = _term(kinds[term], coefficients[term], parameters[term], r, dimension)
+        tk, tg, tl = _term(kinds[term], coefficients[term], parameters[term], r, dimension, potential)
         k += tk
         g += tg
         lap += tl
@@ -97,7 +149,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters):
             for axis in range(dimension):
                 diff[axis] = positions[i, axis] - positions[j, axis]
                 r2 += diff[axis] * diff[axis]
-            _, g, lap = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension)
+            _, g, lap = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, False)
             for axis in range(dimension):
                 velocity[i, axis] -= masses[j] * g * diff[axis]
             div -= masses[j] * lap
@@ -117,7 +169,7 @@ def pair_energy(positions, masses, kinds, coefficients, parameters):
             for axis in range(dimension):
                 d = positions[i, axis] - positions[j, axis]
                 r2 += d * d
-            k, _, _ = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension)
+            k, _, _ = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, True)
             total += masses[j] * k
         partial[i] = masses[i] * total
     return 0.5 * partial.sum()
@@ -140,7 +192,7 @@ class Kernel:
     def profile(self, r):
         """(k, g, l) at the distances r, vectorised (for plots and tests)."""
         kinds, coefficients, parameters = self.arrays()
-        values = [_profile(kinds, coefficients, parameters, float(x), self.dimension) for x in np.ravel(r)]
+        values = [_profile(kinds, coefficients, parameters, float(x), self.dimension, True) for x in np.ravel(r)]
         return tuple(np.reshape([v[i] for v in values], np.shape(r)) for i in range(3))
 
 
@@ -172,3 +224,44 @@ def kernel_1d(name: str, mollifier: Mollifier | None = None, delta: float | None
     return Kernel(f"{name} (m = {mollifier.order}, delta = {delta:.4g})", 1,
                   tuple(gaussian_kind for _ in widths), tuple(sign * w for w in mollifier.weights),
                   tuple(float(s) for s in widths))
+
+
+#: 2D kernels of section 4.4 with closed forms: name -> terms (kind, coefficient, parameter) unmollified.
+KERNELS_2D = {
+    "newtonian": ((LOG_2D, 1.0, 0.0),),                    # log|x|/(2 pi) = (Delta)^{-1}
+    "quadratic": ((POWER, 1.0, 2.0),),                     # |x|^2/2
+    "quartic_log": ((POWER, 1.0, 4.0), (LOG_2D, -1.0, 0.0)),  # |x|^4/4 - log|x|/(2 pi)
+}
+
+
+def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None = None) -> Kernel:
+    """A 2D kernel with closed-form mollification: the log kernel becomes Gaussian terms and
+    polynomial terms of degree below m are left unchanged (Remark 3.4)."""
+    try:
+        terms = KERNELS_2D[name]
+    except KeyError:
+        raise ValueError(f"unknown 2D kernel {name!r}: expected one of {sorted(KERNELS_2D)}") from None
+    if mollifier is None:
+        if delta is not None:
+            raise ValueError("delta needs a mollifier")
+        kinds, coefficients, parameters = zip(*terms)
+        return Kernel(name, 2, kinds, coefficients, parameters)
+    if mollifier.dimension != 2:
+        raise ValueError("a 2D kernel needs a 2D mollifier")
+    if delta is None or finite_number("delta", delta) <= 0:
+        raise ValueError(f"delta must be positive, got {delta}")
+    kinds, coefficients, parameters = [], [], []
+    for kind, coefficient, parameter in terms:
+        if kind == LOG_2D:
+            for weight, width in zip(mollifier.weights, mollifier.scaled_widths(delta)):
+                kinds.append(GAUSS_LOG_2D)
+                coefficients.append(coefficient * weight)
+                parameters.append(float(width))
+        else:  # |x|^a/a with a even and a - 1 < m: grad and Laplacian are polynomials of degree below m
+            if parameter % 2 != 0 or parameter - 1 >= mollifier.order:
+                raise ValueError(f"|x|^{parameter:g} has no closed-form mollification here")
+            kinds.append(kind)
+            coefficients.append(coefficient)
+            parameters.append(parameter)
+    return Kernel(f"{name} (m = {mollifier.order}, delta = {delta:.4g})", 2, tuple(kinds), tuple(coefficients),
+                  tuple(parameters))

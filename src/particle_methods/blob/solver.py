@@ -19,8 +19,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..validation import finite_array, positive
-from .initial import Data1D, data_1d, grid_1d
-from .kernels import Kernel, kernel_1d, pair_energy, pair_sums
+from .initial import Data1D, data_1d, data_2d, grid_1d, grid_2d
+from .kernels import Kernel, kernel_1d, kernel_2d, pair_energy, pair_sums
 from .mollifiers import mollifier
 
 
@@ -103,4 +103,32 @@ def run_1d(data, kernel: str, h: float, times, *, method: str = "blob", order: i
         with_density = kernel == "cubic"  # Delta K is a Dirac mass for the Newtonian kernels
     else:
         raise ValueError(f"unknown method {method!r}: expected 'blob' or 'particle'")
+    return integrate_particles(points, rho0, masses, k, times, with_density=with_density, rtol=rtol, atol=atol, h=h)
+
+
+def run_2d(data, kernel, h: float, times, *, method: str = "blob", q: float = 0.9, delta: float | None = None,
+           rtol: float = 1e-10, atol: float = 1e-12) -> BlobRun:
+    """Blob (m = 4 mollifier (4.2), delta = h^q unless given) or particle method in 2D.
+
+    ``kernel`` is a :class:`Kernel` builder name ('newtonian', 'quadratic', 'quartic_log') or a
+    function (mollifier, delta) -> Kernel for tabulated kernels.
+    """
+    if isinstance(data, str):
+        data = data_2d(data)
+    points = grid_2d(h, data)
+    rho0 = data(points)
+    masses = rho0 * h * h
+    if method == "blob":
+        if delta is None:
+            q = float(q)
+            if not 0.5 < q < 1.0:
+                raise ValueError(f"q must lie in (1/2, 1), got {q}")
+            delta = h**q
+        psi = mollifier(4, 2)
+        k = kernel(psi, delta) if callable(kernel) else kernel_2d(kernel, psi, delta)
+    elif method == "particle":
+        k = kernel(None, None) if callable(kernel) else kernel_2d(kernel)
+    else:
+        raise ValueError(f"unknown method {method!r}: expected 'blob' or 'particle'")
+    with_density = method == "blob" or k.name not in ("newtonian",)
     return integrate_particles(points, rho0, masses, k, times, with_density=with_density, rtol=rtol, atol=atol, h=h)
