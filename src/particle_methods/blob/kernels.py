@@ -15,6 +15,10 @@ per Gaussian, each in closed form:
   Dirac mass (0 away from the origin), grad K(0) := 0.
 - GAUSS_LOG_2D, (log|x|/(2 pi)) * G_s in 2D: grad = x (1 - e^{-r^2/s^2})/(2 pi r^2),
   Laplacian = G_s = e^{-r^2/s^2}/(pi s^2), k = (log r + E1(r^2/s^2)/2)/(2 pi).
+- TABLE, a mollified term tabulated on a radial grid (:mod:`particle_methods.blob.radial`),
+  interpolated linearly; the parameter is the table's row in the ``tables`` array.
+- EXP, e^{-|x|/lambda} unmollified in 2D (Morse terms, parameter lambda): grad = -x e^{-r/lambda}/(lambda r),
+  Laplacian = e^{-r/lambda}/lambda^2 - e^{-r/lambda}/(lambda r); grad K(0) := 0.
 - POWER, |x|^a/a unmollified in d dimensions: grad = x |x|^{a-2},
   Laplacian = (a + d - 2)|x|^{a-2}; grad K(0) := 0 as in the particle method, and a
   polynomial kernel of degree below m is left unchanged by mollification (Remark 3.4).
@@ -35,7 +39,7 @@ from ..jit import njit
 from ..validation import finite_number
 from .mollifiers import Mollifier
 
-GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG_2D, GAUSS_LOG_2D = 0, 1, 2, 3, 4
+GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG_2D, GAUSS_LOG_2D, TABLE, EXP = 0, 1, 2, 3, 4, 5, 6
 _SQRT_PI = math.sqrt(math.pi)
 #: Beyond this many widths erfc and the Gaussian are below 1e-17 relative: erf = 1, e = 0 exactly
 #: in double precision, and the mollified kernel equals the raw one.
@@ -96,6 +100,13 @@ def _term(kind, coefficient, parameter, r, dimension, potential):
             return k, coefficient * one_minus_e / (2 * math.pi * r * r), coefficient * e / (math.pi * s * s)
         k = coefficient * (math.log(s) - 0.5 * _EULER_GAMMA) / (2 * math.pi) if potential else 0.0
         return k, coefficient / (2 * math.pi * s * s), coefficient / (math.pi * s * s)
+    if kind == EXP:
+        lam = parameter
+        e = math.exp(-r / lam)
+        if r == 0.0:
+            return (coefficient if potential else 0.0), 0.0, 0.0
+        return (coefficient * e if potential else 0.0), -coefficient * e / (lam * r), coefficient * (
+            e / (lam * lam) - e / (lam * r))
     if kind == LOG_2D:
         if r == 0.0:
             return 0.0, 0.0, 0.0
@@ -125,10 +136,25 @@ def _term(kind, coefficient, parameter, r, dimension, potential):
 
 
 @njit
-def _profile(kinds, coefficients, parameters, r, dimension, potential):
+def _table_term(coefficient, row, r, tables, steps):
+    """(0, g, l) of a tabulated term by linear interpolation; the last node beyond the table."""
+    table = tables[row]
+    x = r / steps[row]
+    j = min(int(x), table.shape[1] - 2)
+    w = min(x - j, 1.0)
+    g = table[0, j] * (1.0 - w) + table[0, j + 1] * w
+    lap = table[1, j] * (1.0 - w) + table[1, j + 1] * w
+    return 0.0, coefficient * g, coefficient * lap
+
+
+@njit
+def _profile(kinds, coefficients, parameters, r, dimension, potential, tables, steps):
     k = g = lap = 0.0
     for term in range(kinds.size):
-        tk, tg, tl = _term(kinds[term], coefficients[term], parameters[term], r, dimension, potential)
+        if kinds[term] == TABLE:
+            tk, tg, tl = _table_term(coefficients[term], int(parameters[term]), r, tables, steps)
+        else:
+            tk, tg, tl = _term(kinds[term], coefficients[term], parameters[term], r, dimension, potential)
         k += tk
         g += tg
         lap += tl
@@ -136,7 +162,7 @@ def _profile(kinds, coefficients, parameters, r, dimension, potential):
 
 
 @njit(parallel=True)
-def pair_sums(positions, masses, kinds, coefficients, parameters):
+def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps):
     """Velocities -sum_j m_j grad K(X_i - X_j) (shape (N, d)) and divergences -sum_j m_j Delta K(X_i - X_j)."""
     n, dimension = positions.shape
     velocity = np.zeros((n, dimension))
@@ -149,7 +175,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters):
             for axis in range(dimension):
                 diff[axis] = positions[i, axis] - positions[j, axis]
                 r2 += diff[axis] * diff[axis]
-            _, g, lap = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, False)
+            _, g, lap = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, False, tables, steps)
             for axis in range(dimension):
                 velocity[i, axis] -= masses[j] * g * diff[axis]
             div -= masses[j] * lap
@@ -158,7 +184,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters):
 
 
 @njit(parallel=True)
-def pair_energy(positions, masses, kinds, coefficients, parameters):
+def pair_energy(positions, masses, kinds, coefficients, parameters, tables, steps):
     """E_delta = 1/2 sum_{i,j} K(X_i - X_j) m_i m_j, (2.4) on the particle system (2.3)."""
     n, dimension = positions.shape
     partial = np.zeros(n)
@@ -169,7 +195,7 @@ def pair_energy(positions, masses, kinds, coefficients, parameters):
             for axis in range(dimension):
                 d = positions[i, axis] - positions[j, axis]
                 r2 += d * d
-            k, _, _ = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, True)
+            k, _, _ = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, True, tables, steps)
             total += masses[j] * k
         partial[i] = masses[i] * total
     return 0.5 * partial.sum()
@@ -177,22 +203,38 @@ def pair_energy(positions, masses, kinds, coefficients, parameters):
 
 @dataclass(frozen=True)
 class Kernel:
-    """K as a sum of terms (kind, coefficient, parameter), with its name and dimension."""
+    """K as a sum of terms (kind, coefficient, parameter), with its name, dimension and any radial
+    tables its TABLE terms point to (rows of ``tables``, each (g, Laplacian) on a grid of ``steps``)."""
 
     name: str
     dimension: int
     kinds: tuple[int, ...]
     coefficients: tuple[float, ...]
     parameters: tuple[float, ...]
+    tables: tuple = ()
+
+    @property
+    def has_potential(self) -> bool:
+        """Whether K itself is known (tabulated terms carry only grad and Laplacian)."""
+        return TABLE not in self.kinds
 
     def arrays(self):
+        if self.tables:
+            size = max(t.gradient.size for t in self.tables)
+            tables = np.zeros((len(self.tables), 2, size))
+            for row, t in enumerate(self.tables):
+                tables[row, 0, : t.gradient.size] = t.gradient
+                tables[row, 1, : t.laplacian.size] = t.laplacian
+            steps = np.array([t.step for t in self.tables])
+        else:
+            tables, steps = np.zeros((1, 2, 2)), np.ones(1)
         return (np.array(self.kinds, dtype=np.int64), np.array(self.coefficients, dtype=np.float64),
-                np.array(self.parameters, dtype=np.float64))
+                np.array(self.parameters, dtype=np.float64), tables, steps)
 
     def profile(self, r):
         """(k, g, l) at the distances r, vectorised (for plots and tests)."""
-        kinds, coefficients, parameters = self.arrays()
-        values = [_profile(kinds, coefficients, parameters, float(x), self.dimension, True) for x in np.ravel(r)]
+        arrays = self.arrays()
+        values = [_profile(*arrays[:3], float(x), self.dimension, True, *arrays[3:]) for x in np.ravel(r)]
         return tuple(np.reshape([v[i] for v in values], np.shape(r)) for i in range(3))
 
 
@@ -226,17 +268,39 @@ def kernel_1d(name: str, mollifier: Mollifier | None = None, delta: float | None
                   tuple(float(s) for s in widths))
 
 
-#: 2D kernels of section 4.4 with closed forms: name -> terms (kind, coefficient, parameter) unmollified.
+#: 2D kernels of section 4.4: name -> unmollified terms (kind, coefficient, parameter).
 KERNELS_2D = {
-    "newtonian": ((LOG_2D, 1.0, 0.0),),                    # log|x|/(2 pi) = (Delta)^{-1}
-    "quadratic": ((POWER, 1.0, 2.0),),                     # |x|^2/2
-    "quartic_log": ((POWER, 1.0, 4.0), (LOG_2D, -1.0, 0.0)),  # |x|^4/4 - log|x|/(2 pi)
+    "newtonian": ((LOG_2D, 1.0, 0.0),),                           # log|x|/(2 pi) = (Delta)^{-1}
+    "quadratic": ((POWER, 1.0, 2.0),),                            # |x|^2/2
+    "cubic": ((POWER, 1.0, 3.0),),                                # |x|^3/3
+    "quartic_log": ((POWER, 1.0, 4.0), (LOG_2D, -1.0, 0.0)),      # |x|^4/4 - log|x|/(2 pi)
+    "quartic_power": ((POWER, 1.0, 4.0), (POWER, -1.0, 1.5)),     # |x|^4/4 - |x|^1.5/1.5
+    "septic_power": ((POWER, 1.0, 7.0), (POWER, -1.0, 1.5)),      # |x|^7/7 - |x|^1.5/1.5
+    "morse_1": ((EXP, 1.0, 1.0), (EXP, -2.0, 2.0)),               # e^{-|x|} - 2 e^{-|x|/2}
+    "morse_2": ((EXP, 2.0, 1.0), (EXP, -2.0, 2.0)),               # 2 e^{-|x|} - 2 e^{-|x|/2}
 }
 
 
-def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None = None) -> Kernel:
-    """A 2D kernel with closed-form mollification: the log kernel becomes Gaussian terms and
-    polynomial terms of degree below m are left unchanged (Remark 3.4)."""
+def _radial_laplacian(kind, parameter):
+    """Delta of one unmollified 2D term (without its coefficient), as a function of r > 0."""
+    if kind == POWER:
+        return lambda r: parameter * r ** (parameter - 2.0)  # (a + d - 2) r^{a-2} with d = 2
+    if kind == EXP:
+        return lambda r: np.exp(-r / parameter) * (1.0 / parameter**2 - 1.0 / (parameter * r))
+    raise ValueError(f"no radial Laplacian for term kind {kind}")
+
+
+def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None = None, *,
+              table_radius: float = 5.0, table_points: int = 8001) -> Kernel:
+    """A 2D kernel of section 4.4, raw (particle method) or mollified by psi_delta.
+
+    Mollification: the log term becomes Gaussian terms in closed form; a power |x|^a/a with
+    a even and a - 1 < m is unchanged (its gradient and Laplacian are polynomials of degree
+    below m, Remark 3.4); every other term is tabulated by numerical radial convolution
+    (:func:`particle_methods.blob.radial.tabulate`) on [0, table_radius].
+    """
+    from .radial import tabulate
+
     try:
         terms = KERNELS_2D[name]
     except KeyError:
@@ -250,18 +314,22 @@ def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None
         raise ValueError("a 2D kernel needs a 2D mollifier")
     if delta is None or finite_number("delta", delta) <= 0:
         raise ValueError(f"delta must be positive, got {delta}")
-    kinds, coefficients, parameters = [], [], []
+    kinds, coefficients, parameters, tables = [], [], [], []
     for kind, coefficient, parameter in terms:
         if kind == LOG_2D:
             for weight, width in zip(mollifier.weights, mollifier.scaled_widths(delta)):
                 kinds.append(GAUSS_LOG_2D)
                 coefficients.append(coefficient * weight)
                 parameters.append(float(width))
-        else:  # |x|^a/a with a even and a - 1 < m: grad and Laplacian are polynomials of degree below m
-            if parameter % 2 != 0 or parameter - 1 >= mollifier.order:
-                raise ValueError(f"|x|^{parameter:g} has no closed-form mollification here")
+        elif kind == POWER and parameter % 2 == 0 and parameter - 1 < mollifier.order:
             kinds.append(kind)
             coefficients.append(coefficient)
             parameters.append(parameter)
+        else:
+            tables.append(tabulate(_radial_laplacian(kind, parameter), mollifier, delta, table_radius,
+                                   table_points))
+            kinds.append(TABLE)
+            coefficients.append(coefficient)
+            parameters.append(float(len(tables) - 1))
     return Kernel(f"{name} (m = {mollifier.order}, delta = {delta:.4g})", 2, tuple(kinds), tuple(coefficients),
-                  tuple(parameters))
+                  tuple(parameters), tuple(tables))

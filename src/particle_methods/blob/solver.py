@@ -38,8 +38,10 @@ class BlobRun:
 
     def energies(self) -> np.ndarray:
         """E_delta of (2.4) along the run (the blob kernel's own K_delta)."""
-        kinds, coefficients, parameters = self.kernel.arrays()
-        return np.array([pair_energy(x, self.masses, kinds, coefficients, parameters) for x in self.positions])
+        if not self.kernel.has_potential:
+            raise ValueError(f"the energy needs K_delta itself, which {self.kernel.name} does not tabulate")
+        arrays = self.kernel.arrays()
+        return np.array([pair_energy(x, self.masses, *arrays) for x in self.positions])
 
 
 def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, with_density: bool = True,
@@ -52,13 +54,13 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
         raise ValueError("times must be non-negative and sorted")
     rtol, atol = positive("rtol", rtol), positive("atol", atol)
     n, dimension = points.shape
-    kinds, coefficients, parameters = kernel.arrays()
+    arrays = kernel.arrays()
     count = [0]
 
     def rhs(_, state):
         count[0] += 1
         x = state[: n * dimension].reshape(n, dimension)
-        velocity, divergence = pair_sums(x, masses, kinds, coefficients, parameters)
+        velocity, divergence = pair_sums(x, masses, *arrays)
         if not with_density:
             return velocity.ravel()
         return np.concatenate([velocity.ravel(), -divergence * state[n * dimension:]])

@@ -1,0 +1,70 @@
+"""Numerical radial convolution of 2D kernels with the mollifier, tabulated for the pair sums.
+
+For a radial kernel K in 2D, L = Delta K and the mollifier psi_delta = sum_i c_i G_{s_i}
+(Gaussian mixture), the mollified Laplacian is a 1D integral per radius,
+
+    L_delta(r) = sum_i c_i int_0^inf L(rho) rho (2/s_i^2) exp(-(r - rho)^2/s_i^2) i0e(2 r rho/s_i^2) d rho,
+
+(the angular integral of a Gaussian is a modified Bessel function, i0e its scaled form),
+and Gauss's theorem gives the gradient: grad K_delta(x) = x g(|x|) with
+g(r) = r^{-2} int_0^r s L_delta(s) ds. Both are tabulated on a uniform radial grid of
+[0, R] (adaptive quadrature per node, cumulative Simpson for g) and interpolated
+linearly in the pair sums. This is the paper's approach (it tabulated K * psi_delta by
+an FFT in radial coordinates on 100 to 2e6 points); the tests check the tables against
+the closed forms and their convergence in the grid.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import integrate, special
+
+from ..validation import integer_at_least, positive
+from .mollifiers import Mollifier
+
+
+@dataclass(frozen=True)
+class RadialTable:
+    """g and L_delta on r_j = j R / (M - 1)."""
+
+    radius: float
+    gradient: np.ndarray
+    laplacian: np.ndarray
+
+    @property
+    def step(self) -> float:
+        return self.radius / (self.gradient.size - 1)
+
+
+def mollified_laplacian(laplacian, mollifier: Mollifier, delta: float, r: float) -> float:
+    """L_delta(r) by adaptive quadrature; ``laplacian`` is the radial Delta K (integrable at 0 in 2D)."""
+    total = 0.0
+    for weight, s in zip(mollifier.weights, mollifier.scaled_widths(delta)):
+        def integrand(rho, s=s):
+            if rho == 0.0:
+                return 0.0
+            return laplacian(rho) * rho * (2.0 / s**2) * np.exp(-((r - rho) / s) ** 2) * special.i0e(2 * r * rho / s**2)
+
+        lo, hi = max(0.0, r - 9 * s), r + 9 * s
+        points = [p for p in (r, min(s, r)) if lo < p < hi]
+        total += weight * integrate.quad(integrand, lo, hi, points=points or None, limit=200, epsabs=1e-13,
+                                         epsrel=1e-11)[0]
+    return total
+
+
+def tabulate(laplacian, mollifier: Mollifier, delta: float, radius: float = 5.0, points: int = 2001) -> RadialTable:
+    """Tables of g and L_delta for a radial 2D kernel given by its Laplacian."""
+    if mollifier.dimension != 2:
+        raise ValueError("radial tables are built for 2D mollifiers")
+    positive("delta", delta)
+    radius = positive("radius", radius)
+    points = integer_at_least("points", points, 3)
+    r = np.linspace(0.0, radius, points)
+    lap = np.array([mollified_laplacian(laplacian, mollifier, delta, x) for x in r])
+    flux = integrate.cumulative_simpson(r * lap, x=r, initial=0.0)
+    gradient = np.empty_like(r)
+    gradient[1:] = flux[1:] / r[1:] ** 2
+    gradient[0] = lap[0] / 2.0
+    return RadialTable(radius, gradient, lap)
