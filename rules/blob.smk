@@ -1,7 +1,11 @@
 """Craig and Bertozzi: the blob method for the aggregation equation, Figures 1-4 (1D)."""
 
 BLOB = config["blob"]
-BLOB_FIGURES = expand("figures/blob/fig{number}.{ext}", number=range(1, 5), ext=["pdf", "png"])
+BLOB_FIGURES = expand("figures/blob/fig{number}.{ext}", number=range(1, 9), ext=["pdf", "png"])
+BLOB_COMPARE_TITLES = {
+    "fig7": "Repulsive-attractive power kernels, data (4.7): particle (top) and blob (bottom) methods",
+    "fig8": "Morse kernels, data (4.7) and star patch (4.6): particle (top) and blob (bottom) methods",
+}
 BLOB_TITLES = {
     "fig1": "Blob method (m = 4, delta = h^0.9), K = |x|/2, data (4.3)",
     "fig2": "Particle method (grad K(0) = 0), K = |x|/2, data (4.3)",
@@ -83,3 +87,92 @@ rule blob_claims:
         "logs/blob/claims.log",
     script:
         "../scripts/blob/claims.py"
+
+
+rule blob_fig5_data:
+    """Figure 5: 2D errors for the Newtonian kernel, blob and particle methods."""
+    input:
+        code=imports("blob/fig5_data.py"),
+    output:
+        "results/blob/fig5.npz",
+    log:
+        "logs/blob/fig5_data.log",
+    params:
+        cfg=BLOB["fig5"],
+    script:
+        "../scripts/blob/fig5_data.py"
+
+
+rule blob_fig5:
+    """Figure 5 from the cached runs."""
+    input:
+        data="results/blob/fig5.npz",
+        code=imports("blob/plot_fig5.py"),
+    output:
+        **figure("figures/blob/fig5"),
+    log:
+        "logs/blob/fig5_plot.log",
+    script:
+        "../scripts/blob/plot_fig5.py"
+
+
+rule blob_fig6_data:
+    """Figure 6: 2D blob runs for the Newtonian, quadratic and cubic kernels."""
+    input:
+        code=imports("blob/fig6_data.py"),
+    output:
+        "results/blob/fig6.npz",
+    log:
+        "logs/blob/fig6_data.log",
+    params:
+        cfg=BLOB["fig6"],
+    script:
+        "../scripts/blob/fig6_data.py"
+
+
+rule blob_fig6:
+    """Figure 6 from the cached runs."""
+    input:
+        data="results/blob/fig6.npz",
+        code=imports("blob/plot_fig6.py"),
+    output:
+        **figure("figures/blob/fig6"),
+    log:
+        "logs/blob/fig6_plot.log",
+    params:
+        shown=BLOB["fig6"]["top"]["trajectories"],
+    script:
+        "../scripts/blob/plot_fig6.py"
+
+
+rule blob_compare_data:
+    """Figures 7 and 8: particle and blob runs for repulsive-attractive kernels in 2D."""
+    input:
+        code=imports("blob/compare_data.py"),
+    output:
+        "results/blob/{figure}.npz",
+    log:
+        "logs/blob/{figure}_data.log",
+    wildcard_constraints:
+        figure="fig7|fig8",
+    params:
+        cfg=lambda wildcards: BLOB[wildcards.figure],
+    script:
+        "../scripts/blob/compare_data.py"
+
+
+rule blob_compare_figure:
+    """Figures 7 and 8 from the cached runs."""
+    input:
+        data="results/blob/{figure}.npz",
+        code=imports("blob/plot_compare.py"),
+    output:
+        **figure("figures/blob/{figure}"),
+    log:
+        "logs/blob/{figure}_plot.log",
+    wildcard_constraints:
+        figure="fig7|fig8",
+    params:
+        title=lambda wildcards: BLOB_COMPARE_TITLES[wildcards.figure],
+    script:
+        "../scripts/blob/plot_compare.py"
