@@ -74,12 +74,16 @@ rule blob_fig4:
 
 
 rule blob_claims:
-    """Measure every blob claim of Figures 1-4 from the cached results."""
+    """Measure every blob claim of Figures 1-8 from the cached results."""
     input:
         fig1="results/blob/fig1.npz",
         fig2="results/blob/fig2.npz",
         fig3="results/blob/fig3.npz",
         fig4="results/blob/fig4.npz",
+        fig5="results/blob/fig5.npz",
+        fig6="results/blob/fig6.npz",
+        fig7="results/blob/fig7.npz",
+        fig8="results/blob/fig8.npz",
         code=imports("blob/claims.py"),
     output:
         "results/blob/claims.csv",

@@ -12,7 +12,7 @@ from particle_methods.claims import COLUMNS
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
-FIGURES = {"sticky": 7, "ltp": 8, "blob": 4}
+FIGURES = {"sticky": 7, "ltp": 8, "blob": 8}
 EXPECTED_FIGURES = [f"figures/{paper}/fig{number}.{ext}" for paper, count in FIGURES.items()
                     for number in range(1, count + 1) for ext in ("pdf", "png")]
 EXPECTED_CLAIMS = {
@@ -30,7 +30,9 @@ EXPECTED_CLAIMS = {
     "blob.fig3.slower_trajectory", "blob.fig3.slower_density", "blob.fig1c.no_collision", "blob.fig2.no_bending",
     "blob.integrator", "blob.energy.decrease", "blob.mass", "blob.fig4.m4_cubic_trajectory",
     "blob.fig4.m6_cubic_density", "blob.fig4.cubic_particle_beats_m4_trajectory", "blob.fig4.cubic_m6_best",
-    "blob.fig4.cubic_reference",
+    "blob.fig4.cubic_reference", "blob.fig5.m4_regular_trajectory", "blob.fig5.particle_slower",
+    "blob.fig6.quadratic_point", "blob.fig6.newtonian_blowup", "blob.mass_2d", "blob.energy.decrease_2d",
+    "blob.fig7.delta_ring_radius", "blob.fig7.septic_three_points", "blob.fig8.regularisation_effect",
 }
 
 pytestmark = pytest.mark.pipeline

@@ -1,6 +1,5 @@
 """Figures 7 and 8: trajectories (grey) and end states (dots), particle method above, blob method below."""
 
-import numpy as np
 
 from particle_methods.plotting import new_figure, save_figure
 from particle_methods.workflow import load_results, logged

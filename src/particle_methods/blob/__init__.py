@@ -8,18 +8,30 @@ Public entry points:
   (any dimension);
 - :func:`mollifier`: the mollifiers (4.1), (4.2); :func:`kernel_1d`: 1D kernels, raw or
   mollified in closed form;
-- :func:`newtonian_exact`: exact 1D Newtonian solutions by mass coordinates.
+- :func:`newtonian_exact`, :func:`newtonian_exact_2d`: exact Newtonian solutions by mass coordinates;
+- :func:`run_2d`, :func:`kernel_2d`: the 2D method and kernels of section 4.4 (closed forms or
+  tabulated radial convolution); :func:`uniform_ring_radius`: stationary rings;
+- :func:`mass_defect`: mass conservation along trajectories with massless tracers.
 """
 
-from .exact import blowup_time, newtonian_exact
-from .initial import Data1D, data_1d, grid_1d
-from .kernels import Kernel, kernel_1d
+from .exact import blowup_time, newtonian_exact, newtonian_exact_2d
+from .initial import Data1D, Data2D, data_1d, data_2d, grid_1d, grid_2d
+from .kernels import Kernel, kernel_1d, kernel_2d
 from .mollifiers import Mollifier, mollifier
-from .solver import BlobRun, integrate_particles, run_1d
+from .rings import uniform_ring_radius
+from .solver import BlobRun, integrate_particles, mass_defect, run_1d, run_2d
 
 __all__ = [
     "BlobRun",
     "Data1D",
+    "Data2D",
+    "data_2d",
+    "grid_2d",
+    "kernel_2d",
+    "mass_defect",
+    "newtonian_exact_2d",
+    "run_2d",
+    "uniform_ring_radius",
     "Kernel",
     "Mollifier",
     "blowup_time",
