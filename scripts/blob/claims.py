@@ -225,8 +225,8 @@ def fig8_claims(d):
     others = max(v for i, v in enumerate(differences) if i != target)
     return [claim(c.at_least, "fig8.regularisation_effect", "8", "the large delta changes the end state only for "
                   "K = 2e^-|x| - 2e^-|x|/2 with regular data: its particle-vs-blob difference of sorted radii "
-                  "(relative to the initial radius) over the largest of the other cases", 1.0, differences[target] / max(others, 1e-12),
-                  published="only that case")]
+                  "(relative to the initial radius) over the largest of the other cases", 1.0,
+                  differences[target] / max(others, 1e-12), published="only that case")]
 
 
 def run(inputs, output):
