@@ -85,80 +85,103 @@ def _exp1(x):
 
 
 @njit
-def _term(kind, coefficient, parameter, r, dimension, potential):
-    """(k(r), g(r), l(r)) of one term at distance r >= 0; k only when ``potential`` (else 0)."""
-    if kind == GAUSS_LOG_2D:
-        s = parameter
-        z = (r / s) ** 2
-        if r > _GAUSS_CUTOFF * s:  # e^{-z} < 1e-18: the raw kernel in double precision
-            k = coefficient * math.log(r) / (2 * math.pi) if potential else 0.0
-            return k, coefficient / (2 * math.pi * r * r), 0.0
-        e = math.exp(-z)
-        if r > 0:
-            k = coefficient * (math.log(r) + 0.5 * _exp1(z)) / (2 * math.pi) if potential else 0.0
-            one_minus_e = 1.0 - e if z > 1e-3 else -math.expm1(-z)
-            return k, coefficient * one_minus_e / (2 * math.pi * r * r), coefficient * e / (math.pi * s * s)
-        k = coefficient * (math.log(s) - 0.5 * _EULER_GAMMA) / (2 * math.pi) if potential else 0.0
-        return k, coefficient / (2 * math.pi * s * s), coefficient / (math.pi * s * s)
-    if kind == EXP:
-        lam = parameter
-        e = math.exp(-r / lam)
-        if r == 0.0:
-            return (coefficient if potential else 0.0), 0.0, 0.0
-        return (coefficient * e if potential else 0.0), -coefficient * e / (lam * r), coefficient * (
-            e / (lam * lam) - e / (lam * r))
-    if kind == LOG_2D:
-        if r == 0.0:
-            return 0.0, 0.0, 0.0
-        k = coefficient * math.log(r) / (2 * math.pi) if potential else 0.0
-        return k, coefficient / (2 * math.pi * r * r), 0.0
+def _forces(kind, coefficient, parameter, r, dimension):
+    """(g(r), l(r)) of one term at distance r >= 0: grad K = x g(|x|), Delta K = l(|x|)."""
     if kind == GAUSS_ABS_1D:
         s = parameter
         erf, e = _gauss_parts(r, s)
         g = erf / (2.0 * r) if r > 0 else 1.0 / (s * _SQRT_PI)
-        return (coefficient * 0.5 * (r * erf + s * e / _SQRT_PI), coefficient * g,
-                coefficient * e / (s * _SQRT_PI))
+        return coefficient * g, coefficient * e / (s * _SQRT_PI)
     if kind == GAUSS_CUBIC_1D:
         s = parameter
         erf, e = _gauss_parts(r, s)
-        mean_abs = r * erf + s * e / _SQRT_PI
-        # E|Z|^3 for Z ~ N(r, s^2/2): (r^3 + 3 r s^2/2) erf(r/s) + (r^2 + s^2) s e^{-r^2/s^2}/sqrt(pi)
-        mean_cube = (r**3 + 1.5 * r * s * s) * erf + (r * r + s * s) * s * e / _SQRT_PI
         g = (r * r + 0.5 * s * s) * erf / r + s * e / _SQRT_PI if r > 0 else 2.0 * s / _SQRT_PI
-        return coefficient * mean_cube / 3.0, coefficient * g, coefficient * 2.0 * mean_abs
+        return coefficient * g, coefficient * 2.0 * (r * erf + s * e / _SQRT_PI)
+    if kind == GAUSS_LOG_2D:
+        s = parameter
+        if r > _GAUSS_CUTOFF * s:  # e^{-r^2/s^2} < 1e-18: the raw kernel in double precision
+            return coefficient / (2 * math.pi * r * r), 0.0
+        if r == 0.0:
+            return coefficient / (2 * math.pi * s * s), coefficient / (math.pi * s * s)
+        z = (r / s) ** 2
+        e = math.exp(-z)
+        one_minus_e = 1.0 - e if z > 1e-3 else -math.expm1(-z)
+        return coefficient * one_minus_e / (2 * math.pi * r * r), coefficient * e / (math.pi * s * s)
+    if kind == LOG_2D:
+        if r == 0.0:
+            return 0.0, 0.0
+        return coefficient / (2 * math.pi * r * r), 0.0
+    if kind == EXP:
+        if r == 0.0:
+            return 0.0, 0.0
+        lam = parameter
+        e = math.exp(-r / lam)
+        return -coefficient * e / (lam * r), coefficient * (e / (lam * lam) - e / (lam * r))
     # POWER: |x|^a / a
     a = parameter
     if r == 0.0:
-        laplacian = coefficient * (a + dimension - 2.0) if a == 2.0 else 0.0
-        return 0.0, (coefficient if a == 2.0 else 0.0), laplacian
+        return (coefficient, coefficient * (a + dimension - 2.0)) if a == 2.0 else (0.0, 0.0)
     ra = r ** (a - 2.0)
-    return coefficient * ra * r * r / a, coefficient * ra, coefficient * (a + dimension - 2.0) * ra
+    return coefficient * ra, coefficient * (a + dimension - 2.0) * ra
 
 
 @njit
-def _table_term(coefficient, row, r, tables, steps):
-    """(0, g, l) of a tabulated term by linear interpolation; the last node beyond the table."""
+def _potential(kind, coefficient, parameter, r):
+    """k(r) of one (untabulated) term."""
+    if kind == GAUSS_ABS_1D:
+        s = parameter
+        erf, e = _gauss_parts(r, s)
+        return coefficient * 0.5 * (r * erf + s * e / _SQRT_PI)
+    if kind == GAUSS_CUBIC_1D:
+        s = parameter
+        erf, e = _gauss_parts(r, s)
+        # E|Z|^3 for Z ~ N(r, s^2/2): (r^3 + 3 r s^2/2) erf(r/s) + (r^2 + s^2) s e^{-r^2/s^2}/sqrt(pi)
+        return coefficient * ((r**3 + 1.5 * r * s * s) * erf + (r * r + s * s) * s * e / _SQRT_PI) / 3.0
+    if kind == GAUSS_LOG_2D:
+        s = parameter
+        if r == 0.0:
+            return coefficient * (math.log(s) - 0.5 * _EULER_GAMMA) / (2 * math.pi)
+        z = (r / s) ** 2
+        tail = 0.5 * _exp1(z) if z < 745.0 else 0.0
+        return coefficient * (math.log(r) + tail) / (2 * math.pi)
+    if kind == LOG_2D:
+        return coefficient * math.log(r) / (2 * math.pi) if r > 0 else 0.0
+    if kind == EXP:
+        return coefficient * math.exp(-r / parameter)
+    return coefficient * r**parameter / parameter if r > 0 else 0.0
+
+
+@njit
+def _table_forces(coefficient, row, r, tables, steps):
+    """(g, l) of a tabulated term by linear interpolation; the last node beyond the table."""
     table = tables[row]
     x = r / steps[row]
     j = min(int(x), table.shape[1] - 2)
     w = min(x - j, 1.0)
     g = table[0, j] * (1.0 - w) + table[0, j + 1] * w
     lap = table[1, j] * (1.0 - w) + table[1, j + 1] * w
-    return 0.0, coefficient * g, coefficient * lap
+    return coefficient * g, coefficient * lap
 
 
 @njit
-def _profile(kinds, coefficients, parameters, r, dimension, potential, tables, steps):
-    k = g = lap = 0.0
+def _profile_forces(kinds, coefficients, parameters, r, dimension, tables, steps):
+    g = lap = 0.0
     for term in range(kinds.size):
         if kinds[term] == TABLE:
-            tk, tg, tl = _table_term(coefficients[term], int(parameters[term]), r, tables, steps)
+            tg, tl = _table_forces(coefficients[term], int(parameters[term]), r, tables, steps)
         else:
-            tk, tg, tl = _term(kinds[term], coefficients[term], parameters[term], r, dimension, potential)
-        k += tk
+            tg, tl = _forces(kinds[term], coefficients[term], parameters[term], r, dimension)
         g += tg
         lap += tl
-    return k, g, lap
+    return g, lap
+
+
+@njit
+def _profile_potential(kinds, coefficients, parameters, r):
+    k = 0.0
+    for term in range(kinds.size):
+        k += _potential(kinds[term], coefficients[term], parameters[term], r)
+    return k
 
 
 @njit(parallel=True)
@@ -175,7 +198,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps)
             for axis in range(dimension):
                 diff[axis] = positions[i, axis] - positions[j, axis]
                 r2 += diff[axis] * diff[axis]
-            _, g, lap = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, False, tables, steps)
+            g, lap = _profile_forces(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
             for axis in range(dimension):
                 velocity[i, axis] -= masses[j] * g * diff[axis]
             div -= masses[j] * lap
@@ -195,7 +218,7 @@ def pair_energy(positions, masses, kinds, coefficients, parameters, tables, step
             for axis in range(dimension):
                 d = positions[i, axis] - positions[j, axis]
                 r2 += d * d
-            k, _, _ = _profile(kinds, coefficients, parameters, math.sqrt(r2), dimension, True, tables, steps)
+            k = _profile_potential(kinds, coefficients, parameters, math.sqrt(r2))
             total += masses[j] * k
         partial[i] = masses[i] * total
     return 0.5 * partial.sum()
@@ -232,9 +255,13 @@ class Kernel:
                 np.array(self.parameters, dtype=np.float64), tables, steps)
 
     def profile(self, r):
-        """(k, g, l) at the distances r, vectorised (for plots and tests)."""
-        arrays = self.arrays()
-        values = [_profile(*arrays[:3], float(x), self.dimension, True, *arrays[3:]) for x in np.ravel(r)]
+        """(k, g, l) at the distances r, vectorised (for plots and tests); k is NaN for tabulated kernels."""
+        kinds, coefficients, parameters, tables, steps = self.arrays()
+        values = []
+        for x in np.ravel(r):
+            g, lap = _profile_forces(kinds, coefficients, parameters, float(x), self.dimension, tables, steps)
+            k = _profile_potential(kinds, coefficients, parameters, float(x)) if self.has_potential else np.nan
+            values.append((k, g, lap))
         return tuple(np.reshape([v[i] for v in values], np.shape(r)) for i in range(3))
 
 
