@@ -11,6 +11,9 @@ from pathlib import Path
 configfile: str(Path(workflow.basedir) / "config" / "config.yaml")
 
 
+report: "report/workflow.rst"
+
+
 include: "rules/common.smk"
 include: "rules/sticky.smk"
 include: "rules/ltp.smk"
@@ -19,7 +22,7 @@ include: "rules/report.smk"
 
 
 rule all:
-    """Every figure, the claims table and its Markdown summary."""
+    """Every figure, the claims table, its Markdown summary and the executed notebooks."""
     default_target: True
     input:
         STICKY_FIGURES,
@@ -27,3 +30,5 @@ rule all:
         BLOB_FIGURES,
         "results/claims.csv",
         "results/claims.md",
+        NOTEBOOKS,
+        "results/versions.md",

@@ -1,6 +1,33 @@
 """Craig and Bertozzi: the blob method for the aggregation equation, Figures 1-4 (1D)."""
 
 BLOB = config["blob"]
+BLOB_CAPTIONS = {
+    "fig1": (
+        "Blob method, m = 4, delta = h^0.9, K = |x|/2, data (4.3): trajectories, densities at t = 0, 0.4, 0.8, zoom near t = 1, and L1_h errors against h at t = 0.5."
+    ),
+    "fig2": (
+        "Particle method (grad K(0) = 0), same data: trajectories (straight lines), zoom, and trajectory errors against h."
+    ),
+    "fig3": (
+        "Blob method for the discontinuous data (4.4): trajectories, rounded densities, zoom and slower convergence."
+    ),
+    "fig4": (
+        "L1_h errors at t = 0.5 for data (4.5): K = -|x|/2 and |x|^3/3; particle method, m = 4 and m = 6."
+    ),
+    "fig5": (
+        "2D, K = log|x|/(2 pi): L1_h errors at t = 0.5 for the blob method with regular data, the particle method, and the blob method with the indicator of the disk."
+    ),
+    "fig6": (
+        "2D blob method for log|x|/(2 pi), |x|^2/2, |x|^3/3: 20 trajectories and the density at t = 1.4 (bump data), star patch density at t = 0.8 from the side and from above."
+    ),
+    "fig7": (
+        "2D particle (top) and blob (bottom, delta = 0.32) end states for |x|^4/4 - log|x|/(2 pi), |x|^4/4 - |x|^1.5/1.5 and |x|^7/7 - |x|^1.5/1.5."
+    ),
+    "fig8": (
+        "2D particle (top) and blob (bottom) end states for the Morse kernels e^-|x| - 2e^-|x|/2 and 2e^-|x| - 2e^-|x|/2, data (4.7) and the star patch."
+    ),
+}
+
 BLOB_FIGURES = expand("figures/blob/fig{number}.{ext}", number=range(1, 9), ext=["pdf", "png"])
 BLOB_COMPARE_TITLES = {
     "fig7": "Repulsive-attractive power kernels, data (4.7): particle (top) and blob (bottom) methods",
@@ -41,6 +68,7 @@ rule blob_newtonian_figure:
     wildcard_constraints:
         figure="fig1|fig2|fig3",
     params:
+        caption=caption(BLOB_CAPTIONS),
         title=lambda wildcards: BLOB_TITLES[wildcards.figure],
     script:
         "../scripts/blob/plot_newtonian.py"
@@ -69,6 +97,8 @@ rule blob_fig4:
         **figure("figures/blob/fig4"),
     log:
         "logs/blob/fig4_plot.log",
+    params:
+        caption=caption(BLOB_CAPTIONS, "fig4"),
     script:
         "../scripts/blob/plot_fig4.py"
 
@@ -116,6 +146,8 @@ rule blob_fig5:
         **figure("figures/blob/fig5"),
     log:
         "logs/blob/fig5_plot.log",
+    params:
+        caption=caption(BLOB_CAPTIONS, "fig5"),
     script:
         "../scripts/blob/plot_fig5.py"
 
@@ -144,6 +176,7 @@ rule blob_fig6:
     log:
         "logs/blob/fig6_plot.log",
     params:
+        caption=caption(BLOB_CAPTIONS, "fig6"),
         shown=BLOB["fig6"]["top"]["trajectories"],
     script:
         "../scripts/blob/plot_fig6.py"
@@ -177,6 +210,7 @@ rule blob_compare_figure:
     wildcard_constraints:
         figure="fig7|fig8",
     params:
+        caption=caption(BLOB_CAPTIONS),
         title=lambda wildcards: BLOB_COMPARE_TITLES[wildcards.figure],
     script:
         "../scripts/blob/plot_compare.py"

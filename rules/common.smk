@@ -23,6 +23,30 @@ def imports(script):
     return module_dependencies(ROOT / "scripts" / script, PACKAGE)
 
 
+CAPTION = str(ROOT / "report" / "caption.rst")
+
+
 def figure(path_without_suffix):
-    """PDF and PNG outputs of one figure."""
-    return {"pdf": f"{path_without_suffix}.pdf", "png": f"{path_without_suffix}.png"}
+    """PDF and PNG outputs of one figure; the PNG goes to the Snakemake report with the rule's
+    ``params.caption`` as caption, filed under its paper and figure."""
+    paper, name = path_without_suffix.split("/")[-2:]
+    return {
+        "pdf": f"{path_without_suffix}.pdf",
+        "png": report(
+            f"{path_without_suffix}.png", caption=CAPTION, category=paper, subcategory=name
+        ),
+    }
+
+
+def _rst(text):
+    """Escape the characters reStructuredText would read as markup (|x|, delta_1, a*b)."""
+    for character in "|_*":
+        text = text.replace(character, "\\" + character)
+    return text
+
+
+def caption(captions, figure=None):
+    """Caption of a figure from a paper's CAPTIONS table (by wildcard when ``figure`` is None)."""
+    if figure is not None:
+        return _rst(captions[figure])
+    return lambda wildcards: _rst(captions[wildcards.figure])

@@ -1,6 +1,31 @@
 """Campos Pinto, Carrillo, Charles, Choi: linearly transformed particles, Figures 1-8."""
 
 LTP = config["ltp"]
+LTP_CAPTIONS = {
+    "fig1": ("The hat shape function (2.12) and its bi-orthogonal kernel (dotted)."),
+    "fig2": (
+        "W = x^2 from (6.1), t = 0.5: exact against LTP densities for several h; LTP L1 and Linf errors against h; SP densities with h = 0.01 and fixed widths eps."
+    ),
+    "fig3": (
+        "SP against LTP errors, W = x^2: (a) SP errors over eps with the LTP error as reference (h = 0.01, dt = 0.01); (b) errors against h with eps = h (dt = 1e-4)."
+    ),
+    "fig4": (
+        "W = x^2/2 from (6.1), h = 1/25, dt = 1e-3: exact, LTP and SP densities with hat (left) and B3 (right) shapes."
+    ),
+    "fig5": (
+        "W = |x|^a/a from (6.2), a = 1.5 and 2.5, h = 0.01, 200 steps: potential, density, velocity and particle sizes."
+    ),
+    "fig6": (
+        "W = |x|^3/3 - |x|^b/b from (6.2), b = 1.1, 1.5, 2.5, h = 0.01, 200 steps: potential, density, velocity and particle sizes."
+    ),
+    "fig7": (
+        "W = |x|^3/3 - |x|^2.5/2.5 from (6.3), 100 steps: density snapshots, concentrating on two points."
+    ),
+    "fig8": (
+        "W = |x|^4/4 - |x|^2.5/2.5 from (6.2), 100 steps: SP and LTP end states and particle sizes; the SP density oscillates."
+    ),
+}
+
 LTP_FIGURES = expand("figures/ltp/fig{number}.{ext}", number=range(1, 9), ext=["pdf", "png"])
 # Figures 5 and 6 share one layout: rows potential, density, velocity, particle size.
 LTP_ROW_TITLES = {
@@ -18,6 +43,7 @@ rule ltp_fig1:
     log:
         "logs/ltp/fig1.log",
     params:
+        caption=caption(LTP_CAPTIONS, "fig1"),
         cfg=LTP["fig1"],
     script:
         "../scripts/ltp/plot_fig1.py"
@@ -44,11 +70,13 @@ rule ltp_quadratic_figures:
         code=imports("ltp/plot_quadratic.py"),
     output:
         fig2_pdf="figures/ltp/fig2.pdf",
-        fig2_png="figures/ltp/fig2.png",
+        fig2_png=report("figures/ltp/fig2.png", caption=CAPTION, category="ltp", subcategory="fig2"),
         fig3_pdf="figures/ltp/fig3.pdf",
-        fig3_png="figures/ltp/fig3.png",
+        fig3_png=report("figures/ltp/fig3.png", caption=CAPTION, category="ltp", subcategory="fig3"),
     log:
         "logs/ltp/quadratic_plot.log",
+    params:
+        caption=" ".join(caption(LTP_CAPTIONS, name) for name in ("fig2", "fig3")),
     script:
         "../scripts/ltp/plot_quadratic.py"
 
@@ -76,6 +104,8 @@ rule ltp_fig4:
         **figure("figures/ltp/fig4"),
     log:
         "logs/ltp/fig4_plot.log",
+    params:
+        caption=caption(LTP_CAPTIONS, "fig4"),
     script:
         "../scripts/ltp/plot_fig4.py"
 
@@ -108,6 +138,7 @@ rule ltp_rows_figure:
     wildcard_constraints:
         figure="fig5|fig6",
     params:
+        caption=caption(LTP_CAPTIONS),
         title=lambda wildcards: LTP_ROW_TITLES[wildcards.figure],
     script:
         "../scripts/ltp/plot_rows.py"
@@ -136,6 +167,8 @@ rule ltp_fig7:
         **figure("figures/ltp/fig7"),
     log:
         "logs/ltp/fig7_plot.log",
+    params:
+        caption=caption(LTP_CAPTIONS, "fig7"),
     script:
         "../scripts/ltp/plot_fig7.py"
 
@@ -163,6 +196,8 @@ rule ltp_fig8:
         **figure("figures/ltp/fig8"),
     log:
         "logs/ltp/fig8_plot.log",
+    params:
+        caption=caption(LTP_CAPTIONS, "fig8"),
     script:
         "../scripts/ltp/plot_fig8.py"
 

@@ -1,6 +1,30 @@
 """Jourdain and Reygner: sticky particle dynamics (SPD) and multitype SPD, Figures 1-7."""
 
 STICKY = config["sticky"]
+STICKY_CAPTIONS = {
+    "fig1": (
+        "One iteration of the Brenier-Grenier hull algorithm (section 5.1.1): the list L before the iteration, the removal of a concave corner, and L after it."
+    ),
+    "fig2": (
+        "Burgers equation from (delta_-1 + delta_1)/2: (a) trajectories of 50 particles, (b) u(t, x), (c) profiles at t = 0, 8, ..., 80 with the exact fans dashed, (d) log L1 error against p for n = 2^p, t = 10, ..., 50: slope -log 2."
+    ),
+    "fig3": (
+        "Concave flux u(1-u)/2 from the Laplace law: (a) 30 trajectories, (b) u(t, x), (c) profiles at t = 0, 0.5, ..., 5 with the exact solution, (d) log L1 error against p, t = 0, ..., 17: plateau, then log(n)/n decay."
+    ),
+    "fig4": (
+        "p-system, w0+ >= w0- (x0 = 0.1): MSPD trajectories by the iterated TSPD (Delta = 0.03), 20 particles per type; no same-type collision."
+    ),
+    "fig5": (
+        "p-system, w0+ >= w0-: w-, w+, specific volume u and velocity v in the space-time plane (n = 200 per type, Delta = 0.03)."
+    ),
+    "fig6": (
+        "p-system with shocks (x0 = -4, w0+ = 1{x >= 0}): trajectories, 20 per type (Delta = 0.02); the + cluster forms, then breaks up after crossing."
+    ),
+    "fig7": (
+        "p-system with shocks: w-, w+, u and v in the space-time plane (n = 200 per type, Delta = 0.02)."
+    ),
+}
+
 
 # Figures 4-7 show two p-system runs: figure -> (case, panel kind).
 PSYSTEM_FIGURES = {
@@ -21,6 +45,7 @@ rule sticky_fig1:
     log:
         "logs/sticky/fig1.log",
     params:
+        caption=caption(STICKY_CAPTIONS, "fig1"),
         cfg=STICKY["fig1"],
     script:
         "../scripts/sticky/plot_fig1.py"
@@ -54,6 +79,7 @@ rule sticky_scalar_figure:
     wildcard_constraints:
         figure="fig2|fig3",
     params:
+        caption=caption(STICKY_CAPTIONS),
         case=lambda wildcards: STICKY[wildcards.figure]["case"],
     script:
         "../scripts/sticky/plot_scalar.py"
@@ -88,6 +114,7 @@ rule sticky_psystem_figure:
     wildcard_constraints:
         figure="fig4|fig5|fig6|fig7",
     params:
+        caption=caption(STICKY_CAPTIONS),
         case=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][0],
         kind=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][1],
         x0=lambda wildcards: STICKY["psystem"][PSYSTEM_FIGURES[wildcards.figure][0]]["x0"],

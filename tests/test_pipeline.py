@@ -63,6 +63,16 @@ def test_every_figure_is_built(workdir):
     assert (workdir / "figures/sticky/fig2.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+def test_every_notebook_runs_on_the_quick_results(workdir):
+    import json
+
+    for paper in FIGURES:
+        notebook = json.loads((workdir / "notebooks" / "executed" / f"{paper}.ipynb").read_text())
+        outputs = [cell.get("outputs", []) for cell in notebook["cells"] if cell["cell_type"] == "code"]
+        assert outputs and all(isinstance(o, list) for o in outputs)
+        assert not any(o.get("output_type") == "error" for cell in outputs for o in cell), paper
+
+
 def test_claims_table_and_summary(workdir):
     with (workdir / "results/claims.csv").open(newline="") as handle:
         reader = csv.DictReader(handle)
@@ -120,3 +130,16 @@ def test_a_forced_rerun_gives_an_identical_claims_table(workdir):
     result = snakemake(workdir, "--forceall")
     assert result.returncode == 0, result.stderr[-2000:]
     assert (workdir / "results/claims.csv").read_text() == before
+
+
+def test_slurm_profile_parses(workdir):
+    """A dry run through the cluster profile, where the SLURM executor plugin is installed."""
+    pytest.importorskip("snakemake_executor_plugin_slurm")
+    result = snakemake(workdir, "--dry-run", "--forceall", "--profile", str(ROOT / "profiles" / "slurm"))
+    assert result.returncode == 0, result.stderr[-2000:]
+    assert "blob_fig5_data" in result.stdout + result.stderr
+
+
+def test_versions_are_recorded(workdir):
+    versions = (workdir / "results" / "versions.md").read_text()
+    assert "| numba |" in versions and "| python |" in versions
