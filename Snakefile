@@ -32,3 +32,9 @@ rule all:
         "results/claims.md",
         NOTEBOOKS,
         "results/versions.md",
+        MANUSCRIPT,
+
+
+onsuccess:
+    if not LATEX:
+        print(LATEX_HELP)

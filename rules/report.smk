@@ -1,4 +1,7 @@
-"""The repository-wide claims table, its Markdown summary and the verify target."""
+"""The repository-wide claims table and its Markdown summary, the verify target, the notebooks,
+the software versions and the LaTeX report."""
+
+import shutil
 
 CLAIM_SOURCES = ["results/sticky/claims.csv", "results/ltp/claims.csv", "results/blob/claims.csv"]
 
@@ -61,3 +64,57 @@ rule versions:
         "logs/versions.log",
     shell:
         "python -m particle_methods.environment {output} > {log} 2>&1"
+
+
+SNIPPETS = expand(
+    "paper/build/generated/{name}.tex",
+    name=[
+        "claims_sticky",
+        "claims_ltp",
+        "claims_blob",
+        "measured",
+        "parameters",
+        "summary",
+        "versions",
+    ],
+)
+LATEX = all(shutil.which(tool) for tool in ("latexmk", "pdflatex"))
+MANUSCRIPT = ["paper/ms.pdf"] if LATEX else []
+LATEX_HELP = (
+    "paper/ms.pdf was not built: no LaTeX toolchain found. On Debian or Ubuntu install it with\n"
+    "    sudo apt-get install latexmk texlive-latex-base texlive-latex-recommended "
+    "texlive-latex-extra texlive-fonts-recommended lmodern\n"
+    "and run snakemake again; everything else is built."
+)
+
+
+rule report_snippets:
+    """LaTeX snippets of the report: claims tables, measured values, parameters, versions."""
+    input:
+        claims="results/claims.csv",
+        versions="results/versions.md",
+        code=imports("report/snippets.py"),
+    output:
+        SNIPPETS,
+    log:
+        "logs/report_snippets.log",
+    params:
+        outdir="paper/build/generated",
+    script:
+        "../scripts/report/snippets.py"
+
+
+rule manuscript:
+    """Build paper/ms.pdf with latexmk from the article and the generated snippets."""
+    input:
+        source=str(ROOT / "paper" / "ms.tex"),
+        snippets=SNIPPETS,
+        figures=STICKY_FIGURES + LTP_FIGURES + BLOB_FIGURES,
+    output:
+        "paper/ms.pdf",
+    log:
+        "logs/manuscript.log",
+    shell:
+        "cp {input.source} paper/build/ms.tex && cd paper/build && "
+        "latexmk -pdf -interaction=nonstopmode -halt-on-error ms.tex > ../../{log} 2>&1 && "
+        "cp ms.pdf ../ms.pdf"

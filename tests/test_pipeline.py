@@ -140,6 +140,17 @@ def test_slurm_profile_parses(workdir):
     assert "blob_fig5_data" in result.stdout + result.stderr
 
 
+def test_report_pdf_is_built_where_latex_is_installed(workdir):
+    import shutil
+
+    if not (shutil.which("latexmk") and shutil.which("pdflatex")):
+        pytest.skip("no LaTeX toolchain: the pipeline skips paper/ms.pdf and says how to install it")
+    pdf = workdir / "paper" / "ms.pdf"
+    assert pdf.read_bytes()[:5] == b"%PDF-" and pdf.stat().st_size > 100_000
+    measured = (workdir / "paper" / "build" / "generated" / "measured.tex").read_text()
+    assert "measured@sticky.fig2d.order" in measured
+
+
 def test_versions_are_recorded(workdir):
     versions = (workdir / "results" / "versions.md").read_text()
     assert "| numba |" in versions and "| python |" in versions
