@@ -41,7 +41,7 @@ def figure(path_without_suffix):
 def _rst(text):
     """Escape the characters reStructuredText would read as markup (|x|, delta_1, a*b)."""
     for character in "|_*":
-        text = text.replace(character, "\\" + character)
+        text = text.replace(character, f"\\{character}")
     return text
 
 

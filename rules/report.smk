@@ -1,6 +1,7 @@
 """The repository-wide claims table and its Markdown summary, the verify target, the notebooks,
 the software versions and the LaTeX report."""
 
+import os
 import shutil
 
 CLAIM_SOURCES = ["results/sticky/claims.csv", "results/ltp/claims.csv", "results/blob/claims.csv"]
@@ -99,7 +100,7 @@ rule report_snippets:
     log:
         "logs/report_snippets.log",
     params:
-        outdir="paper/build/generated",
+        outdir=lambda wildcards, output: os.path.dirname(output[0]),
     script:
         "../scripts/report/snippets.py"
 
@@ -109,7 +110,7 @@ rule manuscript:
     input:
         source=str(ROOT / "paper" / "ms.tex"),
         snippets=SNIPPETS,
-        figures=STICKY_FIGURES + LTP_FIGURES + BLOB_FIGURES,
+        figures=[*STICKY_FIGURES, *LTP_FIGURES, *BLOB_FIGURES],
     output:
         "paper/ms.pdf",
     log:
