@@ -28,7 +28,7 @@ _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": 
 
 
 _CLAIM_TABLE_HEAD = (
-    "\\begin{longtable}{>{\\raggedright}p{3.6cm}>{\\raggedright}p{1.2cm}>{\\raggedright}p{5.4cm}"
+    "\\begin{longtable}{>{\\raggedright\\scriptsize}p{3.9cm}>{\\raggedright}p{1.1cm}>{\\raggedright}p{5.2cm}"
     ">{\\raggedright}p{1.5cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.2cm}l}\n"
     "\\toprule id & figure & claim & published & measured & tolerance & status \\\\ \\midrule \\endhead\n"
 )
@@ -77,7 +77,8 @@ def write_snippets(claims_csv, versions_md, config, outdir) -> None:
         lines = []
         for claim in rows:
             status = r"\textbf{fail}" if claim.status == "fail" else "pass"
-            lines.append(f"\\texttt{{{tex(claim.id)}}} & {tex(claim.figure)} & {tex(claim.claim)} & "
+            identifier = tex(claim.id).replace(".", ".\\allowbreak{}")
+            lines.append(f"\\texttt{{{identifier}}} & {tex(claim.figure)} & {tex(claim.claim)} & "
                          f"{tex(claim.published)} & {tex(claim.measured)} & {tex(claim.tolerance)} & {status} \\\\\n")
         (outdir / f"claims_{paper}.tex").write_text(_CLAIM_TABLE_HEAD + "".join(lines) + "\\bottomrule\n\\end{longtable}\n")
     (outdir / "summary.tex").write_text("".join(summary))

@@ -31,11 +31,6 @@ class Potential:
         for c in self.coefficients:
             finite_number("coefficient", c)
 
-    @property
-    def is_even(self) -> bool:
-        """Every W here is even, so the exact centre of mass is conserved."""
-        return True
-
     def __call__(self, x):
         x = np.abs(np.asarray(x, dtype=np.float64))
         return sum(c * x**a / a for c, a in zip(self.coefficients, self.exponents))
