@@ -80,7 +80,8 @@ def write_snippets(claims_csv, versions_md, config, outdir) -> None:
             identifier = tex(claim.id).replace(".", ".\\allowbreak{}")
             lines.append(f"\\texttt{{{identifier}}} & {tex(claim.figure)} & {tex(claim.claim)} & "
                          f"{tex(claim.published)} & {tex(claim.measured)} & {tex(claim.tolerance)} & {status} \\\\\n")
-        (outdir / f"claims_{paper}.tex").write_text(_CLAIM_TABLE_HEAD + "".join(lines) + "\\bottomrule\n\\end{longtable}\n")
+        table = _CLAIM_TABLE_HEAD + "".join(lines) + "\\bottomrule\n\\end{longtable}\n"
+        (outdir / f"claims_{paper}.tex").write_text(table)
     (outdir / "summary.tex").write_text("".join(summary))
     if not isinstance(config, dict):
         config = yaml.safe_load(Path(config).read_text())
