@@ -105,3 +105,11 @@ def in_interval(name: str, values, low: float, high: float) -> np.ndarray:
     if np.any(array < low) or np.any(array > high):
         raise ValueError(f"{name} must lie in [{low}, {high}]")
     return array
+
+
+def one_of(what: str, name, table: dict):
+    """``table[name]``, or a ValueError "unknown <what> <name>: expected one of ..."."""
+    try:
+        return table[name]
+    except (KeyError, TypeError):
+        raise ValueError(f"unknown {what} {name!r}: expected one of {sorted(table)}") from None

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import polynomial as P
 
-from ..validation import positive
+from ..validation import one_of, positive
 
 
 @dataclass(frozen=True)
@@ -42,10 +42,7 @@ DATA_1D = {"smooth20": Data1D("(1 - x^2)^20 (4.3)", 20), "indicator": Data1D("in
 
 def data_1d(name: str) -> Data1D:
     """Initial data 'smooth20' (4.3), 'indicator' (4.4) or 'smooth10' (4.5)."""
-    try:
-        return DATA_1D[name]
-    except KeyError:
-        raise ValueError(f"unknown initial data {name!r}: expected one of {sorted(DATA_1D)}") from None
+    return one_of("initial data", name, DATA_1D)
 
 
 def grid_1d(h: float) -> np.ndarray:
@@ -105,10 +102,7 @@ DATA_2D = {name: Data2D(name, 0.375 if name == "star" else 1.0) for name in ("re
 def data_2d(name: str) -> Data2D:
     """2D data: 'regular' (1 - |x|^2)_+^2, 'disk' (indicator), 'bump' exp(1/(|x|^2 - 1)) with unit mass,
     'quartic' (4.7) and 'star' (4.6)."""
-    try:
-        return DATA_2D[name]
-    except KeyError:
-        raise ValueError(f"unknown 2D data {name!r}: expected one of {sorted(DATA_2D)}") from None
+    return one_of("2D data", name, DATA_2D)
 
 
 def grid_2d(h: float, data: Data2D) -> np.ndarray:

@@ -36,7 +36,7 @@ import numpy as np
 from numba import prange
 
 from ..jit import njit
-from ..validation import finite_number
+from ..validation import finite_number, one_of
 from .mollifiers import Mollifier
 
 GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG_2D, GAUSS_LOG_2D, TABLE, EXP = 0, 1, 2, 3, 4, 5, 6
@@ -275,10 +275,7 @@ KERNELS_1D = {
 
 def kernel_1d(name: str, mollifier: Mollifier | None = None, delta: float | None = None) -> Kernel:
     """A 1D kernel of section 4, mollified by psi_delta, or raw (particle method) without mollifier."""
-    try:
-        sign, gaussian_kind, a = KERNELS_1D[name]
-    except KeyError:
-        raise ValueError(f"unknown kernel {name!r}: expected one of {sorted(KERNELS_1D)}") from None
+    sign, gaussian_kind, a = one_of("kernel", name, KERNELS_1D)
     if mollifier is None:
         if delta is not None:
             raise ValueError("delta needs a mollifier")
@@ -328,10 +325,7 @@ def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None
     """
     from .radial import tabulate
 
-    try:
-        terms = KERNELS_2D[name]
-    except KeyError:
-        raise ValueError(f"unknown 2D kernel {name!r}: expected one of {sorted(KERNELS_2D)}") from None
+    terms = one_of("2D kernel", name, KERNELS_2D)
     if mollifier is None:
         if delta is not None:
             raise ValueError("delta needs a mollifier")

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import integrate, special
 
-from ..validation import positive
+from ..validation import one_of, positive
 from .shapes import Shape
 
 
@@ -86,10 +86,7 @@ DENSITIES = {"rho1": _gaussian_bumps(), "rho2": _indicator(), "rho3": _bump()}
 
 def density_named(name: str) -> InitialDensity:
     """Initial density (6.1) 'rho1', (6.2) 'rho2' or (6.3) 'rho3'."""
-    try:
-        return DENSITIES[name]
-    except KeyError:
-        raise ValueError(f"unknown initial density {name!r}: expected one of {sorted(DENSITIES)}") from None
+    return one_of("initial density", name, DENSITIES)
 
 
 def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str = "cell"):

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..validation import one_of
+
 
 @dataclass(frozen=True)
 class Shape:
@@ -58,10 +60,7 @@ SHAPES = {"hat": HAT, "b3": B3}
 
 def shape_named(name: str) -> Shape:
     """The shape called ``name`` ('hat' or 'b3'); ValueError otherwise."""
-    try:
-        return SHAPES[name]
-    except KeyError:
-        raise ValueError(f"unknown shape {name!r}: expected one of {sorted(SHAPES)}") from None
+    return one_of("shape", name, SHAPES)
 
 
 def hat_biorthogonal_kernel(s):
