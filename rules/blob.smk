@@ -50,6 +50,8 @@ rule blob_newtonian_data:
         "logs/blob/{figure}_data.log",
     wildcard_constraints:
         figure="fig1|fig2|fig3",
+    conda:
+        ENVIRONMENT
     params:
         cfg=lambda wildcards: BLOB[wildcards.figure],
     script:
@@ -67,6 +69,8 @@ rule blob_newtonian_figure:
         "logs/blob/{figure}_plot.log",
     wildcard_constraints:
         figure="fig1|fig2|fig3",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(BLOB_CAPTIONS),
         title=lambda wildcards: BLOB_TITLES[wildcards.figure],
@@ -82,6 +86,8 @@ rule blob_fig4_data:
         "results/blob/fig4.npz",
     log:
         "logs/blob/fig4_data.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=BLOB["fig4"],
     script:
@@ -97,6 +103,8 @@ rule blob_fig4:
         **figure("figures/blob/fig4"),
     log:
         "logs/blob/fig4_plot.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(BLOB_CAPTIONS, "fig4"),
     script:
@@ -119,6 +127,8 @@ rule blob_claims:
         "results/blob/claims.csv",
     log:
         "logs/blob/claims.log",
+    conda:
+        ENVIRONMENT
     script:
         "../scripts/blob/claims.py"
 
@@ -131,6 +141,8 @@ rule blob_fig5_data:
         "results/blob/fig5.npz",
     log:
         "logs/blob/fig5_data.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=BLOB["fig5"],
     script:
@@ -146,6 +158,8 @@ rule blob_fig5:
         **figure("figures/blob/fig5"),
     log:
         "logs/blob/fig5_plot.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(BLOB_CAPTIONS, "fig5"),
     script:
@@ -160,6 +174,8 @@ rule blob_fig6_data:
         "results/blob/fig6.npz",
     log:
         "logs/blob/fig6_data.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=BLOB["fig6"],
     script:
@@ -175,6 +191,8 @@ rule blob_fig6:
         **figure("figures/blob/fig6"),
     log:
         "logs/blob/fig6_plot.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(BLOB_CAPTIONS, "fig6"),
         shown=BLOB["fig6"]["top"]["trajectories"],
@@ -192,6 +210,8 @@ rule blob_compare_data:
         "logs/blob/{figure}_data.log",
     wildcard_constraints:
         figure="fig7|fig8",
+    conda:
+        ENVIRONMENT
     params:
         cfg=lambda wildcards: BLOB[wildcards.figure],
     script:
@@ -209,6 +229,8 @@ rule blob_compare_figure:
         "logs/blob/{figure}_plot.log",
     wildcard_constraints:
         figure="fig7|fig8",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(BLOB_CAPTIONS),
         title=lambda wildcards: BLOB_COMPARE_TITLES[wildcards.figure],

@@ -1,5 +1,6 @@
 """Configuration checks and helpers shared by every rule file."""
 
+import os
 from pathlib import Path
 
 from snakemake.utils import validate
@@ -8,6 +9,12 @@ from particle_methods.workflow import module_dependencies
 
 ROOT = Path(workflow.basedir)
 PACKAGE = ROOT / "src" / "particle_methods"
+
+# Software of every rule under `--software-deployment-method conda`. Its post-deploy script
+# installs the package from this clone, which it finds through PARTICLE_METHODS_SOURCE: set
+# here for the processes Snakemake starts (never read by the workflow, so no envvars entry).
+ENVIRONMENT = str(ROOT / "envs" / "particle-methods.yaml")
+os.environ.update(PARTICLE_METHODS_SOURCE=str(ROOT))
 
 
 validate(config, str(ROOT / "config" / "schema.yaml"))

@@ -42,6 +42,8 @@ rule ltp_fig1:
         **figure("figures/ltp/fig1"),
     log:
         "logs/ltp/fig1.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(LTP_CAPTIONS, "fig1"),
         cfg=LTP["fig1"],
@@ -57,6 +59,8 @@ rule ltp_quadratic_data:
         "results/ltp/quadratic.npz",
     log:
         "logs/ltp/quadratic.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=LTP["quadratic"],
     script:
@@ -75,6 +79,8 @@ rule ltp_quadratic_figures:
         fig3_png=report("figures/ltp/fig3.png", caption=CAPTION, category="ltp", subcategory="fig3"),
     log:
         "logs/ltp/quadratic_plot.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=" ".join(caption(LTP_CAPTIONS, name) for name in ("fig2", "fig3")),
     script:
@@ -89,6 +95,8 @@ rule ltp_fig4_data:
         "results/ltp/fig4.npz",
     log:
         "logs/ltp/fig4_data.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=LTP["fig4"],
     script:
@@ -104,6 +112,8 @@ rule ltp_fig4:
         **figure("figures/ltp/fig4"),
     log:
         "logs/ltp/fig4_plot.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(LTP_CAPTIONS, "fig4"),
     script:
@@ -120,6 +130,8 @@ rule ltp_rows_data:
         "logs/ltp/{figure}_data.log",
     wildcard_constraints:
         figure="fig5|fig6",
+    conda:
+        ENVIRONMENT
     params:
         cfg=lambda wildcards: LTP[wildcards.figure],
     script:
@@ -137,6 +149,8 @@ rule ltp_rows_figure:
         "logs/ltp/{figure}_plot.log",
     wildcard_constraints:
         figure="fig5|fig6",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(LTP_CAPTIONS),
         title=lambda wildcards: LTP_ROW_TITLES[wildcards.figure],
@@ -152,6 +166,8 @@ rule ltp_fig7_data:
         "results/ltp/fig7.npz",
     log:
         "logs/ltp/fig7_data.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=LTP["fig7"],
     script:
@@ -167,6 +183,8 @@ rule ltp_fig7:
         **figure("figures/ltp/fig7"),
     log:
         "logs/ltp/fig7_plot.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(LTP_CAPTIONS, "fig7"),
     script:
@@ -181,6 +199,8 @@ rule ltp_fig8_data:
         "results/ltp/fig8.npz",
     log:
         "logs/ltp/fig8_data.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=LTP["fig8"],
     script:
@@ -196,6 +216,8 @@ rule ltp_fig8:
         **figure("figures/ltp/fig8"),
     log:
         "logs/ltp/fig8_plot.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(LTP_CAPTIONS, "fig8"),
     script:
@@ -216,5 +238,7 @@ rule ltp_claims:
         "results/ltp/claims.csv",
     log:
         "logs/ltp/claims.log",
+    conda:
+        ENVIRONMENT
     script:
         "../scripts/ltp/claims.py"

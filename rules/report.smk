@@ -17,6 +17,8 @@ rule claims_table:
         markdown="results/claims.md",
     log:
         "logs/claims_table.log",
+    conda:
+        ENVIRONMENT
     shell:
         "python -m particle_methods.claims merge {input.sources} "
         "--csv {output.csv} --markdown {output.markdown} > {log} 2>&1"
@@ -28,6 +30,8 @@ rule verify:
         "results/claims.csv",
     log:
         "logs/verify.log",
+    conda:
+        ENVIRONMENT
     shell:
         "python -m particle_methods.claims verify {input} 2>&1 | tee {log}; exit ${{PIPESTATUS[0]}}"
 
@@ -50,6 +54,8 @@ rule notebook:
         "notebooks/executed/{paper}.ipynb",
     log:
         "logs/notebooks/{paper}.log",
+    conda:
+        ENVIRONMENT
     shell:
         "PARTICLE_METHODS_WORKDIR=$PWD MPLBACKEND=Agg jupytext --to ipynb --execute "
         "--output {output} {input.source} > {log} 2>&1"
@@ -63,6 +69,8 @@ rule versions:
         "results/versions.md",
     log:
         "logs/versions.log",
+    conda:
+        ENVIRONMENT
     shell:
         "python -m particle_methods.environment {output} > {log} 2>&1"
 
@@ -99,6 +107,8 @@ rule report_snippets:
         SNIPPETS,
     log:
         "logs/report_snippets.log",
+    conda:
+        ENVIRONMENT
     params:
         outdir=lambda wildcards, output: os.path.dirname(output[0]),
     script:
@@ -115,6 +125,8 @@ rule manuscript:
         "paper/ms.pdf",
     log:
         "logs/manuscript.log",
+    conda:
+        ENVIRONMENT
     shell:
         "cp {input.source} paper/build/ms.tex && cd paper/build && "
         "latexmk -pdf -interaction=nonstopmode -halt-on-error ms.tex > ../../{log} 2>&1 && "

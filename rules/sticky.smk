@@ -44,6 +44,8 @@ rule sticky_fig1:
         **figure("figures/sticky/fig1"),
     log:
         "logs/sticky/fig1.log",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(STICKY_CAPTIONS, "fig1"),
         cfg=STICKY["fig1"],
@@ -61,6 +63,8 @@ rule sticky_scalar_data:
         "logs/sticky/{figure}_data.log",
     wildcard_constraints:
         figure="fig2|fig3",
+    conda:
+        ENVIRONMENT
     params:
         cfg=lambda wildcards: STICKY[wildcards.figure],
     script:
@@ -78,6 +82,8 @@ rule sticky_scalar_figure:
         "logs/sticky/{figure}_plot.log",
     wildcard_constraints:
         figure="fig2|fig3",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(STICKY_CAPTIONS),
         case=lambda wildcards: STICKY[wildcards.figure]["case"],
@@ -95,6 +101,8 @@ rule sticky_psystem_data:
         "logs/sticky/psystem_{case}.log",
     wildcard_constraints:
         case="rarefaction|shocks",
+    conda:
+        ENVIRONMENT
     params:
         system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
         cfg=lambda wildcards: STICKY["psystem"][wildcards.case],
@@ -113,6 +121,8 @@ rule sticky_psystem_figure:
         "logs/sticky/{figure}_plot.log",
     wildcard_constraints:
         figure="fig4|fig5|fig6|fig7",
+    conda:
+        ENVIRONMENT
     params:
         caption=caption(STICKY_CAPTIONS),
         case=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][0],
@@ -130,6 +140,8 @@ rule sticky_lemma21:
         "results/sticky/lemma21.npz",
     log:
         "logs/sticky/lemma21.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=STICKY["lemma21"],
     script:
@@ -144,6 +156,8 @@ rule sticky_remark33:
         "results/sticky/remark33.npz",
     log:
         "logs/sticky/remark33.log",
+    conda:
+        ENVIRONMENT
     params:
         cfg=STICKY["remark33"],
     script:
@@ -158,6 +172,8 @@ rule sticky_tspd_convergence:
         "results/sticky/tspd_convergence.npz",
     log:
         "logs/sticky/tspd_convergence.log",
+    conda:
+        ENVIRONMENT
     params:
         system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
         case=lambda wildcards: STICKY["psystem"][STICKY["tspd_convergence"]["case"]],
@@ -181,5 +197,7 @@ rule sticky_claims:
         "results/sticky/claims.csv",
     log:
         "logs/sticky/claims.log",
+    conda:
+        ENVIRONMENT
     script:
         "../scripts/sticky/claims.py"
