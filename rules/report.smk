@@ -83,6 +83,8 @@ SNIPPETS = expand(
         "claims_blob",
         "measured",
         "parameters",
+        "configuration",
+        "failures",
         "summary",
         "versions",
     ],

@@ -3,8 +3,11 @@
 ``python -m particle_methods.report CLAIMS VERSIONS CONFIG OUTDIR`` writes:
 
 - ``claims_<paper>.tex``: each paper's claims table (a longtable);
-- ``measured.tex``: ``\\measured{<claim id>}`` and ``\\status{<claim id>}`` for any claim;
+- ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}`` and ``\\status{<claim id>}``
+  for any claim;
+- ``failures.tex``: the failing claims of every paper in one table;
 - ``parameters.tex``: ``\\param{<dotted config key>}`` for every configuration value;
+- ``configuration.tex``: the whole configuration of the run, one line per key (an appendix);
 - ``summary.tex``: ``\\claimcount{<paper>}{pass|fail|all}``;
 - ``versions.tex``: the software versions table (a tabular).
 
@@ -28,15 +31,41 @@ _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": 
 
 
 _CLAIM_TABLE_HEAD = (
-    "\\begin{longtable}{>{\\raggedright\\scriptsize}p{3.9cm}>{\\raggedright}p{1.1cm}>{\\raggedright}p{5.2cm}"
-    ">{\\raggedright}p{1.5cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.2cm}l}\n"
+    "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.6cm}>{\\raggedright}p{1.15cm}>{\\raggedright}p{5.35cm}"
+    ">{\\raggedright}p{1.4cm}>{\\raggedright}p{1.5cm}>{\\raggedright}p{1.3cm}l@{}}\n"
     "\\toprule id & figure & claim & published & measured & tolerance & status \\\\ \\midrule \\endhead\n"
+    "\\bottomrule \\endlastfoot\n"
 )
+_SYMBOLS = {"<=": r"\ensuremath{\le}", ">=": r"\ensuremath{\ge}", "+-": r"\ensuremath{\pm}"}
+_TOKEN = re.compile(r"(<=|>=|\+-|(?<![\w.^])-?\d+(?:\.\d+)?(?:e[+-]?\d+)?(?![\w.]))")
 
 
 def tex(text) -> str:
     """Escape LaTeX special characters in plain text."""
     return "".join(_SPECIAL.get(character, character) for character in str(text))
+
+
+def number(x: float | int) -> str:
+    """A number in LaTeX math: integers exactly, floats to four significant digits with powers of ten
+    written as such."""
+    text = str(x) if isinstance(x, int) else f"{x:.4g}"
+    if "e" in text:
+        mantissa, exponent = text.split("e")
+        power = f"10^{{{int(exponent)}}}"
+        text = power if mantissa == "1" else f"{mantissa}\\times {power}"
+    return f"\\ensuremath{{{text}}}"
+
+
+def _parse(text: str) -> float | int:
+    return float(text) if any(mark in text for mark in ".e") else int(text)
+
+
+def cell(text) -> str:
+    """A cell of the claims table in LaTeX: numbers through :func:`number`, ``<=``, ``>=`` and ``+-``
+    as symbols, everything else escaped."""
+    parts = _TOKEN.split(str(text))
+    return "".join(_SYMBOLS.get(part) or (number(_parse(part)) if index % 2 else tex(part))
+                   for index, part in enumerate(parts))
 
 
 def _flatten(tree, prefix=""):
@@ -52,6 +81,22 @@ def _flatten(tree, prefix=""):
         yield prefix[:-1], f"{tree:.6g}" if isinstance(tree, float) else str(tree)
 
 
+def _breakable(identifier: str) -> str:
+    """A dotted identifier in LaTeX, with line breaks allowed after its dots and underscores."""
+    return tex(identifier).replace(".", ".\\allowbreak{}").replace("\\_", "\\_\\allowbreak{}")
+
+
+def _claims_table(claims) -> str:
+    """A longtable of claims: id, figure, statement, published, measured, tolerance, status."""
+    rows = []
+    for claim in claims:
+        status = r"\textbf{fail}" if claim.status == "fail" else "pass"
+        cells = [f"\\texttt{{{_breakable(claim.id)}}}", tex(claim.figure), tex(claim.claim), cell(claim.published),
+                 cell(claim.measured), cell(claim.tolerance), status]
+        rows.append(" & ".join(cells) + " \\\\\n")
+    return _CLAIM_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
+
+
 def _define(family: str, key: str, value: str) -> str:
     return f"\\expandafter\\def\\csname {family}@{key}\\endcsname{{{value}}}\n"
 
@@ -64,7 +109,8 @@ def write_snippets(claims_csv, versions_md, config, outdir) -> None:
     papers = sorted({claim.paper for claim in claims})
     measured = []
     for claim in claims:
-        measured.append(_define("measured", claim.id, tex(claim.measured)))
+        measured.append(_define("measured", claim.id, cell(claim.measured)))
+        measured.append(_define("published", claim.id, cell(claim.published)))
         measured.append(_define("status", claim.id, claim.status))
     (outdir / "measured.tex").write_text("".join(measured))
     summary = []
@@ -74,19 +120,16 @@ def write_snippets(claims_csv, versions_md, config, outdir) -> None:
         summary += [_define("claimcount", f"{paper}.all", str(len(rows))),
                     _define("claimcount", f"{paper}.fail", str(failed)),
                     _define("claimcount", f"{paper}.pass", str(len(rows) - failed))]
-        lines = []
-        for claim in rows:
-            status = r"\textbf{fail}" if claim.status == "fail" else "pass"
-            identifier = tex(claim.id).replace(".", ".\\allowbreak{}")
-            lines.append(f"\\texttt{{{identifier}}} & {tex(claim.figure)} & {tex(claim.claim)} & "
-                         f"{tex(claim.published)} & {tex(claim.measured)} & {tex(claim.tolerance)} & {status} \\\\\n")
-        table = _CLAIM_TABLE_HEAD + "".join(lines) + "\\bottomrule\n\\end{longtable}\n"
-        (outdir / f"claims_{paper}.tex").write_text(table)
+        (outdir / f"claims_{paper}.tex").write_text(_claims_table(rows))
+    failures = [claim for claim in claims if claim.status == "fail"]
+    (outdir / "failures.tex").write_text(_claims_table(failures) if failures else "No claim fails.\n")
     (outdir / "summary.tex").write_text("".join(summary))
     if not isinstance(config, dict):
         config = yaml.safe_load(Path(config).read_text())
-    (outdir / "parameters.tex").write_text("".join(_define("param", key, tex(value))
-                                                   for key, value in _flatten(config)))
+    parameters = list(_flatten(config))
+    (outdir / "parameters.tex").write_text("".join(_define("param", key, cell(text)) for key, text in parameters))
+    (outdir / "configuration.tex").write_text("".join(
+        f"\\noindent\\texttt{{{_breakable(key)}}} = {cell(text)}\\par\n" for key, text in parameters))
     rows = [line for line in Path(versions_md).read_text().splitlines() if re.match(r"\| [^-]", line)][1:]
     table = "".join(f"{tex(cells[1].strip())} & {tex(cells[2].strip())} \\\\\n"
                     for cells in (row.split("|") for row in rows))
