@@ -3,8 +3,8 @@
 ``python -m particle_methods.report CLAIMS VERSIONS CONFIG OUTDIR`` writes:
 
 - ``claims_<paper>.tex``: each paper's claims table (a longtable);
-- ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}`` and ``\\status{<claim id>}``
-  for any claim;
+- ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}``, ``\\tol{<claim id>}`` and
+  ``\\status{<claim id>}`` for any claim;
 - ``failures.tex``: the failing claims of every paper in one table;
 - ``parameters.tex``: ``\\param{<dotted config key>}`` for every configuration value;
 - ``configuration.tex``: the whole configuration of the run, one line per key (an appendix);
@@ -111,6 +111,7 @@ def write_snippets(claims_csv, versions_md, config, outdir) -> None:
     for claim in claims:
         measured.append(_define("measured", claim.id, cell(claim.measured)))
         measured.append(_define("published", claim.id, cell(claim.published)))
+        measured.append(_define("tolerance", claim.id, cell(claim.tolerance)))
         measured.append(_define("status", claim.id, claim.status))
     (outdir / "measured.tex").write_text("".join(measured))
     summary = []

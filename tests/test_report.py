@@ -1,0 +1,79 @@
+"""LaTeX snippets of the report: values typeset from the claims table and the configuration."""
+
+import re
+
+import pytest
+
+from particle_methods.claims import Claim, write_claims
+from particle_methods.report import cell, number, tex, write_snippets
+
+
+@pytest.mark.parametrize("value, expected", [
+    (-0.693147, r"\ensuremath{-0.6931}"),
+    (4.21516e-10, r"\ensuremath{4.215\times 10^{-10}}"),
+    (1e-9, r"\ensuremath{10^{-9}}"),
+    (262144, r"\ensuremath{262144}"),
+    (0.25, r"\ensuremath{0.25}"),
+])
+def test_numbers_have_four_significant_digits_and_integers_stay_exact(value, expected):
+    assert number(value) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("<= 1e-09", r"\ensuremath{\le} \ensuremath{10^{-9}}"),
+    ("+-0.1", r"\ensuremath{\pm}\ensuremath{0.1}"),
+    ("rel 0.001", r"rel \ensuremath{0.001}"),
+    ("w+ >= w-", r"w+ \ensuremath{\ge} w-"),
+    ("t/(4n)", "t/(4n)"),
+    ("smooth20", "smooth20"),
+    ("newtonian_attractive", r"newtonian\_attractive"),
+    ("-0.06, 0.06", r"\ensuremath{-0.06}, \ensuremath{0.06}"),
+])
+def test_cells_typeset_numbers_and_comparisons_and_escape_the_rest(text, expected):
+    assert cell(text) == expected
+
+
+def test_special_characters_are_escaped():
+    assert tex("50% of a_b & {c} ~ #1 $x$ ^") == (
+        r"50\% of a\_b \& \{c\} \textasciitilde{} \#1 \$x\$ \textasciicircum{}")
+
+
+@pytest.fixture
+def snippets(tmp_path):
+    claims = [
+        Claim("demo.fig1.order", "demo", "1", "order of the scheme", "2", "1.98765", "+-0.1", "pass"),
+        Claim("demo.fig2.peaks", "demo", "2", "two peaks", "2", "3", "+-0", "fail"),
+        Claim("other.mass", "other", "3", "mass conserved", "0", "1.5e-15", "<= 1e-12", "pass"),
+    ]
+    write_claims(tmp_path / "claims.csv", claims)
+    (tmp_path / "versions.md").write_text("| package | version |\n|---|---|\n| python | 3.11.7 |\n| numpy | 2.0 |\n")
+    config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]}}
+    write_snippets(tmp_path / "claims.csv", tmp_path / "versions.md", config, tmp_path / "out")
+    return {path.stem: path.read_text() for path in (tmp_path / "out").iterdir()}
+
+
+def definitions(text):
+    return dict(re.findall(r"\\csname (\S+)\\endcsname\{(.*)\}\n", text))
+
+
+def test_every_claim_value_and_parameter_gets_a_macro(snippets):
+    measured = definitions(snippets["measured"])
+    assert measured["measured@demo.fig1.order"] == r"\ensuremath{1.988}"
+    assert measured["published@other.mass"] == r"\ensuremath{0}"
+    assert measured["tolerance@other.mass"] == r"\ensuremath{\le} \ensuremath{10^{-12}}"
+    assert measured["status@demo.fig2.peaks"] == "fail"
+    parameters = definitions(snippets["parameters"])
+    assert parameters == {"param@demo.fig1.h": r"\ensuremath{0.1}, \ensuremath{0.05}",
+                          "param@demo.fig1.kernel": r"cubic\_b", "param@demo.cases.0.t": r"\ensuremath{2}"}
+
+
+def test_counts_tables_and_failures(snippets):
+    counts = definitions(snippets["summary"])
+    assert counts == {"claimcount@demo.all": "2", "claimcount@demo.fail": "1", "claimcount@demo.pass": "1",
+                      "claimcount@other.all": "1", "claimcount@other.fail": "0", "claimcount@other.pass": "1"}
+    body = snippets["claims_demo"].split(r"\endlastfoot")[1]
+    assert body.count(r" \\") == 2 and "other.mass" not in body
+    assert "demo.\\allowbreak{}fig2.\\allowbreak{}peaks" in snippets["failures"]
+    assert "fig1" not in snippets["failures"].split(r"\endlastfoot")[1]
+    assert "numpy & 2.0" in snippets["versions"]
+    assert snippets["configuration"].count(r"\par") == 3
