@@ -1,9 +1,9 @@
-"""Craig and Bertozzi: the blob method for the aggregation equation, Figures 1-4 (1D)."""
+"""Craig and Bertozzi: the blob method for the aggregation equation, Figures 1-4 (1D) and 5-8 (2D)."""
 
 BLOB = config["blob"]
 BLOB_CAPTIONS = {
     "fig1": (
-        "Blob method, m = 4, delta = h^0.9, K = |x|/2, data (4.3): trajectories, densities at t = 0, 0.4, 0.8, zoom near t = 1, and L1_h errors against h at t = 0.5."
+        f"Blob method, m = {BLOB['fig1']['order']}, delta = h^{BLOB['fig1']['q']}, K = |x|/2, data (4.3): trajectories, densities at t = {listing(BLOB['fig1']['density_times'])}, zoom near t = 1, and L1_h errors against h at t = {BLOB['fig1']['error_t']}."
     ),
     "fig2": (
         "Particle method (grad K(0) = 0), same data: trajectories (straight lines), zoom, and trajectory errors against h."
@@ -12,19 +12,19 @@ BLOB_CAPTIONS = {
         "Blob method for the discontinuous data (4.4): trajectories, rounded densities, zoom and slower convergence."
     ),
     "fig4": (
-        "L1_h errors at t = 0.5 for data (4.5): K = -|x|/2 and |x|^3/3; particle method, m = 4 and m = 6."
+        f"L1_h errors at t = {BLOB['fig4']['t']} for data (4.5): K = -|x|/2 and |x|^3/3; particle method, m = 4 and m = 6."
     ),
     "fig5": (
-        "2D, K = log|x|/(2 pi): L1_h errors at t = 0.5 for the blob method with regular data, the particle method, and the blob method with the indicator of the disk."
+        f"2D, K = log|x|/(2 pi): L1_h errors at t = {BLOB['fig5']['t']} for the blob method with regular data, the particle method, and the blob method with the indicator of the disk."
     ),
     "fig6": (
-        "2D blob method for log|x|/(2 pi), |x|^2/2, |x|^3/3: 20 trajectories and the density at t = 1.4 (bump data), star patch density at t = 0.8 from the side and from above."
+        f"2D blob method for log|x|/(2 pi), |x|^2/2, |x|^3/3: {BLOB['fig6']['top']['trajectories']} trajectories and the density at t = {BLOB['fig6']['top']['t_density']} (bump data), star patch density at t = {BLOB['fig6']['bottom']['t']} from the side and from above."
     ),
     "fig7": (
-        "2D particle (top) and blob (bottom, delta = 0.32) end states for |x|^4/4 - log|x|/(2 pi), |x|^4/4 - |x|^1.5/1.5 and |x|^7/7 - |x|^1.5/1.5."
+        f"2D particle (top) and blob (bottom, delta = {BLOB['fig7']['delta']}) end states for |x|^4/4 - log|x|/(2 pi), |x|^4/4 - |x|^1.5/1.5 and |x|^7/7 - |x|^1.5/1.5."
     ),
     "fig8": (
-        "2D particle (top) and blob (bottom) end states for the Morse kernels e^-|x| - 2e^-|x|/2 and 2e^-|x| - 2e^-|x|/2, data (4.7) and the star patch."
+        f"2D particle (top) and blob (bottom, delta = {BLOB['fig8']['delta']}) end states for the Morse kernels e^-|x| - 2e^-|x|/2 and 2e^-|x| - 2e^-|x|/2, data (4.7) and the star patch."
     ),
 }
 

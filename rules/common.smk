@@ -45,6 +45,17 @@ def figure(path_without_suffix):
     }
 
 
+def listing(values):
+    """Values of a caption: all of them when few, else the first two, an ellipsis and the last."""
+    values = [f"{value:g}" for value in values]
+    return ", ".join(values if len(values) <= 4 else [*values[:2], "...", values[-1]])
+
+
+def power(exponent):
+    """|x|^a/a in a caption."""
+    return f"|x|^{exponent:g}/{exponent:g}"
+
+
 def _rst(text):
     """Escape the characters reStructuredText would read as markup (|x|, delta_1, a*b)."""
     for character in "|_*":

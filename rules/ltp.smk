@@ -4,25 +4,25 @@ LTP = config["ltp"]
 LTP_CAPTIONS = {
     "fig1": ("The hat shape function (2.12) and its bi-orthogonal kernel (dotted)."),
     "fig2": (
-        "W = x^2 from (6.1), t = 0.5: exact against LTP densities for several h; LTP L1 and Linf errors against h; SP densities with h = 0.01 and fixed widths eps."
+        f"W = x^2 from (6.1), t = {LTP['quadratic']['t']}: exact against LTP densities for several h; LTP L1 and Linf errors against h; SP densities with h = {LTP['quadratic']['sp_h']} and fixed widths eps."
     ),
     "fig3": (
-        "SP against LTP errors, W = x^2: (a) SP errors over eps with the LTP error as reference (h = 0.01, dt = 0.01); (b) errors against h with eps = h (dt = 1e-4)."
+        f"SP against LTP errors, W = x^2: (a) SP errors over eps with the LTP error as reference (h = {LTP['quadratic']['eps_scan']['h']}, dt = {LTP['quadratic']['eps_scan']['dt']}); (b) errors against h with eps = h (dt = {LTP['quadratic']['dt']})."
     ),
     "fig4": (
-        "W = x^2/2 from (6.1), h = 1/25, dt = 1e-3: exact, LTP and SP densities with hat (left) and B3 (right) shapes."
+        f"W = x^2/2 from (6.1), h = {LTP['fig4']['h']}, dt = {LTP['fig4']['dt']}: exact, LTP and SP densities with hat (left) and B3 (right) shapes."
     ),
     "fig5": (
-        "W = |x|^a/a from (6.2), a = 1.5 and 2.5, h = 0.01, 200 steps: potential, density, velocity and particle sizes."
+        f"W = |x|^a/a from (6.2), a = {listing(case['a'] for case in LTP['fig5']['cases'])}, h = {LTP['fig5']['h']}, {LTP['fig5']['steps']} steps: potential, density, velocity and particle sizes."
     ),
     "fig6": (
-        "W = |x|^3/3 - |x|^b/b from (6.2), b = 1.1, 1.5, 2.5, h = 0.01, 200 steps: potential, density, velocity and particle sizes."
+        f"W = |x|^3/3 - |x|^b/b from (6.2), b = {listing(case['b'] for case in LTP['fig6']['cases'])}, h = {LTP['fig6']['h']}, {LTP['fig6']['steps']} steps: potential, density, velocity and particle sizes."
     ),
     "fig7": (
-        "W = |x|^3/3 - |x|^2.5/2.5 from (6.3), 100 steps: density snapshots, concentrating on two points."
+        f"W = {power(LTP['fig7']['a'])} - {power(LTP['fig7']['b'])} from (6.3), {LTP['fig7']['steps']} steps: density snapshots, concentrating on two points."
     ),
     "fig8": (
-        "W = |x|^4/4 - |x|^2.5/2.5 from (6.2), 100 steps: SP and LTP end states and particle sizes; the SP density oscillates."
+        f"W = {power(LTP['fig8']['a'])} - {power(LTP['fig8']['b'])} from (6.2), {LTP['fig8']['steps']} steps: SP and LTP end states and particle sizes; the SP density oscillates."
     ),
 }
 

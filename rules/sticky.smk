@@ -1,27 +1,28 @@
 """Jourdain and Reygner: sticky particle dynamics (SPD) and multitype SPD, Figures 1-7."""
 
 STICKY = config["sticky"]
+RAREFACTION, SHOCKS = STICKY["psystem"]["rarefaction"], STICKY["psystem"]["shocks"]
 STICKY_CAPTIONS = {
     "fig1": (
         "One iteration of the Brenier-Grenier hull algorithm (section 5.1.1): the list L before the iteration, the removal of a concave corner, and L after it."
     ),
     "fig2": (
-        "Burgers equation from (delta_-1 + delta_1)/2: (a) trajectories of 50 particles, (b) u(t, x), (c) profiles at t = 0, 8, ..., 80 with the exact fans dashed, (d) log L1 error against p for n = 2^p, t = 10, ..., 50: slope -log 2."
+        f"Burgers equation from (delta_-1 + delta_1)/2: (a) trajectories of {STICKY['fig2']['trajectory_particles']} particles, (b) u(t, x), (c) profiles at t = {listing(STICKY['fig2']['profile_times'])} with the exact fans dashed, (d) log L1 error against p for n = 2^p, t = {listing(STICKY['fig2']['error_times'])}: slope -log 2."
     ),
     "fig3": (
-        "Concave flux u(1-u)/2 from the Laplace law: (a) 30 trajectories, (b) u(t, x), (c) profiles at t = 0, 0.5, ..., 5 with the exact solution, (d) log L1 error against p, t = 0, ..., 17: plateau, then log(n)/n decay."
+        f"Concave flux u(1-u)/2 from the Laplace law: (a) {STICKY['fig3']['trajectory_particles']} trajectories, (b) u(t, x), (c) profiles at t = {listing(STICKY['fig3']['profile_times'])} with the exact solution, (d) log L1 error against p, t = {listing(STICKY['fig3']['error_times'])}: plateau, then log(n)/n decay."
     ),
     "fig4": (
-        "p-system, w0+ >= w0- (x0 = 0.1): MSPD trajectories by the iterated TSPD (Delta = 0.03), 20 particles per type; no same-type collision."
+        f"p-system, w0+ >= w0- (x0 = {RAREFACTION['x0']}): MSPD trajectories by the iterated TSPD (Delta = {RAREFACTION['delta']}), {RAREFACTION['trajectory_particles']} particles per type; no same-type collision."
     ),
     "fig5": (
-        "p-system, w0+ >= w0-: w-, w+, specific volume u and velocity v in the space-time plane (n = 200 per type, Delta = 0.03)."
+        f"p-system, w0+ >= w0-: w-, w+, specific volume u and velocity v in the space-time plane (n = {RAREFACTION['field_particles']} per type, Delta = {RAREFACTION['delta']})."
     ),
     "fig6": (
-        "p-system with shocks (x0 = -4, w0+ = 1{x >= 0}): trajectories, 20 per type (Delta = 0.02); the + cluster forms, then breaks up after crossing."
+        f"p-system with shocks (x0 = {SHOCKS['x0']}, w0+ = 1{{x >= 0}}): trajectories, {SHOCKS['trajectory_particles']} per type (Delta = {SHOCKS['delta']}); the + cluster forms, then breaks up after crossing."
     ),
     "fig7": (
-        "p-system with shocks: w-, w+, u and v in the space-time plane (n = 200 per type, Delta = 0.02)."
+        f"p-system with shocks: w-, w+, u and v in the space-time plane (n = {SHOCKS['field_particles']} per type, Delta = {SHOCKS['delta']})."
     ),
 }
 

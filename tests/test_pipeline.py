@@ -156,6 +156,16 @@ def test_report_pdf_is_built_where_latex_is_installed(workdir):
     assert "measured@sticky.fig2d.order" in measured
 
 
+def test_browsable_report_has_every_figure_with_its_caption(workdir):
+    report = workdir / "report.html"
+    result = snakemake(workdir, "--report", str(report))
+    assert result.returncode == 0, result.stderr[-2000:]
+    html = report.read_text()
+    shown = {name for name in EXPECTED_FIGURES if name.endswith(".png") and name in html}
+    assert shown == {name for name in EXPECTED_FIGURES if name.endswith(".png")}
+    assert "Morse kernels" in html and "Brenier-Grenier hull" in html
+
+
 def test_versions_are_recorded(workdir):
     versions = (workdir / "results" / "versions.md").read_text()
     assert "| numba |" in versions and "| python |" in versions
