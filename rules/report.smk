@@ -36,11 +36,21 @@ rule verify:
         "python -m particle_methods.claims verify {input} 2>&1 | tee {log}; exit ${{PIPESTATUS[0]}}"
 
 
-# Each notebook reads the cached results it plots and the paper's claims.
+# Each notebook shows its paper's figures and claims, and plots some cached results.
 NOTEBOOK_INPUTS = {
     "sticky": ["results/sticky/fig2.npz", "results/sticky/fig3.npz", "results/sticky/claims.csv"],
-    "ltp": ["results/ltp/quadratic.npz", "results/ltp/claims.csv"],
-    "blob": ["results/blob/fig4.npz", "results/blob/claims.csv"],
+    "ltp": ["results/ltp/quadratic.npz", "results/ltp/fig5.npz", "results/ltp/claims.csv"],
+    "blob": [
+        "results/blob/fig4.npz",
+        "results/blob/fig5.npz",
+        "results/blob/fig7.npz",
+        "results/blob/claims.csv",
+    ],
+}
+NOTEBOOK_FIGURES = {
+    "sticky": STICKY_FIGURES,
+    "ltp": LTP_FIGURES,
+    "blob": BLOB_FIGURES,
 }
 NOTEBOOKS = expand("notebooks/executed/{paper}.ipynb", paper=NOTEBOOK_INPUTS)
 
@@ -50,6 +60,10 @@ rule notebook:
     input:
         source=str(ROOT / "notebooks" / "{paper}.py"),
         data=lambda wildcards: NOTEBOOK_INPUTS[wildcards.paper],
+        figures=lambda wildcards: NOTEBOOK_FIGURES[wildcards.paper],
+        code=lambda wildcards: module_dependencies(
+            ROOT / "notebooks" / f"{wildcards.paper}.py", PACKAGE
+        ),
     output:
         "notebooks/executed/{paper}.ipynb",
     log:
@@ -57,7 +71,8 @@ rule notebook:
     conda:
         ENVIRONMENT
     shell:
-        "PARTICLE_METHODS_WORKDIR=$PWD MPLBACKEND=Agg jupytext --to ipynb --execute "
+        "PARTICLE_METHODS_WORKDIR=$PWD MPLBACKEND=module://matplotlib_inline.backend_inline "
+        "jupytext --to ipynb --execute "
         "--output {output} {input.source} > {log} 2>&1"
 
 

@@ -66,11 +66,14 @@ def test_every_figure_is_built(workdir):
 def test_every_notebook_runs_on_the_quick_results(workdir):
     import json
 
-    for paper in FIGURES:
+    for paper, count in FIGURES.items():
         notebook = json.loads((workdir / "notebooks" / "executed" / f"{paper}.ipynb").read_text())
-        outputs = [cell.get("outputs", []) for cell in notebook["cells"] if cell["cell_type"] == "code"]
-        assert outputs and all(isinstance(o, list) for o in outputs)
-        assert not any(o.get("output_type") == "error" for cell in outputs for o in cell), paper
+        code = [cell for cell in notebook["cells"] if cell["cell_type"] == "code"]
+        assert not any(o.get("output_type") == "error" for cell in code for o in cell["outputs"]), paper
+        images = [o for cell in code for o in cell["outputs"] if "image/png" in o.get("data", {})]
+        plots = [cell for cell in code if "plt.show()" in "".join(cell["source"])]
+        assert len(images) == count + len(plots), paper  # every figure of the paper and every plot
+        assert any("text/markdown" in o.get("data", {}) for cell in code for o in cell["outputs"]), paper
 
 
 def test_claims_table_and_summary(workdir):

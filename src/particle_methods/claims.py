@@ -99,14 +99,17 @@ def read_claims(path) -> list[Claim]:
         return [Claim(**row) for row in reader]
 
 
-def markdown_table(claims) -> str:
-    """Markdown rendering: a summary line, then one row per claim."""
+def markdown_table(claims, heading: bool = True) -> str:
+    """Markdown rendering: a title and a summary line (unless ``heading`` is false), then one row
+    per claim."""
     failed = [claim for claim in claims if claim.status == "fail"]
     lines = [
         "# Checked claims",
         "",
         f"{len(claims)} claims checked: {len(claims) - len(failed)} pass, {len(failed)} fail.",
         "",
+    ] if heading else []
+    lines += [
         "| id | figure | claim | published | measured | tolerance | status |",
         "|---|---|---|---|---|---|---|",
     ]

@@ -1,0 +1,45 @@
+"""What the notebooks show: a figure of the pipeline next to the claims checked on it.
+
+The notebooks (``notebooks/<paper>.py``) read the pipeline's outputs through
+:mod:`particle_methods.paths`, so they show the run in ``PARTICLE_METHODS_WORKDIR``.
+"""
+
+from __future__ import annotations
+
+import re
+
+from IPython.display import Image, Markdown, display
+
+from .claims import Claim, markdown_table, read_claims
+from .paths import FIGURES, RESULTS
+
+
+def figures_of(claim: Claim) -> set[int]:
+    """Figure numbers a claim refers to: '2d' and '2, 3d' name figures, 'Remark 3.3' does not."""
+    return {int(match) for part in claim.figure.split(",") for match in re.findall(r"^\s*(\d+)(?![\d.-])", part)}
+
+
+def paper_claims(paper: str) -> list[Claim]:
+    """The claims of one paper, as the pipeline measured them."""
+    return read_claims(RESULTS / paper / "claims.csv")
+
+
+def show_figure(paper: str, number: int) -> None:
+    """Display figure ``number`` of ``paper`` and the table of the claims checked on it."""
+    display(Image(filename=str(FIGURES / paper / f"fig{number}.png")))
+    claims = [claim for claim in paper_claims(paper) if number in figures_of(claim)]
+    if claims:
+        display(Markdown(markdown_table(claims, heading=False)))
+
+
+def show_other_claims(paper: str) -> None:
+    """Display the claims of ``paper`` that refer to no figure (lemmas, remarks, sections)."""
+    display(Markdown(markdown_table([claim for claim in paper_claims(paper) if not figures_of(claim)],
+                                    heading=False)))
+
+
+def summary(paper: str) -> str:
+    """'n claims checked: p pass, f fail.' for one paper."""
+    claims = paper_claims(paper)
+    failed = sum(claim.status == "fail" for claim in claims)
+    return f"{len(claims)} claims checked: {len(claims) - failed} pass, {failed} fail."
