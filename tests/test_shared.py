@@ -77,3 +77,20 @@ def test_module_dependencies_follow_imports_transitively():
     # Direct imports, relative imports inside the package (spd -> validation -> jit), nothing unused.
     assert {"norms.py", "sticky/cases.py", "sticky/spd.py", "sticky/exact.py", "validation.py", "jit.py"} <= found
     assert not {"sticky/mspd.py", "sticky/psystem.py", "plotting.py", "sticky/__init__.py"} & found
+
+
+def test_an_interrupted_write_leaves_the_previous_result_intact(tmp_path, monkeypatch):
+    from particle_methods import workflow
+
+    path = tmp_path / "result.npz"
+    workflow.save_results(path, x=np.arange(3.0))
+
+    def interrupted(handle, **arrays):
+        handle.write(b"PK\x03\x04 half a zip file")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(workflow.np, "savez", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        workflow.save_results(path, x=np.arange(5.0))
+    np.testing.assert_array_equal(workflow.load_results(path)["x"], np.arange(3.0))
+    assert [p.name for p in tmp_path.iterdir()] == ["result.npz"]

@@ -39,8 +39,12 @@ def save_results(path, **arrays) -> None:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(path.name + ".tmp")
-    with temporary.open("wb") as handle:
-        np.savez(handle, **arrays)
+    try:
+        with temporary.open("wb") as handle:
+            np.savez(handle, **arrays)
+    except BaseException:
+        temporary.unlink(missing_ok=True)
+        raise
     os.replace(temporary, path)
 
 
