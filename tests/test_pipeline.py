@@ -96,6 +96,40 @@ def test_second_run_has_nothing_to_do(workdir):
     assert "Nothing to be done" in result.stdout + result.stderr
 
 
+def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
+    """Ctrl-C while a solver runs, as in a first run cut short: no truncated result is left, and the
+    next plain run plans only the unfinished jobs and what depends on them."""
+    import os
+    import signal
+    import time
+
+    from particle_methods.workflow import load_results
+
+    for name in ("results/blob/fig7.npz", "results/blob/fig8.npz", *(f"figures/blob/fig{n}.{ext}" for n in (7, 8)
+                                                                     for ext in ("pdf", "png"))):
+        (workdir / name).unlink()
+    command = [sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory", str(workdir),
+               "--cores", "2", "--configfile", str(QUICK)]
+    start = time.time()
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    log = workdir / "logs" / "blob" / "fig8_data.log"
+    while not (log.exists() and log.stat().st_mtime >= start and log.read_text()):
+        assert process.poll() is None and time.time() - start < 300, "the solver never started"
+        time.sleep(0.1)
+    os.killpg(process.pid, signal.SIGINT)  # what Ctrl-C in a terminal does
+    assert process.wait(timeout=300) != 0
+    assert not (workdir / "results" / "blob" / "fig8.npz").exists()
+    assert not list(workdir.rglob("*.tmp"))
+    for path in (workdir / "results").rglob("*.npz"):
+        assert load_results(path)  # whatever is on disk is complete
+    plan = planned_rules(snakemake(workdir, "--dry-run"))
+    assert {"blob_compare_data", "blob_compare_figure", "blob_claims"} <= plan
+    assert not plan & {"sticky_scalar_data", "ltp_quadratic_data", "blob_fig4_data", "blob_fig5_data", "blob_fig6_data"}
+    assert snakemake(workdir).returncode == 0
+    resumed = snakemake(workdir, "--dry-run")
+    assert "Nothing to be done" in resumed.stdout + resumed.stderr
+
+
 def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
     override = tmp_path / "override.yaml"
     override.write_text("sticky:\n  lemma21:\n    n_values: [16, 64, 256, 1024, 2048]\n")
