@@ -1,4 +1,4 @@
-"""Every checked claim of the blob paper's 1D part (Figures 1-4), measured from the cached results.
+"""Every checked claim of the blob paper (Figures 1-8), measured from the cached results.
 
 Fitted orders use the finest ``fit_points`` grid steps; "close to" a published
 rate means within 0.3 (0.4 for m = 6, whose finest errors approach the integrator's
