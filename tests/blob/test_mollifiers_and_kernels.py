@@ -73,6 +73,24 @@ def test_pair_sums_match_numpy_broadcasting(rng):
         assert pair_energy(x, m, *kernel.arrays()) == pytest.approx(energy, rel=1e-12)
 
 
+def test_pair_sums_do_not_depend_on_the_number_of_threads(rng):
+    """Each pair is evaluated once and the partial sums are added in a fixed order: bit-identical
+    results on one thread or several (the claims table must not depend on the machine's cores)."""
+    import numba
+
+    x = rng.normal(size=(301, 2))
+    m = rng.uniform(0.1, 1, 301)
+    arrays = Kernel("test", 2, (POWER, POWER), (1.0, -1.0), (4.0, 1.5)).arrays()
+    threads = numba.get_num_threads()
+    try:
+        numba.set_num_threads(1)
+        serial = pair_sums(x, m, *arrays)
+    finally:
+        numba.set_num_threads(threads)
+    parallel = pair_sums(x, m, *arrays)
+    assert all(np.array_equal(a, b) for a, b in zip(serial, parallel))
+
+
 @pytest.mark.parametrize(
     "make, message",
     [

@@ -184,25 +184,43 @@ def _profile_potential(kinds, coefficients, parameters, r):
     return k
 
 
+#: Rows are dealt to this many accumulators, round robin, whatever the number of threads: each
+#: pair is evaluated once, and the sums are added in the same order on any machine.
+_ACCUMULATORS = 16
+
+
 @njit(parallel=True)
 def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps):
-    """Velocities -sum_j m_j grad K(X_i - X_j) (shape (N, d)) and divergences -sum_j m_j Delta K(X_i - X_j)."""
+    """Velocities -sum_j m_j grad K(X_i - X_j) (shape (N, d)) and divergences -sum_j m_j Delta K(X_i - X_j).
+
+    grad K is odd and Delta K even, so each pair i < j is evaluated once and added to both rows,
+    half the kernel evaluations of the plain double loop. Accumulator c takes the rows i = c mod 16
+    and their partners; the accumulators are then summed in a fixed order.
+    """
     n, dimension = positions.shape
+    velocities = np.zeros((_ACCUMULATORS, n, dimension))
+    divergences = np.zeros((_ACCUMULATORS, n))
+    for c in prange(_ACCUMULATORS):
+        diff = np.empty(dimension)
+        _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, dimension, tables, steps)
+        for i in range(c, n, _ACCUMULATORS):
+            divergences[c, i] -= masses[i] * self_lap
+            for j in range(i + 1, n):
+                r2 = 0.0
+                for axis in range(dimension):
+                    diff[axis] = positions[i, axis] - positions[j, axis]
+                    r2 += diff[axis] * diff[axis]
+                g, lap = _profile_forces(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
+                for axis in range(dimension):
+                    velocities[c, i, axis] -= masses[j] * g * diff[axis]
+                    velocities[c, j, axis] += masses[i] * g * diff[axis]
+                divergences[c, i] -= masses[j] * lap
+                divergences[c, j] -= masses[i] * lap
     velocity = np.zeros((n, dimension))
     divergence = np.zeros(n)
-    for i in prange(n):
-        diff = np.empty(dimension)
-        div = 0.0
-        for j in range(n):
-            r2 = 0.0
-            for axis in range(dimension):
-                diff[axis] = positions[i, axis] - positions[j, axis]
-                r2 += diff[axis] * diff[axis]
-            g, lap = _profile_forces(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
-            for axis in range(dimension):
-                velocity[i, axis] -= masses[j] * g * diff[axis]
-            div -= masses[j] * lap
-        divergence[i] = div
+    for c in range(_ACCUMULATORS):
+        velocity += velocities[c]
+        divergence += divergences[c]
     return velocity, divergence
 
 
