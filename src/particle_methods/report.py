@@ -8,10 +8,11 @@
 - ``failures.tex``: the failing claims of every paper in one table;
 - ``parameters.tex``: ``\\param{<dotted config key>}`` for every configuration value;
 - ``configuration.tex``: the whole configuration of the run, one line per key (an appendix);
-- ``summary.tex``: ``\\claimcount{<paper>}{pass|fail|all}``;
+- ``summary.tex``: ``\\claimcount{<paper>.pass}``, ``.fail`` and ``.all``;
 - ``versions.tex``: the software versions table (a tabular).
 
-The article (``paper/ms.tex``) types no number of its own: it uses these macros.
+The article (``paper/ms.tex``) types no parameter or measured value of its own: it uses these
+macros.
 """
 
 from __future__ import annotations
