@@ -38,10 +38,14 @@ EXPECTED_CLAIMS = {
 pytestmark = pytest.mark.pipeline
 
 
+def snakemake_command(workdir, *args, configs=()):
+    return [sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory", str(workdir),
+            "--cores", "2", "--configfile", str(QUICK), *map(str, configs), *args]
+
+
 def snakemake(workdir, *args, configs=()):
-    command = [sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory", str(workdir),
-               "--cores", "2", "--configfile", str(QUICK), *map(str, configs), *args]
-    return subprocess.run(command, capture_output=True, text=True, timeout=900)
+    return subprocess.run(snakemake_command(workdir, *args, configs=configs), capture_output=True, text=True,
+                          timeout=900)
 
 
 def planned_rules(result):
@@ -108,10 +112,9 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     for name in ("results/blob/fig7.npz", "results/blob/fig8.npz", *(f"figures/blob/fig{n}.{ext}" for n in (7, 8)
                                                                      for ext in ("pdf", "png"))):
         (workdir / name).unlink()
-    command = [sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory", str(workdir),
-               "--cores", "2", "--configfile", str(QUICK)]
     start = time.time()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    process = subprocess.Popen(snakemake_command(workdir), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               start_new_session=True)
     log = workdir / "logs" / "blob" / "fig8_data.log"
     while not (log.exists() and log.stat().st_mtime >= start and log.read_text()):
         assert process.poll() is None and time.time() - start < 300, "the solver never started"

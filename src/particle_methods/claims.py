@@ -99,16 +99,16 @@ def read_claims(path) -> list[Claim]:
         return [Claim(**row) for row in reader]
 
 
+def summary_line(claims) -> str:
+    """'n claims checked: p pass, f fail.'"""
+    failed = sum(claim.status == "fail" for claim in claims)
+    return f"{len(claims)} claims checked: {len(claims) - failed} pass, {failed} fail."
+
+
 def markdown_table(claims, heading: bool = True) -> str:
     """Markdown rendering: a title and a summary line (unless ``heading`` is false), then one row
     per claim."""
-    failed = [claim for claim in claims if claim.status == "fail"]
-    lines = [
-        "# Checked claims",
-        "",
-        f"{len(claims)} claims checked: {len(claims) - len(failed)} pass, {len(failed)} fail.",
-        "",
-    ] if heading else []
+    lines = ["# Checked claims", "", summary_line(claims), ""] if heading else []
     lines += [
         "| id | figure | claim | published | measured | tolerance | status |",
         "|---|---|---|---|---|---|---|",

@@ -10,7 +10,7 @@ import re
 
 from IPython.display import Image, Markdown, display
 
-from .claims import Claim, markdown_table, read_claims
+from .claims import Claim, markdown_table, read_claims, summary_line
 from .paths import FIGURES, RESULTS
 
 
@@ -40,6 +40,4 @@ def show_other_claims(paper: str) -> None:
 
 def summary(paper: str) -> str:
     """'n claims checked: p pass, f fail.' for one paper."""
-    claims = paper_claims(paper)
-    failed = sum(claim.status == "fail" for claim in claims)
-    return f"{len(claims)} claims checked: {len(claims) - failed} pass, {failed} fail."
+    return summary_line(paper_claims(paper))
