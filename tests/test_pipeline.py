@@ -121,13 +121,21 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
         time.sleep(0.1)
     os.killpg(process.pid, signal.SIGINT)  # what Ctrl-C in a terminal does
     assert process.wait(timeout=300) != 0
-    assert not (workdir / "results" / "blob" / "fig8.npz").exists()
+    while time.time() - start < 600:  # let every process of the run end before looking
+        try:
+            os.killpg(process.pid, 0)
+        except ProcessLookupError:
+            break
+        time.sleep(0.1)
     assert not list(workdir.rglob("*.tmp"))
     for path in (workdir / "results").rglob("*.npz"):
         assert load_results(path)  # whatever is on disk is complete
+    # Whether a solver job was cut or had just finished depends on timing; either way the resumed
+    # run does only the unfinished part of the blob figures and nothing of the other studies.
     plan = planned_rules(snakemake(workdir, "--dry-run"))
-    assert {"blob_compare_data", "blob_compare_figure", "blob_claims"} <= plan
-    assert not plan & {"sticky_scalar_data", "ltp_quadratic_data", "blob_fig4_data", "blob_fig5_data", "blob_fig6_data"}
+    assert "blob_compare_figure" in plan
+    assert plan <= {"blob_compare_data", "blob_compare_figure", "blob_claims", "claims_table", "report_snippets",
+                    "notebook", "manuscript", "all"}
     assert snakemake(workdir).returncode == 0
     resumed = snakemake(workdir, "--dry-run")
     assert "Nothing to be done" in resumed.stdout + resumed.stderr
