@@ -1,0 +1,138 @@
+"""Fitted rates shown in full: pairwise slopes and the fit over every window of resolutions.
+
+A claimed rate is decided on one window of consecutive resolutions, chosen by a rule written in
+the config before measuring (``window`` = the number of finest resolutions). The claims scripts
+record every fit with a :class:`Recorder`, which logs the table and writes
+``results/<paper>/rates.json``; the report prints the same tables, so a reader sees how the
+slope moves with the window and which window decided the verdict.
+
+The fitted quantity is a least-squares slope of y against x. For an order of convergence
+x = log(resolution) and y = log(error); where the paper's rate carries a log factor the
+measure must separate it from the rate without it, for example y = n * error against
+x = log n, whose slope tends to a positive constant for log(n)/n and to 0 for 1/n.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .validation import finite_array, integer_at_least
+
+
+@dataclass(frozen=True)
+class RateFit:
+    """Slopes of y against x over every window of consecutive points, and the deciding one."""
+
+    claim: str
+    quantity: str
+    resolution: str
+    values: tuple[float, ...]
+    slopes: tuple[tuple[float | None, ...], ...]
+    window: int
+
+    @property
+    def slope(self) -> float:
+        """The slope over the deciding window: the ``window`` finest points."""
+        last = len(self.values) - 1
+        return float(self.slopes[last - self.window + 1][last])
+
+    @property
+    def pairwise(self) -> list[float]:
+        return [float(self.slopes[i][i + 1]) for i in range(len(self.values) - 1)]
+
+    def table(self) -> str:
+        """Plain text: one row per first point, one column per last point; * marks the deciding fit."""
+        count = len(self.values)
+        head = f"{self.claim}: slope of {self.quantity}; rows: first {self.resolution}, columns: last"
+        lines = [head, " " * 12 + "".join(f"{value:>12.5g}" for value in self.values[1:])]
+        first = count - self.window
+        for i in range(count - 1):
+            cells = []
+            for j in range(1, count):
+                value = self.slopes[i][j]
+                mark = "*" if (i, j) == (first, count - 1) else " "
+                cells.append(" " * 12 if value is None else f"{value:11.4f}{mark}")
+            lines.append(f"{self.values[i]:>12.5g}" + "".join(cells))
+        return "\n".join(lines)
+
+
+def window_slopes(x, y) -> list[list[float | None]]:
+    """slopes[i][j]: least-squares slope of y against x over points i..j (None unless j > i)."""
+    x = finite_array("x", x)
+    y = finite_array("y", y)
+    if x.ndim != 1 or x.shape != y.shape or x.size < 2:
+        raise ValueError("x and y must be 1D arrays of the same length, at least 2")
+    count = x.size
+    slopes: list[list[float | None]] = [[None] * count for _ in range(count)]
+    for i in range(count):
+        for j in range(i + 1, count):
+            xs, ys = x[i:j + 1], y[i:j + 1]
+            if np.ptp(xs) == 0:
+                raise ValueError("x must not repeat inside a window")
+            slopes[i][j] = float(np.polyfit(xs, ys, 1)[0])
+    return slopes
+
+
+def fit(claim: str, quantity: str, resolution: str, values, x, y, window: int) -> RateFit:
+    """Slopes of y against x (arrays over the resolutions ``values``, coarse to fine); the
+    verdict uses the ``window`` finest points."""
+    values = finite_array(resolution, values)
+    window = integer_at_least("window", window, 2)
+    if window > values.size:
+        raise ValueError(f"window must not exceed the number of resolutions ({values.size}), got {window}")
+    slopes = window_slopes(x, y)
+    if values.shape != np.shape(x):
+        raise ValueError(f"{resolution} must have one value per point")
+    return RateFit(claim, quantity, resolution, tuple(float(v) for v in values),
+                   tuple(tuple(row) for row in slopes), window)
+
+
+def order(claim: str, resolution: str, values, errors, window: int) -> RateFit:
+    """Order of convergence: slope of log(error) against log(resolution)."""
+    values = finite_array(resolution, values)
+    errors = finite_array("errors", errors)
+    if np.any(values <= 0) or np.any(errors <= 0):
+        raise ValueError("resolutions and errors must be positive to take logarithms")
+    return fit(claim, f"log error against log {resolution}", resolution, values, np.log(values), np.log(errors),
+               window)
+
+
+class Recorder:
+    """Collects the fits of one claims script, logs each table, writes them as JSON."""
+
+    def __init__(self, log=print):
+        self.fits: list[RateFit] = []
+        self._log = log
+
+    def add(self, rate: RateFit) -> float:
+        """Keep and log ``rate``; return its deciding slope."""
+        self.fits.append(rate)
+        self._log(rate.table())
+        return rate.slope
+
+    def write(self, path) -> None:
+        write_rates(path, self.fits)
+
+
+def write_rates(path, fits) -> None:
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_suffix(path.suffix + ".tmp")
+    temporary.write_text(json.dumps([asdict(rate) for rate in fits], indent=1))
+    temporary.replace(path)
+
+
+def read_rates(path) -> list[RateFit]:
+    rows = json.loads(Path(path).read_text())
+    return [RateFit(**{**row, "values": tuple(row["values"]), "slopes": tuple(tuple(r) for r in row["slopes"])})
+            for row in rows]
+
+
+def merge_rates(sources, path) -> list[RateFit]:
+    fits = [rate for source in sources for rate in read_rates(source)]
+    write_rates(path, fits)
+    return fits
