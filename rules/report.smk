@@ -4,36 +4,46 @@ the software versions and the LaTeX report."""
 import os
 import shutil
 
-CLAIM_SOURCES = ["results/sticky/claims.csv", "results/ltp/claims.csv", "results/blob/claims.csv"]
+PAPERS = ["sticky", "ltp", "blob"]
+CLAIM_SOURCES = expand("results/{paper}/claims.csv", paper=PAPERS)
+RATE_SOURCES = expand("results/{paper}/rates.json", paper=PAPERS)
+VERDICTS = str(ROOT / config["verdicts"])
 
 
 rule claims_table:
-    """Merge every paper's claims into results/claims.csv and results/claims.md."""
+    """Merge every paper's claims into results/claims.csv and results/claims.md, and every
+    paper's fitted rates into results/rates.json."""
     input:
         sources=CLAIM_SOURCES,
-        code=[str(PACKAGE / "claims.py")],
+        rates=RATE_SOURCES,
+        code=[str(PACKAGE / "claims.py"), str(PACKAGE / "rates.py")],
     output:
         csv="results/claims.csv",
         markdown="results/claims.md",
+        rates="results/rates.json",
     log:
         "logs/claims_table.log",
     conda:
         ENVIRONMENT
     shell:
-        "python -m particle_methods.claims merge {input.sources} "
-        "--csv {output.csv} --markdown {output.markdown} > {log} 2>&1"
+        "python -m particle_methods.claims merge {input.sources} --rates {input.rates} "
+        "--csv {output.csv} --markdown {output.markdown} --rates-output {output.rates} > {log} 2>&1"
 
 
 rule verify:
-    """Exit non-zero when any claim of the table fails (run as `snakemake verify`)."""
+    """Exit non-zero when a verdict differs from the expected verdicts of the config's `verdicts`
+    file, when an expected claim is missing or a claim has no expected verdict (run as
+    `snakemake verify`); print the paper claims with published and measured values."""
     input:
-        "results/claims.csv",
+        claims="results/claims.csv",
+        expected=VERDICTS,
     log:
         "logs/verify.log",
     conda:
         ENVIRONMENT
     shell:
-        "python -m particle_methods.claims verify {input} 2>&1 | tee {log}; exit ${{PIPESTATUS[0]}}"
+        "python -m particle_methods.claims verify {input.claims} --expected {input.expected} 2>&1 "
+        "| tee {log}; exit ${{PIPESTATUS[0]}}"
 
 
 # Each notebook shows its paper's figures and claims, and plots some cached results.

@@ -166,7 +166,7 @@ rule sticky_remark33:
 
 
 rule sticky_tspd_convergence:
-    """Theorem 4.4: iterated TSPD errors against a fine reference run."""
+    """Theorem 4.4: iterated TSPD errors, Delta sweep at fixed n and n sweep at small Delta."""
     input:
         code=imports("sticky/tspd_convergence_data.py"),
     output:
@@ -177,14 +177,34 @@ rule sticky_tspd_convergence:
         ENVIRONMENT
     params:
         system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
-        case=lambda wildcards: STICKY["psystem"][STICKY["tspd_convergence"]["case"]],
+        cases=lambda wildcards: {
+            case: STICKY["psystem"][case] for case in ("rarefaction", "shocks")
+        },
         cfg=STICKY["tspd_convergence"],
     script:
         "../scripts/sticky/tspd_convergence_data.py"
 
 
+rule sticky_cost:
+    """Sections 5.1.1 and 5.2.1: time of the compiled kernels against n and the number of steps.
+    Runs alone (all cores reserved) so that the timings are not disturbed by other jobs."""
+    input:
+        code=imports("sticky/cost_data.py"),
+    output:
+        "results/sticky/cost.npz",
+    log:
+        "logs/sticky/cost.log",
+    conda:
+        ENVIRONMENT
+    threads: workflow.cores
+    params:
+        cfg=STICKY["cost"],
+    script:
+        "../scripts/sticky/cost_data.py"
+
+
 rule sticky_claims:
-    """Measure every sticky claim from the cached results."""
+    """Measure every sticky claim from the cached results; record every fitted rate."""
     input:
         burgers="results/sticky/fig2.npz",
         concave="results/sticky/fig3.npz",
@@ -193,12 +213,16 @@ rule sticky_claims:
         lemma21="results/sticky/lemma21.npz",
         remark33="results/sticky/remark33.npz",
         tspd="results/sticky/tspd_convergence.npz",
+        cost="results/sticky/cost.npz",
         code=imports("sticky/claims.py"),
     output:
-        "results/sticky/claims.csv",
+        claims="results/sticky/claims.csv",
+        rates="results/sticky/rates.json",
     log:
         "logs/sticky/claims.log",
     conda:
         ENVIRONMENT
+    params:
+        cfg=STICKY,
     script:
         "../scripts/sticky/claims.py"

@@ -8,29 +8,94 @@ floor); identities exact by construction get rounding tolerances.
 import numpy as np
 
 from particle_methods import claims as c
-from particle_methods.convergence import fit_order, order_table
+from particle_methods import rates
+from particle_methods.rates import Recorder
 from particle_methods.workflow import load_results, logged, progress
 
 PAPER = "blob"
+RATES = Recorder(progress)
+
+# Kind and source of every claim (see particle_methods.claims): "paper" for what the paper
+# states (where), "derived" for what we derive from its theory, "check" for our own checks.
+FIG4_RATE = ("paper", "Figure 4, section 4.3")
+FIG4_M6_RATE = ("paper", "Corollary 3.10 (rate m q); Figure 4, section 4.3")
+KINDS = {
+    "fig1d.order_trajectory": ("paper", "Figure 1D, section 4.2"),
+    "fig1d.order_density": ("paper", "Figure 1D, section 4.2"),
+    "fig2.order": ("paper", "Figure 2, section 4.2"),
+    "fig2.below_blob": ("paper", "Figure 2, section 4.2"),
+    "fig3.slower_trajectory": ("paper", "Figure 3D, section 4.2"),
+    "fig3.slower_density": ("paper", "Figure 3D, section 4.2"),
+    "fig1c.no_collision": ("paper", "Figure 1C, section 4.2"),
+    "fig2.no_bending": ("paper", "Figure 2, section 4.2"),
+    "integrator": ("check", "ODE error far below the method error (section 4.1: VODE)"),
+    "energy.decrease": ("paper", "section 2.2, energy (2.4)"),
+    "mass": ("check", "conservation of mass (2.2), section 2.2"),
+    "fig4.m4_newtonian_repulsive_trajectory": FIG4_RATE,
+    "fig4.m4_newtonian_repulsive_density": FIG4_RATE,
+    "fig4.m4_cubic_trajectory": FIG4_RATE,
+    "fig4.m4_cubic_density": FIG4_RATE,
+    "fig4.m6_newtonian_repulsive_trajectory": FIG4_M6_RATE,
+    "fig4.m6_newtonian_repulsive_density": FIG4_M6_RATE,
+    "fig4.m6_cubic_trajectory": FIG4_M6_RATE,
+    "fig4.m6_cubic_density": FIG4_M6_RATE,
+    "fig4.m6_better_newtonian_repulsive_trajectory": FIG4_RATE,
+    "fig4.m6_better_newtonian_repulsive_density": FIG4_RATE,
+    "fig4.m6_better_cubic_trajectory": FIG4_RATE,
+    "fig4.m6_better_cubic_density": FIG4_RATE,
+    "fig4.cubic_particle_beats_m4_trajectory": FIG4_RATE,
+    "fig4.cubic_particle_loses_density": FIG4_RATE,
+    "fig4.cubic_m6_best": FIG4_RATE,
+    "fig4.cubic_reference": ("check", "convergence of the reference solution for K = |x|^3/3 (no exact solution)"),
+    "fig4.repulsive_density_q0.75_m4": ("check", "diagnostic rerun of Figure 4 with q = 0.75 (not in the paper)"),
+    "fig4.repulsive_density_q0.75_m6": ("check", "diagnostic rerun of Figure 4 with q = 0.75 (not in the paper)"),
+    "fig5.m4_regular_trajectory": ("paper", "Figure 5, section 4.4"),
+    "fig5.m4_regular_density": ("paper", "Figure 5, section 4.4"),
+    "fig5.particle_slower": ("paper", "Figure 5, section 4.4"),
+    "fig5.disk_slower": ("paper", "Figure 5, section 4.4"),
+    "fig6.quadratic_point": ("paper", "Figure 6, section 4.4"),
+    "fig6.cubic_ring": ("paper", "Figure 6, section 4.4"),
+    "fig6.newtonian_blowup": ("derived", "Figure 6, section 4.4: blow-up at 1/rho0(0); exact density of section 4.1"),
+    "energy.decrease_2d": ("paper", "section 2.2, energy (2.4)"),
+    "mass_2d": ("check", "conservation of mass (2.2), section 2.2"),
+    "mass_2d_tabulated": ("check", "conservation of mass (2.2), section 2.2, with a tabulated kernel"),
+    "fig7.delta_ring_radius": ("derived", "Figure 7, section 4.4: delta ring; stationary radius of a uniform ring"),
+    "fig7.blob_ring_faster": ("paper", "Figure 7, section 4.4"),
+    "fig7.log_ring_collapse": ("paper", "Figure 7, section 4.4"),
+    "fig7.septic_three_points": ("paper", "Figure 7, section 4.4"),
+    "fig8.regularisation_effect": ("paper", "Figure 8, section 4.4"),
+}
 
 
-def claim(kind, name, figure, text, *args, **kwargs):
-    return kind(f"{PAPER}.{name}", PAPER, figure, text, *args, **kwargs)
+def kind_and_source(name):
+    """(kind, source) of the claim ``name`` from :data:`KINDS`; a clear error when it is missing."""
+    if name not in KINDS:
+        raise ValueError(f"claim {PAPER}.{name} has no kind and source: add it to KINDS in scripts/blob/claims.py")
+    return KINDS[name]
 
 
-def order(d, key, prefix=""):
-    """Fitted order of d[prefix + key] against h on the finest ``fit_points`` steps."""
-    k = int(d["fit_points"])
-    errors = d[f"{prefix}{key}"]
-    progress(f"{prefix}{key}\n" + order_table(d["h_values"], errors))
-    return fit_order(d["h_values"][-k:], errors[-k:])
+def claim(compare, name, figure, text, *args, **kwargs):
+    kind, source = kind_and_source(name)
+    return compare(f"{PAPER}.{name}", PAPER, figure, text, *args, kind=kind, source=source, **kwargs)
+
+
+def order(d, key, name, prefix=""):
+    """Fitted order of d[prefix + key] against h on the finest ``fit_points`` steps, recorded under
+    the claim ``name`` that it decides (the first one when it decides several)."""
+    kind_and_source(name)
+    h, errors = d["h_values"], d[f"{prefix}{key}"]
+    progress(f"{PAPER}.{name}: {prefix}{key} at h = {', '.join(f'{v:.5g}' for v in h)}: "
+             f"{', '.join(f'{e:.5e}' for e in errors)}")
+    return RATES.add(rates.order(f"{PAPER}.{name}", "h", h, errors, int(d["fit_points"])))
 
 
 def newtonian_claims(d1, d2, d3):
     rate = 4 * float(d1["q"])
-    blob_x, blob_rho = order(d1, "trajectory_errors"), order(d1, "density_errors")
-    particle_x = order(d2, "trajectory_errors")
-    patch_x, patch_rho = order(d3, "trajectory_errors"), order(d3, "density_errors")
+    blob_x = order(d1, "trajectory_errors", "fig1d.order_trajectory")
+    blob_rho = order(d1, "density_errors", "fig1d.order_density")
+    particle_x = order(d2, "trajectory_errors", "fig2.order")
+    patch_x = order(d3, "trajectory_errors", "fig3.slower_trajectory")
+    patch_rho = order(d3, "density_errors", "fig3.slower_density")
     gaps = np.diff(d1["positions"], axis=1).min() / float(d1["h"])
     times = d2["times"]
     before = times < 0.99
@@ -77,7 +142,8 @@ def fig4_claims(d):
     names = {"newtonian_repulsive": "-|x|/2", "cubic": "|x|^3/3"}
     for kernel in d["kernels"]:
         for part in ("trajectory", "density"):
-            m4, m6 = order(d, f"{kernel}_blob4_{part}"), order(d, f"{kernel}_blob6_{part}")
+            m4 = order(d, f"{kernel}_blob4_{part}", f"fig4.m4_{kernel}_{part}")
+            m6 = order(d, f"{kernel}_blob6_{part}", f"fig4.m6_{kernel}_{part}")
             out.append(claim(c.close_to, f"fig4.m4_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 4: {part} "
                              f"rate close to m q = {rate4:g}", rate4, m4, 0.3))
             out.append(claim(c.close_to, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate; "
@@ -108,7 +174,7 @@ def fig4_claims(d):
     ]
     q = float(d["diagnostic_q"])
     for m in (4, 6):
-        rate = order(d, f"diagnostic_m{m}_density")
+        rate = order(d, f"diagnostic_m{m}_density", f"fig4.repulsive_density_q{q:g}_m{m}")
         out.append(claim(c.close_to, f"fig4.repulsive_density_q{q:g}_m{m}", "4 (diagnostic)",
                          f"K = -|x|/2, m = {m}, with q = {q:g} instead of 0.9: the density rate reaches m q, so the "
                          "slow density rate at q = 0.9 is the quadrature error of the spreading particles, not the "
@@ -135,10 +201,15 @@ def cluster_count(points, threshold=0.05):
 
 def fig5_claims(d):
     labels = list(d["labels"])
-    rates = {label: (order(d, "_trajectory", f"case{i}"),
-                     order(d, "_density", f"case{i}") if np.isfinite(d[f"case{i}_density"]).all() else np.nan)
-             for i, label in enumerate(labels)}
-    regular, particle, disk = rates["regular, blob"], rates["regular, particle"], rates["disk, blob"]
+    # the claim each case's fits are recorded under: the one its trajectory rate decides (the
+    # density rates of the particle and disk cases decide none)
+    names = {"regular, blob": ("fig5.m4_regular_trajectory", "fig5.m4_regular_density"),
+             "regular, particle": ("fig5.particle_slower",) * 2, "disk, blob": ("fig5.disk_slower",) * 2}
+    slopes = {label: (order(d, "_trajectory", names[label][0], f"case{i}"),
+                      order(d, "_density", names[label][1], f"case{i}") if np.isfinite(d[f"case{i}_density"]).all()
+                      else np.nan)
+              for i, label in enumerate(labels)}
+    regular, particle, disk = slopes["regular, blob"], slopes["regular, particle"], slopes["disk, blob"]
     return [
         claim(c.close_to, "fig5.m4_regular_trajectory", "5", "2D, K = log|x|/(2 pi), m = 4, regular data: trajectory "
               "rate close to m q = 3.6", 3.6, regular[0], 0.3),
@@ -236,8 +307,9 @@ def run(inputs, output):
             *fig8_claims(load_results(inputs.fig8))]
     for row in rows:
         progress(f"{row.status:4} {row.id}: measured {row.measured} ({row.tolerance})")
-    c.write_claims(output, rows)
+    c.write_claims(output.claims, rows)
+    RATES.write(output.rates)
 
 
 with logged(snakemake.log[0]):  # noqa: F821
-    run(snakemake.input, snakemake.output[0])  # noqa: F821
+    run(snakemake.input, snakemake.output)  # noqa: F821

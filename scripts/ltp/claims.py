@@ -11,15 +11,59 @@ import numpy as np
 from scipy.signal import find_peaks
 
 from particle_methods import claims as c
-from particle_methods.convergence import fit_order, order_table
+from particle_methods import rates
+from particle_methods.rates import Recorder
 from particle_methods.workflow import load_results, logged, progress
 
 PAPER = "ltp"
 ROUNDING = 1e-10
+RATES = Recorder(progress)
+
+# Kind and source of every claim (see particle_methods.claims): "paper" for what the paper
+# states (where), "derived" for what we derive from its theory, "check" for our own checks.
+KINDS = {
+    "fig2.order_l1": ("paper", "Figure 2, Theorem 1"),
+    "fig2.order_linf": ("paper", "Figure 2, Theorem 2"),
+    "fig3.best_sp_l1": ("paper", "Figure 3 (left), section 6.1"),
+    "fig3.best_sp_linf": ("paper", "Figure 3 (left), section 6.1"),
+    "mass.quadrature": ("check", "conservation of mass at the discrete level, section 2.2 after (2.27)"),
+    "centre_of_mass.quadratic": ("check", "conservation of the centre of mass for W = x^2, section 6.1 before (6.4)"),
+    "fig4.hat": ("paper", "Figure 4, section 6.1"),
+    "fig4.hat_gain_larger": ("paper", "Figure 4, section 6.1"),
+    "fig5.blowup_a1.5": ("paper", "Figure 5, section 6.2"),
+    "fig5.no_blowup_a2.5": ("paper", "Figure 5, section 6.2"),
+    "fig5.dirac": ("paper", "Figure 5, section 6.2"),
+    "fig6.b2.5_two_diracs": ("paper", "Figure 6, section 6.2"),
+    "fig6.b2.5_equal_split": ("paper", "Figure 6, section 6.2"),
+    "fig6.b1.5_steady": ("paper", "Figure 6, section 6.2"),
+    "fig6.b1.5_edges": ("paper", "Figure 6, section 6.2"),
+    "fig7.finitely_many_diracs": ("paper", "Figure 7, section 6.2"),
+    "fig8.sp_oscillates": ("paper", "Figure 8, section 6.2"),
+    "fig8.ltp_smooth": ("paper", "Figure 8, section 6.2"),
+    "mass.weights": ("check", "weights constant in time by construction, section 2.2 (2.27)"),
+    "centre_of_mass.even_w": ("check", "centre of mass of symmetric data under even W: 0 by symmetry"),
+}
 
 
-def claim(kind, name, figure, text, *args, **kwargs):
-    return kind(f"{PAPER}.{name}", PAPER, figure, text, *args, **kwargs)
+def kind_and_source(name):
+    """(kind, source) of the claim ``name`` from :data:`KINDS`; a clear error when it is missing."""
+    if name not in KINDS:
+        raise ValueError(f"claim {PAPER}.{name} has no kind and source: add it to KINDS in scripts/ltp/claims.py")
+    return KINDS[name]
+
+
+def claim(compare, name, figure, text, *args, **kwargs):
+    kind, source = kind_and_source(name)
+    return compare(f"{PAPER}.{name}", PAPER, figure, text, *args, kind=kind, source=source, **kwargs)
+
+
+def order(name, h, errors, points):
+    """Fitted order of ``errors`` against ``h`` (coarse to fine) on the ``points`` finest steps,
+    recorded under the claim ``name`` that it decides."""
+    kind_and_source(name)
+    progress(f"{PAPER}.{name}: errors at h = {', '.join(f'{v:.5g}' for v in h)}: "
+             f"{', '.join(f'{e:.5e}' for e in errors)}")
+    return RATES.add(rates.order(f"{PAPER}.{name}", "h", h, errors, points))
 
 
 def peak_count(density) -> int:
@@ -40,10 +84,10 @@ def quadratic_claims(d):
     out = []
     for column, norm in ((0, "l1"), (1, "linf")):
         errors = d["ltp_errors"][:, column]
-        progress(f"LTP {norm} errors, W = x^2\n" + order_table(h, errors))
         out.append(claim(c.at_least, f"fig2.order_{norm}", "2",
                          f"LTP {norm.upper()} error decreases at least at first order in h (Theorem 1, dt <= C h); "
-                         f"slope on the {k} finest h", 1.0, fit_order(h[-k:], errors[-k:]), published=">= 1"))
+                         f"slope on the {k} finest h", 1.0, order(f"fig2.order_{norm}", h, errors, k),
+                         published=">= 1"))
     for column, norm in ((0, "l1"), (1, "linf")):
         ratio = d["scan_sp"][:, column].min() / d["scan_ltp"][column]
         out.append(claim(c.close_to, f"fig3.best_sp_{norm}", "3 (left)",
@@ -161,8 +205,9 @@ def run(inputs, output):
     ]
     for row in rows:
         progress(f"{row.status:4} {row.id}: measured {row.measured} ({row.tolerance})")
-    c.write_claims(output, rows)
+    c.write_claims(output.claims, rows)
+    RATES.write(output.rates)
 
 
 with logged(snakemake.log[0]):  # noqa: F821
-    run(snakemake.input, snakemake.output[0])  # noqa: F821
+    run(snakemake.input, snakemake.output)  # noqa: F821

@@ -9,6 +9,7 @@ from particle_methods.sticky.measures import (
     Laplace,
     Pareto,
     TruncatedExponential,
+    TruncatedPareto,
     Uniform,
     Weibull,
     median_quantiles,
@@ -18,18 +19,18 @@ from particle_methods.workflow import logged, progress, save_results
 
 def measures(p):
     """Name -> measure; compactly supported ones first (their support length is recorded)."""
-    chosen = {
-        "uniform": Uniform(0.0, 1.0),
-        "truncated_exponential": TruncatedExponential(1.0),
-        "two_atoms": Atoms([-1.0, 1.0]),
-        "laplace": Laplace(0.0),
-    }
+    chosen = {"uniform": Uniform(0.0, 1.0), "two_atoms": Atoms([-1.0, 1.0]), "laplace": Laplace(0.0)}
+    chosen.update({f"exponential_{b:g}": TruncatedExponential(b) for b in p["positive_density_b"]})
     chosen.update({f"pareto_{alpha:g}": Pareto(alpha) for alpha in p["pareto_alpha"]})
     chosen.update({f"weibull_{alpha:g}": Weibull(alpha) for alpha in p["weibull_alpha"]})
     return chosen
 
 
-SUPPORT_LENGTH = {"uniform": 1.0, "truncated_exponential": 1.0, "two_atoms": 2.0}
+def support_length(name, measure):
+    """b - a for the compactly supported measures, None otherwise."""
+    if name.startswith("exponential_"):
+        return measure.b
+    return {"uniform": 1.0, "two_atoms": 2.0}.get(name)
 
 
 def sqrt_variance_integral(measure) -> float:
@@ -58,8 +59,15 @@ def run(p, output):
         results[f"{name}_odd"] = np.array([w1_to_measure(measure, median_quantiles(measure, int(n))) for n in odd_n])
         if not name.startswith("pareto") or measure.alpha > 2:
             results[f"{name}_sqrt_variance"] = np.float64(sqrt_variance_integral(measure))
-        if name in SUPPORT_LENGTH:
-            results[f"{name}_support"] = np.float64(SUPPORT_LENGTH[name])
+        if support_length(name, measure) is not None:
+            results[f"{name}_support"] = np.float64(support_length(name, measure))
+    # Lemma 2.1 (i): no first moment. F = 1 - x^-alpha (alpha <= 1) truncated to [1, R], n fixed.
+    heavy = p["heavy_tail"]
+    upper = np.asarray(heavy["upper"], dtype=float)
+    progress(f"heavy tail alpha = {heavy['alpha']:g}, n = {heavy['n']}, R = {upper.min():g}..{upper.max():g}")
+    results["heavy_upper"] = upper
+    results["heavy_errors"] = np.array([
+        w1_to_measure(m, median_quantiles(m, heavy["n"])) for m in (TruncatedPareto(heavy["alpha"], r) for r in upper)])
     save_results(output, **results)
 
 

@@ -1,14 +1,27 @@
-"""Remark 3.3: exact error t/(4n) from one Dirac mass (Burgers); SPD = entropy solution (concave flux)."""
+"""Remark 3.3: exact error t/(4n) from one Dirac mass (Burgers); for the concave flux the SPD is the
+entropy solution of the discretised data, checked against an independent Godunov solver."""
+
+import math
 
 import numpy as np
 
-from particle_methods.norms import w1_between_samples, w1_to_measure
+from particle_methods.finite_volume import BURGERS, CONCAVE, cell_averages_of_step_cdf, godunov, l1_distance_to_step_cdf
+from particle_methods.norms import w1_to_measure
 from particle_methods.sticky.cases import SCALAR_CASES
-from particle_methods.sticky.events import sticky_collisions
 from particle_methods.sticky.exact import BurgersSolution, burgers_flux
 from particle_methods.sticky.measures import Atoms
 from particle_methods.sticky.spd import spd_positions, velocities_from_flux
 from particle_methods.workflow import logged, progress, save_results
+
+
+def godunov_distance(flux, x, positions, t, cells_per_unit, cfl):
+    """L1 distance between the Godunov solution at time t, started from the empirical CDF of x,
+    and the empirical CDF of the SPD positions at t (both exact on the grid, no quadrature)."""
+    low, high = min(x[0], positions[0]) - 1.0, max(x[-1], positions[-1]) + 1.0
+    cells = math.ceil((high - low) * cells_per_unit)
+    edges = np.linspace(low, low + cells / cells_per_unit, cells + 1)
+    values = godunov(flux, cell_averages_of_step_cdf(x, edges), edges, t, cfl=cfl, left=0.0, right=1.0)
+    return l1_distance_to_step_cdf(values, edges, positions)
 
 
 def run(p, output):
@@ -21,27 +34,43 @@ def run(p, output):
             positions = spd_positions(np.zeros(n), velocities_from_flux(burgers_flux, int(n)), t)
             dirac_errors[i, j] = w1_to_measure(solution, positions)
 
-    # Concave flux: front tracking of the entropy solution with the discretised data
-    # (event-driven collisions at Rankine-Hugoniot speeds) against the hull SPD.
+    # Concave flux, Laplace data (2.1): SPD of the discretised data against Godunov from the same data.
     case = SCALAR_CASES["concave_laplace"]
-    tracking_n = np.asarray(p["tracking_n"], dtype=np.int64)
-    tracking_times = np.asarray(p["tracking_times"], dtype=float)
-    shape = (tracking_times.size, tracking_n.size)
-    position_gap, tracking_w1, total_errors = np.empty(shape), np.empty(shape), np.empty(shape)
-    initial_errors = np.empty(tracking_n.size)
-    for j, n in enumerate(tracking_n):
-        progress(f"front tracking with n = {n}")
+    n_values = np.asarray(p["godunov_n"], dtype=np.int64)
+    times = np.asarray(p["godunov_times"], dtype=float)
+    cells = np.asarray(p["cells_per_unit"], dtype=np.int64)
+    distances = np.empty((n_values.size, times.size, cells.size))
+    total_errors = np.empty((n_values.size, times.size))
+    initial_errors = np.empty(n_values.size)
+    for a, n in enumerate(n_values):
         x, v = case.initial_state(int(n))
-        initial_errors[j] = w1_to_measure(case.initial, x)
-        for i, t in enumerate(tracking_times):
-            hull = spd_positions(x, v, t)
-            fronts = sticky_collisions(x, v, t)
-            position_gap[i, j] = np.max(np.abs(hull - fronts))
-            tracking_w1[i, j] = w1_between_samples(hull, fronts)
-            total_errors[i, j] = w1_to_measure(case.solution(t), hull)
-    save_results(output, dirac_n=dirac_n, dirac_times=dirac_times, dirac_errors=dirac_errors,
-                 tracking_n=tracking_n, tracking_times=tracking_times, position_gap=position_gap,
-                 tracking_w1=tracking_w1, total_errors=total_errors, initial_errors=initial_errors)
+        initial_errors[a] = w1_to_measure(case.initial, x)
+        for b, t in enumerate(times):
+            progress(f"Godunov against the SPD: n = {n}, t = {t:g}, {cells.tolist()} cells per unit")
+            positions = spd_positions(x, v, t)
+            total_errors[a, b] = w1_to_measure(case.solution(t), positions)
+            distances[a, b] = [godunov_distance(CONCAVE, x, positions, t, int(c), p["cfl"]) for c in cells]
+
+    # The same measure where the SPD is not entropic: Burgers from delta_0, distance -> t/(4n).
+    convex = p["convex"]
+    x = np.zeros(convex["n"])
+    positions = spd_positions(x, velocities_from_flux(burgers_flux, convex["n"]), convex["t"])
+    progress(f"Godunov against the SPD for Burgers from delta_0, n = {convex['n']}")
+    convex_distances = np.array([godunov_distance(BURGERS, x, positions, convex["t"], int(c), p["cfl"])
+                                 for c in cells])
+    # Diagnostic: one case with many particles on finer grids, to see whether its order rises.
+    refinement = p["refinement"]
+    x, v = case.initial_state(refinement["n"])
+    positions = spd_positions(x, v, refinement["t"])
+    progress(f"refined grids for n = {refinement['n']}, t = {refinement['t']:g}: {refinement['cells_per_unit']}")
+    refined = np.array([godunov_distance(CONCAVE, x, positions, refinement["t"], int(c), p["cfl"])
+                        for c in refinement["cells_per_unit"]])
+    save_results(output, refined_cells=np.asarray(refinement["cells_per_unit"]), refined_distances=refined,
+                 refined_n=refinement["n"], refined_t=refinement["t"], dirac_n=dirac_n, dirac_times=dirac_times,
+                 dirac_errors=dirac_errors,
+                 godunov_n=n_values, godunov_times=times, cells_per_unit=cells, distances=distances,
+                 total_errors=total_errors, initial_errors=initial_errors, convex_distances=convex_distances,
+                 convex_n=convex["n"], convex_t=convex["t"])
 
 
 with logged(snakemake.log[0]):  # noqa: F821

@@ -27,6 +27,8 @@ from pathlib import Path
 
 import yaml
 
+from .rates import merge_rates
+
 COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status")
 KINDS = ("paper", "derived", "check")
 KIND_NAMES = {"paper": "paper claims", "derived": "derived claims", "check": "checks"}
@@ -239,12 +241,16 @@ def main(argv=None) -> int:
     merge_parser.add_argument("sources", nargs="+")
     merge_parser.add_argument("--csv", required=True)
     merge_parser.add_argument("--markdown", required=True)
+    merge_parser.add_argument("--rates", nargs="*", default=[], help="per-paper rate tables to merge")
+    merge_parser.add_argument("--rates-output", help="merged rate tables (JSON)")
     verify_parser = sub.add_parser("verify", help="exit 1 when a verdict differs from the expected ones")
     verify_parser.add_argument("path")
     verify_parser.add_argument("--expected", required=True, help="YAML file of expected verdicts")
     args = parser.parse_args(argv)
     if args.command == "merge":
         merge(args.sources, args.csv, args.markdown)
+        if args.rates_output:
+            merge_rates(args.rates, args.rates_output)
         return 0
     return verify(args.path, args.expected)
 

@@ -15,7 +15,7 @@ from abc import ABC, abstractmethod
 import numpy as np
 from scipy import special
 
-from ..validation import finite_array, finite_number, integer_at_least, positive, sorted_array
+from ..validation import finite_array, finite_number, in_interval, integer_at_least, positive, sorted_array
 
 _BISECTION_STEPS = 64
 
@@ -164,6 +164,40 @@ class Pareto(QuantileMeasure):
     def quantile_integral(self, w):
         power = 1.0 - 1.0 / self.alpha
         return (1.0 - (1.0 - np.asarray(w, dtype=np.float64)) ** power) / power
+
+
+class TruncatedPareto(QuantileMeasure):
+    """F(x) = (1 - x^{-alpha}) / (1 - R^{-alpha}) on [1, R], any alpha > 0 (Lemma 2.1 (i)).
+
+    For alpha <= 1 the untruncated law has no first moment; widening R shows the discretisation
+    error growing without bound, as section 1.1.4 argues (W1 = +inf for such m).
+    """
+
+    def __init__(self, alpha: float, upper: float):
+        self.alpha = positive("alpha", alpha)
+        self.upper = finite_number("upper", upper)
+        if self.upper <= 1.0:
+            raise ValueError(f"upper must exceed 1, got {self.upper}")
+        self._tail = self.upper ** (-self.alpha)
+
+    def _remaining(self, w):
+        """1 - (1 - R^-alpha) w, written to keep its digits as w -> 1."""
+        w = in_interval("w", w, 0.0, 1.0)
+        return (1.0 - w) + w * self._tail
+
+    def cdf(self, x):
+        x = np.clip(np.asarray(x, dtype=np.float64), 1.0, self.upper)
+        return -np.expm1(-self.alpha * np.log(x)) / (1.0 - self._tail)
+
+    def quantile(self, w):
+        return self._remaining(w) ** (-1.0 / self.alpha)
+
+    def quantile_integral(self, w):
+        remaining, mass = self._remaining(w), 1.0 - self._tail
+        if self.alpha == 1.0:
+            return -np.log(remaining) / mass
+        power = 1.0 - 1.0 / self.alpha
+        return -np.expm1(power * np.log(remaining)) / (mass * power)
 
 
 class Weibull(QuantileMeasure):

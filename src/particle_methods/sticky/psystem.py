@@ -50,6 +50,11 @@ class PSystem:
         """kappa / (2 nu asinh(kappa/2)): the largest characteristic speed."""
         return self.kappa / (2.0 * self.nu * self.a)
 
+    @property
+    def speed_lipschitz(self) -> float:
+        """L_LC of assumption (LC): the largest |d lambda^+- / d w^+-|, A a max(sinh/cosh^2) = kappa/(4 nu)."""
+        return self.kappa / (4.0 * self.nu)
+
     def _volume(self, u):
         return in_interval("specific volume u", u, 0.0, self.nu)
 

@@ -1,0 +1,62 @@
+"""Section 5.1.1 and 5.2.1: the cost of the compiled kernels against the problem size.
+
+Each size is timed ``repeats`` times and the best time kept (the least disturbed by the machine);
+the rule runs alone on the cores it asks for. The kernels are called directly, past the input
+checks of the public functions, so that the time measured is the algorithm's.
+"""
+
+import time
+
+import numpy as np
+
+from particle_methods.sticky.cases import psystem_initial_configuration
+from particle_methods.sticky.mspd import _ranks, mspd_positions
+from particle_methods.sticky.psystem import PSystem
+from particle_methods.sticky.spd import _hull_positions
+from particle_methods.workflow import logged, progress, save_results
+
+
+def best_time(function, args, repeats):
+    function(*args)  # compile, fill caches
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        function(*args)
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def run(p, output):
+    rng = np.random.default_rng(0)
+    repeats = p["repeats"]
+    hull = []
+    for n in p["hull_n"]:
+        x = np.sort(rng.normal(size=n))
+        v = rng.normal(size=n)
+        out = np.empty(n)
+        hull.append(best_time(_hull_positions, (x, v, 1.0, out), repeats))
+        progress(f"hull pass, n = {n}: {hull[-1]:.3g} s")
+    ranks = []
+    for n in p["rank_n"]:
+        x = np.sort(rng.normal(size=(2, n)), axis=1)
+        ranks.append(best_time(_ranks, (x,), repeats))
+        progress(f"rank step (d = 2), n = {n}: {ranks[-1]:.3g} s")
+    system = PSystem()
+    tspd = []
+    for n in p["tspd_n"]:
+        x0 = psystem_initial_configuration("rarefaction", 0.1, n)
+        tspd.append(best_time(mspd_positions, (x0, system, 0.01, p["tspd_steps"]), repeats))
+        progress(f"iterated TSPD, n = {n}, {p['tspd_steps']} steps: {tspd[-1]:.3g} s")
+    steps = []
+    x0 = psystem_initial_configuration("rarefaction", 0.1, p["steps_n"])
+    for count in p["steps_values"]:
+        steps.append(best_time(mspd_positions, (x0, system, 0.001, count), repeats))
+        progress(f"iterated TSPD, n = {p['steps_n']}, {count} steps: {steps[-1]:.3g} s")
+    save_results(output, hull_n=np.asarray(p["hull_n"]), hull_times=np.array(hull),
+                 rank_n=np.asarray(p["rank_n"]), rank_times=np.array(ranks),
+                 tspd_n=np.asarray(p["tspd_n"]), tspd_times=np.array(tspd), tspd_steps=p["tspd_steps"],
+                 steps_values=np.asarray(p["steps_values"]), steps_times=np.array(steps), steps_n=p["steps_n"])
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821

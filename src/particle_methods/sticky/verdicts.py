@@ -1,0 +1,366 @@
+"""Every claim of the sticky-particle paper, measured from cached results.
+
+Each function takes the arrays a data rule saved and the rules written in the config (windows,
+bands, tolerances), and returns claims; the tests feed them plausible wrong outcomes to show each
+verdict can fail. Tolerances follow from what a statement means: identities that hold in exact
+arithmetic get :data:`ROUNDING`; rates are decided on a window of the finest resolutions named in
+the config, and every fit is recorded with its pairwise and windowed slopes.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import claims as c
+from ..convergence import pairwise_orders
+from ..rates import Recorder, fit, order
+from ..steady import holds_from
+from .psystem import MINUS, PLUS
+from .spd import cluster_sizes
+
+PAPER = "sticky"
+ROUNDING = 1e-9
+
+
+def claim(compare, name, kind, source, figure, text, *args, **kwargs):
+    return compare(f"{PAPER}.{name}", PAPER, figure, text, *args, kind=kind, source=source, **kwargs)
+
+
+def _farthest_from_centre(values, band):
+    """The value farthest from the middle of ``band`` (the one that decides a band verdict)."""
+    values = np.asarray(values, dtype=float)
+    if values.size == 0:
+        return math.nan
+    return float(values[np.argmax(np.abs(values - 0.5 * (band[0] + band[1])))])
+
+
+def burgers_claims(d, rates: Recorder, window: int):
+    """Figure 2 (d): order 1/n for every t, curves ordered by t; (2.1) exact for even n."""
+    slopes = [rates.add(order(f"{PAPER}.fig2d.order", "n", d["error_n"], row, window)) * np.log(2)
+              for row in d["errors"]]
+    worst = max(slopes, key=lambda s: abs(s + np.log(2)))
+    ratios = d["errors"][1:] / d["errors"][:-1]
+    even = d["error_n"] % 2 == 0
+    return [
+        claim(c.close_to, "fig2d.order", "paper", "Figure 2 (d), section 5.1.2", "2d",
+              f"log L1 error against p (n = 2^p) has slope -log 2 for every t (order 1/n), fitted on the {window} "
+              "largest n; worst line", -np.log(2), worst, 0.02),
+        claim(c.at_least, "fig2d.ordering", "paper", "Figure 2 (d) caption", "2d",
+              "higher curves for larger t: smallest ratio error(t_next)/error(t) over all n", 1.0 + ROUNDING,
+              float(ratios.min()), published="> 1"),
+        claim(c.at_most, "fig2d.no_initial_error", "check", "(2.1) with two atoms, section 5.1.2", "2d",
+              "(2.1) puts n/2 particles on each atom for even n, so W1(m, mu_n) = 0: largest value over even n",
+              ROUNDING, float(np.abs(d["initial_errors"][even]).max()), published="0"),
+    ]
+
+
+def plateau_length(errors) -> int:
+    """Number of leading entries equal to the first one (relative gap <= ROUNDING)."""
+    errors = np.asarray(errors, dtype=float)
+    equal = np.abs(errors / errors[0] - 1.0) <= ROUNDING
+    return int(np.argmin(equal)) if not equal.all() else errors.size
+
+
+def concave_claims(d, rates: Recorder, window: int, band):
+    """Figure 3 (d): a plateau, then a decay at the rate log(n)/n of the initial discretisation."""
+    errors, clusters, n = d["errors"], d["clusters"], d["error_n"].astype(float)
+    moving = d["error_times"] > 0
+    shapes, critical = [], []
+    for row in errors[moving]:
+        length = plateau_length(row)
+        critical.append(n[length - 1])
+        shapes.append(bool(np.all(np.diff(row[length - 1:]) < 0)))
+    plotted = []
+    for row, count in zip(errors, clusters):
+        if np.all(count[-window:] > 1):  # the window lies past the plateau (not every particle in the shock)
+            plotted.append(rates.add(fit(f"{PAPER}.fig3d.decay_plotted", "n error against log n", "n", n,
+                                         np.log(n), n * row, window)))
+    rate_n = d["rate_n"].astype(float)
+    asymptotic = [rates.add(fit(f"{PAPER}.fig3d.decay_asymptotic", "n error against log n", "n", rate_n,
+                                np.log(rate_n), rate_n * row, window)) for row in d["rate_errors"]]
+    ratios = errors[1:] / errors[:-1]
+    growth = np.diff(critical)
+    lower, upper = band
+    return [
+        claim(c.at_most, "fig3d.plateau_then_decay", "paper", "Figure 3 (d), section 5.1.3", "3d",
+              f"for each t > 0 the error is constant in n up to a critical n, then strictly decreasing: number of "
+              f"the {len(shapes)} curves of another shape", 0.0, float(len(shapes) - sum(shapes)), published="0"),
+        claim(c.at_least, "fig3d.critical_n_grows", "paper", "section 5.1.3", "3d",
+              "the larger t, the more particles it takes to leave the plateau: smallest change of the critical n "
+              f"between consecutive t > 0 (critical n from {critical[0]:g} to {critical[-1]:g})", 0.0,
+              float(growth.min()) if growth.size else math.nan, published="non-decreasing"),
+        claim(c.between, "fig3d.decay_plotted", "paper", "Figure 3 (d), section 5.1.3", "3d",
+              f"past the plateau the error decays like log(n)/n, in the plotted range: slope of n error against "
+              f"log n on the {window} largest plotted n, for the {len(plotted)} times whose window is past the "
+              "plateau; the value farthest from the band's centre", lower, upper, _farthest_from_centre(plotted, band),
+              published="log(n)/n"),
+        claim(c.between, "fig3d.decay_asymptotic", "paper", "Figure 3 (d), section 5.1.3", "3d",
+              f"the decay rate is that of the initial discretisation, log(n)/n: slope of n error against log n for "
+              f"n = {', '.join(f'2^{int(np.log2(v))}' for v in rate_n)}, every t; the value farthest from the band's "
+              "centre", lower, upper, _farthest_from_centre(asymptotic, band), published="log(n)/n"),
+        claim(c.at_most, "fig3d.ordering", "paper", "Figure 3 (d) caption", "3d",
+              "higher curves for smaller t: largest ratio error(t_next)/error(t) over all n", 1.0 + ROUNDING,
+              float(ratios.max()), published="<= 1"),
+    ]
+
+
+def theorem31_claims(burgers, concave):
+    """Theorem 3.1: error <= W1(m, mu_0) + t L_LC / n, for t > 0 (at t = 0 it is an equality)."""
+    ratios = []
+    for d in (burgers, concave):
+        moving = d["error_times"] > 0
+        t = d["error_times"][moving][:, None]
+        bound = d["initial_errors"][None, :] + t * d["flux_lipschitz"] / d["error_n"][None, :]
+        ratios.append((d["errors"][moving] / bound).max())
+    return [claim(c.at_most, "thm31.bound", "paper", "Theorem 3.1", "2d, 3d",
+                  "error <= W1(m, mu_0) + t L_LC / n: largest ratio error/bound over t > 0 in Figures 2 (d) and 3 (d)",
+                  1.0 + ROUNDING, float(max(ratios)), published="<= 1")]
+
+
+def remark33_claims(d, rates: Recorder, window: int, order_min: float, convex_tolerance: float):
+    """Remark 3.3: t/(4n) from one Dirac mass (Burgers); for the concave flux the SPD is the entropy
+    solution of the discretised data, so a Godunov solution from the same data converges to it."""
+    t, n = d["dirac_times"][:, None], d["dirac_n"][None, :]
+    dirac_gap = np.abs(d["dirac_errors"] / (t / (4 * n)) - 1.0).max()
+    h = 1.0 / d["cells_per_unit"].astype(float)
+    orders = [rates.add(order(f"{PAPER}.remark33.concave", "dx", h[::-1], row[::-1], window))
+              for per_n in d["distances"] for row in per_n]
+    moving = d["godunov_times"] > 0
+    contraction = (d["total_errors"][:, moving] / d["initial_errors"][:, None]).max()
+    expected = float(d["convex_t"]) / (4 * int(d["convex_n"]))
+    refined = pairwise_orders(1.0 / d["refined_cells"].astype(float), d["refined_distances"])
+    return [
+        claim(c.at_most, "remark33.dirac", "paper", "Remark 3.3", "Remark 3.3",
+              "Burgers from delta_0: error exactly t/(4n); largest relative gap", ROUNDING, float(dirac_gap),
+              published="t/(4n)"),
+        claim(c.at_least, "remark33.concave", "paper", "Remark 3.3", "Remark 3.3",
+              f"concave flux: the SPD is the entropy solution of the discretised data. L1 distance between a "
+              f"Godunov solution (from the same data) and the SPD, against dx: it decreases to 0 at the scheme's "
+              f"order 1, not to a plateau; smallest order on the {window} finest grids over n = "
+              f"{', '.join(map(str, d['godunov_n']))} and t = {', '.join(f'{v:g}' for v in d['godunov_times'])}",
+              order_min, float(min(orders)), published="distance 0"),
+        claim(c.at_least, "remark33.refinement", "check", "Remark 3.3 (diagnostic of our measure)", "Remark 3.3",
+              f"n = {int(d['refined_n'])}, t = {float(d['refined_t']):g} on finer grids "
+              f"({', '.join(map(str, d['refined_cells']))} cells per unit): the pairwise order rises towards the "
+              f"scheme's order ({', '.join(f'{o:.2f}' for o in refined)}); rise from the first to the last pair",
+              0.0, float(refined[-1] - refined[0]), published="(our diagnostic)"),
+        claim(c.relatively_close_to, "remark33.godunov_convex", "check", "Remark 3.3 (Burgers example)",
+              "Remark 3.3",
+              f"the same Godunov measure sees a non-entropic SPD: Burgers from delta_0, n = {int(d['convex_n'])}, "
+              f"t = {float(d['convex_t']):g}: distance on the finest grid against t/(4n)", expected,
+              float(d["convex_distances"][-1]), convex_tolerance),
+        claim(c.at_most, "remark33.contraction", "derived", "Remark 3.3 with the L1 stability of Theorem 1.1",
+              "Remark 3.3",
+              "concave flux: the SPD error never exceeds the initial discretisation error; largest ratio over t > 0",
+              1.0 + ROUNDING, float(contraction), published="<= 1"),
+    ]
+
+
+def lemma21_claims(d, rates: Recorder, window: int, weibull_band, growth_ratio: float):
+    """Lemma 2.1 (i)-(iv) and the two tail examples at the end of section 2."""
+    n_values = d["n_values"].astype(float)
+    n_all = np.concatenate([d["n_values"], d["odd_n"]]).astype(float)
+    compact = [key[: -len("_support")] for key in d if key.endswith("_support")]
+    bound_ratio = max((2 * n_all * np.concatenate([d[m], d[f"{m}_odd"]]) / d[f"{m}_support"]).max() for m in compact)
+    sqrt_names = [key[: -len("_sqrt_variance")] for key in d if key.endswith("_sqrt_variance")]
+    ratio_ii = max((d[m] * np.sqrt(n_values) / d[f"{m}_sqrt_variance"]).max() for m in sqrt_names)
+    out = [
+        claim(c.at_most, "lemma21.iii", "paper", "Lemma 2.1 (iii)", "Lemma 2.1",
+              f"W1(m, mu_n) <= (b - a)/(2n) for m on [a, b]; largest ratio over {', '.join(compact)}, even and odd n",
+              1.0 + ROUNDING, float(bound_ratio)),
+        claim(c.at_most, "lemma21.ii", "paper", "Lemma 2.1 (ii)", "Lemma 2.1",
+              f"W1(m, mu_n) <= n^(-1/2) int sqrt(F(1 - F)); largest ratio over {len(sqrt_names)} measures",
+              1.0 + 1e-6, float(ratio_ii)),
+        claim(c.at_most, "lemma21.iv.uniform", "check", "Lemma 2.1 (iv)", "Lemma 2.1",
+              "uniform law on [0, 1]: n W1 = 1/4 exactly for every n (an identity, a check of the W1 computation); "
+              "largest relative gap", ROUNDING, float(np.abs(n_values * d["uniform"] / 0.25 - 1.0).max()),
+              published="1/4"),
+    ]
+    for name in [m for m in compact if m.startswith("exponential_")]:
+        limit = float(d[f"{name}_support"]) / 4
+        out.append(claim(c.relatively_close_to, f"lemma21.iv.{name}", "paper", "Lemma 2.1 (iv)", "Lemma 2.1",
+                         f"n W1(m, mu_n) -> (b - a)/4 for a positive, non-uniform density (exp(-x) on [0, "
+                         f"{d[f'{name}_support']:g}]), at n = {d['n_values'][-1]}", limit,
+                         float(n_values[-1] * d[name][-1]), 1e-3))
+    for alpha in d["pareto_alpha"]:
+        slope = rates.add(order(f"{PAPER}.lemma21.pareto_{alpha:g}", "n", n_values, d[f"pareto_{alpha:g}"], window))
+        out.append(claim(c.close_to, f"lemma21.pareto_{alpha:g}", "paper", "section 2, first tail example",
+                         "section 2", f"F = 1 - x^-alpha, alpha = {alpha:g}: W1 = O(n^(-1 + 1/alpha)); slope of log W1 "
+                         f"against log n on the {window} largest n", -1 + 1 / alpha, slope, 0.05))
+    lower, upper = weibull_band
+    for alpha in d["weibull_alpha"]:
+        slope = rates.add(fit(f"{PAPER}.lemma21.weibull_{alpha:g}", f"n W1 against (log n)^{1 / alpha:g}", "n",
+                              n_values, np.log(n_values) ** (1 / alpha), n_values * d[f"weibull_{alpha:g}"], window))
+        out.append(claim(c.between, f"lemma21.weibull_{alpha:g}", "paper", "section 2, second tail example",
+                         "section 2", f"F = 1 - exp(-x^alpha), alpha = {alpha:g}: W1 of order (log n)^(1/alpha)/n: "
+                         f"slope of n W1 against (log n)^(1/alpha) on the {window} largest n, between the constants of "
+                         "the section's lower and upper bounds (0 for a 1/n error)", lower, upper, slope,
+                         published="(log n)^(1/alpha)/n"))
+    upper_values, heavy = d["heavy_upper"], d["heavy_errors"]
+    increments = np.diff(heavy) / np.diff(np.log10(upper_values))
+    out.append(claim(c.at_least, "lemma21.i.heavy_tail", "paper", "Lemma 2.1 (i), section 1.1.4", "Lemma 2.1",
+                     f"without a first moment W1(m, mu_n) is infinite: F = 1 - 1/x truncated to [1, R], n fixed, "
+                     f"R = {upper_values[0]:g}..{upper_values[-1]:g}: W1 grows from {heavy[0]:.3g} to {heavy[-1]:.3g}; "
+                     "growth per decade of R over the last decade against the first (a finite-moment tail shrinks it "
+                     "geometrically)", growth_ratio, float(increments[-1] / increments[0]), published="W1 = +inf"))
+    return out
+
+
+def tspd_claims(d, rates: Recorder, window: int, order_min: float, growth_max: float, share: float):
+    """Theorem 4.4 for the iterated TSPD: C Delta at fixed n, O(W1(m, mu_0) + t/n) at small Delta."""
+    out = []
+    times = ", ".join(f"{t:g}" for t in d["times"])
+    for c_index, case in enumerate(d["cases"]):
+        orders = [rates.add(order(f"{PAPER}.thm44.delta_order_{case}", "Delta", d["deltas"], row, window))
+                  for row in d["delta_errors"][c_index]]
+        n = d["n_values"].astype(float)
+        growth = [rates.add(fit(f"{PAPER}.thm44.n_bound_{case}", "log(error / bound) against log n", "n", n,
+                                np.log(n), np.log(row / bound), window))
+                  for row, bound in zip(d["n_errors"][c_index], d["bounds"][c_index])]
+        out += [
+            claim(c.at_least, f"thm44.delta_order_{case}", "paper", "Theorem 4.4 (the C Delta term)", "Theorem 4.4",
+                  f"{case} case, n = {int(d['delta_n'])} per type: the iterated TSPD is within C Delta of the MSPD; "
+                  f"order in Delta against Delta = {float(d['reference_delta']):g} on the {window} smallest Delta, "
+                  f"smallest over t = {times}", order_min, float(min(orders)), published="O(Delta)"),
+            claim(c.at_most, f"thm44.n_bound_{case}", "paper", "Theorem 4.4 (first term)", "Theorem 4.4",
+                  f"{case} case, Delta = {float(d['n_delta']):g}: error against n = {int(d['reference_n'])} stays "
+                  f"O(W1(m, mu_0) + t d L_LC / n): slope of log(error / that bound) against log n on the {window} "
+                  f"largest n, largest over t = {times} (1/2 for an n^(-1/2) error)", growth_max, float(max(growth)),
+                  published="O(W1 + t/n)"),
+        ]
+    gaps = max((d["delta_reference_gap"] / d["delta_errors"].min(axis=2)).max(),
+               (d["n_reference_gap"] / d["n_errors"].min(axis=2)).max())
+    out.append(claim(c.at_most, "thm44.references", "check", "Theorem 4.4 (our references)", "Theorem 4.4",
+                     "the references' own error is small: distance to a run with half their resolution over the "
+                     "smallest error measured against them, largest over cases and t", share, float(gaps)))
+    return out
+
+
+def breakup(path, times):
+    """Figure 6: the + cluster's first split and the crossing just before it.
+
+    Returns (time of the split, c0, c1): the - particles ranked c0 + 1 .. c1 (counted from the
+    right, the order in which they cross) passed the + cluster in the last step in which any
+    crossed before it split. - particles cross in clusters, so c1 - c0 may exceed 1.
+    """
+    split = np.flatnonzero(np.ptp(path[:, PLUS], axis=1) > 0)
+    if split.size == 0 or split[0] == 0:
+        return math.nan, math.nan, math.nan
+    crossed = np.array([np.sum(state[MINUS] > state[PLUS, 0]) for state in path[:split[0]]])
+    steps = np.flatnonzero(np.diff(crossed) > 0)
+    if steps.size == 0:
+        return float(times[split[0]]), 0.0, 0.0
+    return float(times[split[0]]), float(crossed[steps[-1]]), float(crossed[steps[-1] + 1])
+
+
+def rank_miss(path, times, rank: float) -> tuple[float, str]:
+    """Distance, in ranks, from ``rank`` to the - particles of the last crossing before the + cluster
+    split (0 when that crossing carried it), and a description of the crossing."""
+    n = path.shape[-1]
+    t_split, c0, c1 = breakup(path, times)
+    if math.isnan(t_split):
+        return math.inf, f"n = {n}: the + cluster never splits"
+    return max(c0 + 0.5 - rank, rank - c1 - 0.5, 0.0), f"n = {n}: ranks {c0 + 1:g}-{c1:g} crossed, split at t = " \
+        f"{t_split:.3g}"
+
+
+def plus_cluster_threshold(system, n: int) -> int:
+    """Rank of the - particle whose crossing breaks a single + cluster of n particles, from (1.8).
+
+    With k - particles still on its left (w- = k/n) the cluster's members get the velocities
+    n (P(j/n) - P((j-1)/n)); it stays one cluster while every prefix moves no faster to the left
+    than the whole (the SPD hull). Returns n - k + 1 for the smallest k at which it stays.
+    """
+    def holds(k):
+        levels = np.column_stack([np.full(n + 1, k / n), np.arange(n + 1) / n])
+        velocities = n * np.diff(system.speed_primitive(PLUS, levels))
+        prefix = np.cumsum(velocities) / np.arange(1, n + 1)
+        return bool(np.all(prefix[:-1] >= velocities.mean() - 1e-12 * np.abs(velocities).max()))
+
+    holding = [k for k in range(n + 1) if holds(k)]
+    return n - min(holding) + 1
+
+
+def largest_cluster(path, types=(MINUS, PLUS)) -> int:
+    return int(max(cluster_sizes(state[g]).max() for state in path for g in types))
+
+
+def psystem_claims(rarefaction, shocks, shock_fraction: float, system):
+    """Section 5.2.2, Figures 4-7: ordering, collisions, clusters and their break-up, end states."""
+    order_gap = max((r[:, PLUS] - r[:, MINUS]).max() for r in (rarefaction["trajectories"], rarefaction["field_path"]))
+    path, times = shocks["trajectories"], shocks["times"]
+    n = path.shape[-1]
+    median_miss, median_text = rank_miss(path, times, (n + 1) / 2)
+    thresholds = {p.shape[-1]: plus_cluster_threshold(system, p.shape[-1]) for p in (path, shocks["field_path"])}
+    threshold_misses = [rank_miss(p, times, thresholds[p.shape[-1]]) for p in (path, shocks["field_path"])]
+    field_median = rank_miss(shocks["field_path"], times, (shocks["field_path"].shape[-1] + 1) / 2)[0]
+    recovered = [np.all(p[:, PLUS] <= p[:, MINUS], axis=1) for p in (path, shocks["field_path"])]
+    recovery = max(holds_from(times, r) for r in recovered)
+    field = shocks["field_path"]
+    m = field.shape[-1]
+    before_end = times < shocks["field_end"] if math.isfinite(shocks["field_end"]) else np.ones(times.size, bool)
+    early = largest_cluster(field[before_end]) / m
+    max_time = float(shocks["max_time"])
+    return [
+        claim(c.at_most, "fig4.order_preserved", "paper", "section 5.2.2, Figure 4", "4",
+              "w0+ >= w0- case: w+ >= w- at all times, i.e. x+_k <= x-_k; largest x+_k - x-_k over both runs",
+              0.0, float(order_gap), published="w+ >= w-"),
+        claim(c.at_most, "fig4.no_same_type_collision", "paper", "section 5.2.2, Figure 4", "4",
+              f"particles of the same type never collide ({rarefaction['trajectories'].shape[-1]} per type): largest "
+              "same-type cluster over all steps", 1.0, float(largest_cluster(rarefaction["trajectories"])),
+              published="no collision"),
+        claim(c.at_most, "fig5.no_shock", "paper", "section 5.2.2, Figure 5", "5",
+              f"w- and w+ are rarefaction waves without any shock ({rarefaction['field_path'].shape[-1]} per type): "
+              "largest same-type cluster over all steps", 1.0, float(largest_cluster(rarefaction["field_path"])),
+              published="no shock"),
+        claim(c.at_most, "fig6.breakup_at_median", "paper", "Figure 6 caption", "6",
+              f"the + particles stay one cluster until the median - particle crosses it, which breaks it up "
+              f"({median_text}): distance in ranks from the median to the last crossing before the split",
+              0.0, median_miss, published="the median"),
+        claim(c.at_most, "fig6.breakup_threshold", "derived", "velocities (1.8), section 5.2.2", "6",
+              "the + cluster splits after the crossing of the - particle of rank "
+              f"{', '.join(map(str, thresholds.values()))} "
+              f"(n = {', '.join(map(str, thresholds))}), where the SPD of its members stops holding it together: "
+              f"{'; '.join(text for _, text in threshold_misses)}; distance in ranks, largest (the median misses "
+              f"by {field_median:g} at n = {shocks['field_path'].shape[-1]})", 0.0,
+              max(miss for miss, _ in threshold_misses), published="(our derivation)"),
+        claim(c.at_least, "fig6.minus_clusters_form", "paper", "section 5.2.2, Figure 6", "6",
+              f"particles of both types aggregate: largest - cluster ({n} per type)", 2.0,
+              float(largest_cluster(path, (MINUS,))), published="clusters"),
+        claim(c.at_most, "fig6.order_recovered", "paper", "section 5.2.2, Figure 6", "6",
+              f"after a finite time w+ >= w- again: time from which x+_k <= x-_k for every k to the end of the run "
+              f"(both runs; the run may go on to t = {max_time:g})", max_time, recovery, published="finite"),
+        claim(c.at_most, "fig6.drift_apart", "paper", "section 5.2.2, Figure 6", "6",
+              f"then the particles drift away from each other: time from which w+ >= w- holds and no cluster is left "
+              f"({n} per type; at most t = {max_time:g})", max_time, float(shocks["trajectories_end"]),
+              published="finite"),
+        claim(c.at_least, "fig7.early_shocks", "paper", "section 5.2.2, Figure 7", "7",
+              f"shocks at short times ({m} per type): largest cluster, as a fraction of a type's particles, before "
+              f"the end state (a shock holds at least {shock_fraction:g})", shock_fraction, early,
+              published="shocks"),
+        claim(c.at_most, "fig7.late_rarefactions", "paper", "section 5.2.2, Figure 7", "7",
+              f"rarefaction waves at longer times ({m} per type): time from which no cluster is left and w+ >= w- "
+              f"(at most t = {max_time:g})", max_time, float(shocks["field_end"]), published="finite"),
+    ]
+
+
+def cost_claims(d, rates: Recorder, window: int, band):
+    """Sections 5.1.1 and 5.2.1: linear cost in n (hull, ranks, iterated TSPD) and in the steps L."""
+    lower, upper = band
+    rows = (("hull", "hull_n", "hull_times", "n", "section 5.1.1", "the hull pass (SPD at one time) is O(n)"),
+            ("rank_step", "rank_n", "rank_times", "n", "section 5.2.1", "the rank step (velocities (1.8), d = 2) "
+             "is O(n d^2), linear in n"),
+            ("tspd_n", "tspd_n", "tspd_times", "n", "section 5.2", f"the iterated TSPD is O(n L): linear in n at "
+             f"L = {int(d['tspd_steps'])}"),
+            ("tspd_steps", "steps_values", "steps_times", "L", "section 5.2", f"the iterated TSPD is O(n L): linear "
+             f"in L at n = {int(d['steps_n'])}"))
+    out = []
+    for name, sizes, seconds, resolution, source, text in rows:
+        exponent = -rates.add(order(f"{PAPER}.cost.{name}", resolution, 1.0 / d[sizes].astype(float), d[seconds],
+                                    window))
+        out.append(claim(c.between, f"cost.{name}", "paper", source, source,
+                         f"{text}: exponent of the best time against {resolution} on the {window} largest sizes "
+                         f"({d[sizes][-window]}..{d[sizes][-1]})", lower, upper, exponent, published="linear"))
+    return out
