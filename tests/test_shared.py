@@ -24,32 +24,101 @@ def test_fit_order_rejects_bad_input():
         fit_order([1.0, 2.0, 3.0], [1.0, 2.0])
 
 
-def test_claim_verdicts():
-    assert c.close_to("x.a", "x", "1", "t", 1.0, 1.05, 0.1).status == "pass"
-    assert c.close_to("x.a", "x", "1", "t", 1.0, 1.2, 0.1).status == "fail"
-    assert c.close_to("x.a", "x", "1", "t", 1.0, float("nan"), 0.1).status == "fail"
-    assert c.relatively_close_to("x.a", "x", "1", "t", 2.0, 2.1, 0.1).status == "pass"
-    assert c.at_most("x.a", "x", "1", "t", 1.0, 1.01).status == "fail"
-    assert c.at_least("x.a", "x", "1", "t", 1.0, 1.01).status == "pass"
+K = {"kind": "paper", "source": "Figure 1"}
+
+
+def test_claim_verdicts_turn_to_fail_on_a_wrong_outcome():
+    assert c.close_to("x.a", "x", "1", "t", 1.0, 1.05, 0.1, **K).status == "pass"
+    assert c.close_to("x.a", "x", "1", "t", 1.0, 1.2, 0.1, **K).status == "fail"
+    assert c.close_to("x.a", "x", "1", "t", 1.0, float("nan"), 0.1, **K).status == "fail"
+    assert c.relatively_close_to("x.a", "x", "1", "t", 2.0, 2.1, 0.1, **K).status == "pass"
+    assert c.relatively_close_to("x.a", "x", "1", "t", 2.0, 2.3, 0.1, **K).status == "fail"
+    assert c.at_most("x.a", "x", "1", "t", 1.0, 0.99, **K).status == "pass"
+    assert c.at_most("x.a", "x", "1", "t", 1.0, 1.01, **K).status == "fail"
+    assert c.at_least("x.a", "x", "1", "t", 1.0, 1.01, **K).status == "pass"
+    assert c.at_least("x.a", "x", "1", "t", 1.0, 0.99, **K).status == "fail"
+    assert c.between("x.a", "x", "1", "t", 0.25, 1.0, 0.5, **K).status == "pass"
+    for wrong in (0.0, 1.5, float("inf"), float("nan")):
+        assert c.between("x.a", "x", "1", "t", 0.25, 1.0, wrong, **K).status == "fail"
     with pytest.raises(ValueError, match="must start with the paper id"):
-        c.close_to("y.a", "x", "1", "t", 1.0, 1.0, 0.1)
+        c.close_to("y.a", "x", "1", "t", 1.0, 1.0, 0.1, **K)
+    with pytest.raises(ValueError, match="kind"):
+        c.close_to("x.a", "x", "1", "t", 1.0, 1.0, 0.1, kind="claim", source="Figure 1")
+    with pytest.raises(ValueError, match="needs a source"):
+        c.close_to("x.a", "x", "1", "t", 1.0, 1.0, 0.1, kind="check", source=" ")
+    with pytest.raises(ValueError, match="lower"):
+        c.between("x.a", "x", "1", "t", 1.0, 0.0, 0.5, **K)
 
 
-def test_claims_round_trip_merge_and_verify(tmp_path, capsys):
-    good = [c.close_to("x.a", "x", "1", "slope, with a | pipe", -1.0, -0.98, 0.05)]
-    bad = [c.at_most("y.b", "y", "2", "bound", 1.0, 2.0)]
+def test_summary_counts_each_kind_apart():
+    rows = [c.at_most("x.a", "x", "1", "t", 1.0, 0.5, **K), c.at_most("x.b", "x", "1", "t", 1.0, 2.0, **K),
+            c.at_most("x.c", "x", "1", "t", 1.0, 0.5, kind="check", source="ours")]
+    assert c.counts(rows) == {"paper": (1, 2), "check": (1, 1)}
+    assert c.summary_line(rows) == "Paper claims reproduced: 1 of 2. Also checks passing: 1 of 1."
+
+
+@pytest.fixture
+def tables(tmp_path):
+    good = [c.close_to("x.a", "x", "1", "slope, with a | pipe", -1.0, -0.98, 0.05, **K)]
+    bad = [c.at_most("y.b", "y", "2", "bound", 1.0, 2.0, kind="derived", source="our (3.1)")]
     c.write_claims(tmp_path / "x.csv", good)
     c.write_claims(tmp_path / "y.csv", bad)
     assert c.read_claims(tmp_path / "x.csv") == good
-    merged = c.merge([tmp_path / "x.csv", tmp_path / "y.csv"], tmp_path / "all.csv", tmp_path / "all.md")
-    assert [claim.id for claim in merged] == ["x.a", "y.b"]
-    markdown = (tmp_path / "all.md").read_text()
-    assert "2 claims checked: 1 pass, 1 fail" in markdown and "\\|" in markdown
-    assert c.main(["verify", str(tmp_path / "x.csv")]) == 0
-    assert c.main(["verify", str(tmp_path / "all.csv")]) == 1
-    assert "FAIL y.b" in capsys.readouterr().out
+    c.merge([tmp_path / "x.csv", tmp_path / "y.csv"], tmp_path / "all.csv", tmp_path / "all.md")
+    return tmp_path
+
+
+def test_claims_round_trip_and_merge(tables):
+    assert [claim.id for claim in c.read_claims(tables / "all.csv")] == ["x.a", "y.b"]
+    markdown = (tables / "all.md").read_text()
+    assert "Paper claims reproduced: 1 of 1. Also derived claims passing: 0 of 1." in markdown
+    assert "\\|" in markdown and "| paper | Figure 1 |" in markdown
     with pytest.raises(ValueError, match="duplicate"):
-        c.write_claims(tmp_path / "z.csv", good + good)
+        c.write_claims(tables / "z.csv", c.read_claims(tables / "x.csv") * 2)
+
+
+def write_expected(path, text):
+    path.write_text(text)
+    return path
+
+
+def test_verify_passes_when_every_verdict_is_as_expected(tables, capsys):
+    expected = write_expected(tables / "v.yaml", "pass: [x.a]\nfail:\n  y.b: the bound is loose\n")
+    assert c.main(["verify", str(tables / "all.csv"), "--expected", str(expected)]) == 0
+    out = capsys.readouterr().out
+    assert "pass x.a (Figure 1): published -1, measured -0.98" in out and "y.b" not in out.split("\n")[1]
+
+
+@pytest.mark.parametrize("text, message", [
+    ("pass: [x.a, y.b]\n", "CHANGED y.b: expected pass, got fail"),  # a verdict changed
+    ("pass: []\nfail: {x.a: once failed, y.b: loose}\n", "CHANGED x.a: expected fail (once failed), got pass"),
+    ("pass: [x.a]\nfail: {y.b: loose, z.c: gone}\n", "MISSING z.c"),  # an expected claim is missing
+    ("pass: [x.a]\n", "NEW y.b"),  # a claim without an expected verdict
+])
+def test_verify_fails_on_a_changed_missing_or_unexpected_verdict(tables, capsys, text, message):
+    expected = write_expected(tables / "v.yaml", text)
+    assert c.verify(tables / "all.csv", expected) == 1
+    assert message in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("text, message", [
+    ("pass: [x.a]\nfail: {x.a: twice}\n", "listed twice"),
+    ("pass: [x.a, x.a]\n", "listed twice"),
+    ("fail: {y.b: ''}\n", "one-line reason"),
+    ("passing: [x.a]\n", "need the keys"),
+    ("pass: x.a\n", "must be a list"),
+])
+def test_expected_verdicts_file_is_checked(tmp_path, text, message):
+    with pytest.raises(ValueError, match=message):
+        c.read_verdicts(write_expected(tmp_path / "v.yaml", text))
+
+
+def test_committed_verdict_files_cover_the_same_claims():
+    from pathlib import Path
+
+    config = Path(__file__).resolve().parents[1] / "config"
+    full, quick = (c.read_verdicts(config / name) for name in ("verdicts.yaml", "verdicts-quick.yaml"))
+    assert set(full) == set(quick)
 
 
 def test_validation_messages_name_the_parameter():
@@ -94,3 +163,60 @@ def test_an_interrupted_write_leaves_the_previous_result_intact(tmp_path, monkey
         workflow.save_results(path, x=np.arange(5.0))
     np.testing.assert_array_equal(workflow.load_results(path)["x"], np.arange(3.0))
     assert [p.name for p in tmp_path.iterdir()] == ["result.npz"]
+
+
+def test_rate_tables_show_every_window_and_decide_on_the_finest():
+    from particle_methods.rates import Recorder, order
+
+    n = np.array([10.0, 100.0, 1000.0, 10000.0])
+    errors = np.array([1.0, 0.3, 1e-3, 1e-4])  # pre-asymptotic, then order 1
+    rate = order("x.a", "n", n, errors, window=2)
+    assert rate.slope == pytest.approx(-1.0)
+    np.testing.assert_allclose(rate.pairwise, np.diff(np.log(errors)) / np.diff(np.log(n)))
+    assert rate.slopes[0][3] == pytest.approx(fit_order(n, errors))
+    assert all(rate.slopes[i][j] is None for i in range(4) for j in range(i + 1))
+    logged = []
+    assert Recorder(logged.append).add(rate) == rate.slope and "*" in logged[0]
+    with pytest.raises(ValueError, match="window must not exceed"):
+        order("x.a", "n", n, errors, window=5)
+    with pytest.raises(ValueError, match="window must be"):
+        order("x.a", "n", n, errors, window=1)
+
+
+def test_log_factor_measure_separates_log_n_over_n_from_one_over_n(tmp_path):
+    from particle_methods.rates import fit, read_rates, write_rates
+
+    n = 2.0 ** np.arange(10, 16)
+    with_log = fit("x.a", "n error against log n", "n", n, np.log(n), n * (0.25 * np.log(n) + 2) / n, 3)
+    without = fit("x.a", "n error against log n", "n", n, np.log(n), n * (3.0 / n), 3)
+    assert with_log.slope == pytest.approx(0.25) and without.slope == pytest.approx(0.0, abs=1e-12)
+    # a fitted order cannot tell them apart: both are close to -1 on this range
+    assert abs(fit_order(n, (0.25 * np.log(n) + 2) / n) + 1) < 0.15
+    write_rates(tmp_path / "r.json", [with_log])
+    assert read_rates(tmp_path / "r.json") == [with_log]
+
+
+def test_steadiness_criteria():
+    from particle_methods.steady import first_steady_time, holds_from, run_until
+
+    times = np.linspace(0.0, 10.0, 101)
+    settling = np.exp(-times)[:, None] * np.ones((1, 3)) + 1.0
+    moving = (times[:, None] * np.ones((1, 3))) + 1.0  # still moving at the end of the record
+    assert first_steady_time(times, settling, window=1.0, tolerance=1e-3) == pytest.approx(7.6, abs=0.2)
+    assert first_steady_time(times, moving, window=1.0, tolerance=1e-3) == np.inf
+    assert holds_from(times, times >= 3.0) == 3.0
+    assert holds_from(times, (times >= 3.0) & (times < 9.0)) == np.inf  # fails again before the end
+    with pytest.raises(ValueError, match="increasing"):
+        first_steady_time(times[::-1], settling, 1.0, 1e-3)
+
+    def advance(state, chunk):  # decays to 0 at rate 1, ten records per unit time
+        steps = round(chunk * 10)
+        return state * np.exp(-0.1 * np.arange(steps + 1))[:, None]
+
+    def done(t, states):
+        return holds_from(t, np.abs(states).max(axis=1) < 1e-2)
+
+    t, states, reached = run_until(advance, np.ones(2), chunk=2.0, t_min=2.0, t_max=20.0, done=done)
+    assert reached == pytest.approx(4.7, abs=0.11) and t[-1] == pytest.approx(6.0) and states.shape == (61, 2)
+    t, _, reached = run_until(advance, np.ones(2), chunk=2.0, t_min=2.0, t_max=3.0, done=lambda *a: np.inf)
+    assert reached == np.inf and t[-1] == pytest.approx(3.0)

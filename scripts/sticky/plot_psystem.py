@@ -11,14 +11,18 @@ CASE_TITLES = {
 
 
 def trajectories(d, title, output):
-    fig, ax = new_figure(1, 1, width=7, height=5)
+    fig, ax = new_figure(1, 1, width=7, height=5.5)
     path = d["trajectories"]
     ax.plot(path[:, MINUS], d["times"], color="tab:blue", lw=0.9)
     ax.plot(path[:, PLUS], d["times"], color="tab:red", lw=0.9)
     ax.plot([], [], color="tab:blue", label="type - (w-)")
     ax.plot([], [], color="tab:red", label="type + (w+)")
+    if title.startswith("p-system with shocks"):
+        ax.axhline(d["trajectories_end"], color="k", ls="--", lw=0.8,
+                   label=f"w+ >= w- and no cluster from t = {float(d['trajectories_end']):.3g}")
     ax.set(xlabel="x", ylabel="t")
-    ax.legend(loc="upper center")
+    # Legend outside the axes, below them, so that it covers no trajectory.
+    fig.legend(loc="outside lower center", ncol=3)
     step = d["times"][1] - d["times"][0]
     ax.set_title(f"{title}: {path.shape[-1]} particles per type, iterated TSPD, Delta = {step:g}")
     save_figure(fig, output.pdf, output.png)
@@ -32,8 +36,12 @@ def fields(d, title, output):
         fig.colorbar(mesh, ax=ax, label=label.split(" ", 1)[1])
         ax.set(xlabel="x", ylabel="t")
         label_panel(ax, label)
+        if title.startswith("p-system with shocks"):
+            ax.axhline(d["field_end"], color="w", ls="--", lw=0.8)
     n = d["field_path"].shape[-1]
-    fig.suptitle(f"{title}: iterated TSPD with n = {n} per type, Delta = {d['times'][1] - d['times'][0]:g}")
+    end = (f"; dashed: w+ >= w- and no cluster from t = {float(d['field_end']):.3g}"
+           if title.startswith("p-system with shocks") else "")
+    fig.suptitle(f"{title}: iterated TSPD with n = {n} per type, Delta = {d['times'][1] - d['times'][0]:g}{end}")
     save_figure(fig, output.pdf, output.png)
 
 

@@ -27,15 +27,17 @@ def run(d, case, output):
     label_panel(ax, "(b) u(t, x) in the space-time plane (SPD)")
 
     ax = axes[1, 0]
-    colours = mpl.colormaps["viridis"](np.linspace(0, 0.9, d["profile_times"].size))
-    for t, particle, exact, colour in zip(d["profile_times"], d["profile_particle_cdf"],
-                                          d["profile_exact_cdf"], colours):
-        ax.step(d["field_x"], particle, where="post", color=colour, label=f"t = {t:g}")
+    # Times by colour (a colour bar, as in panel (d)) rather than a legend that would cover the curves.
+    times = d["profile_times"]
+    profile_norm = mpl.colors.Normalize(times.min(), times.max())
+    profile_cmap = mpl.colors.ListedColormap(mpl.colormaps["viridis"](np.linspace(0.0, 0.9, 256)))
+    for t, particle, exact in zip(times, d["profile_particle_cdf"], d["profile_exact_cdf"]):
+        ax.step(d["field_x"], particle, where="post", color=profile_cmap(profile_norm(t)))
         ax.plot(d["field_x"], exact, "--", color="k", lw=0.7)
-    ax.plot([], [], "--", color="k", lw=0.7, label="exact entropy solution")
+    fig.colorbar(mpl.cm.ScalarMappable(norm=profile_norm, cmap=profile_cmap), ax=ax,
+                 label=f"time t ({', '.join(f'{t:g}' for t in times[:3])}, ..., {times[-1]:g})")
     ax.set(xlabel="x", ylabel="u(t, x)")
-    ax.legend(ncol=2, loc="lower right")
-    label_panel(ax, "(c) profiles: SPD (steps) and exact (dashed)")
+    label_panel(ax, "(c) profiles: SPD (steps) and exact (black dashed)")
 
     ax = axes[1, 1]
     norm = mpl.colors.Normalize(d["error_times"].min(), d["error_times"].max())

@@ -33,6 +33,8 @@ class RateFit:
     values: tuple[float, ...]
     slopes: tuple[tuple[float | None, ...], ...]
     window: int
+    label: str = ""
+    """What distinguishes fits recorded for the same claim (a time, a case)."""
 
     @property
     def slope(self) -> float:
@@ -47,7 +49,8 @@ class RateFit:
     def table(self) -> str:
         """Plain text: one row per first point, one column per last point; * marks the deciding fit."""
         count = len(self.values)
-        head = f"{self.claim}: slope of {self.quantity}; rows: first {self.resolution}, columns: last"
+        head = (f"{self.claim}{f' ({self.label})' if self.label else ''}: slope of {self.quantity}; rows: first "
+                f"{self.resolution}, columns: last")
         lines = [head, " " * 12 + "".join(f"{value:>12.5g}" for value in self.values[1:])]
         first = count - self.window
         for i in range(count - 1):
@@ -77,7 +80,7 @@ def window_slopes(x, y) -> list[list[float | None]]:
     return slopes
 
 
-def fit(claim: str, quantity: str, resolution: str, values, x, y, window: int) -> RateFit:
+def fit(claim: str, quantity: str, resolution: str, values, x, y, window: int, label: str = "") -> RateFit:
     """Slopes of y against x (arrays over the resolutions ``values``, coarse to fine); the
     verdict uses the ``window`` finest points."""
     values = finite_array(resolution, values)
@@ -88,17 +91,17 @@ def fit(claim: str, quantity: str, resolution: str, values, x, y, window: int) -
     if values.shape != np.shape(x):
         raise ValueError(f"{resolution} must have one value per point")
     return RateFit(claim, quantity, resolution, tuple(float(v) for v in values),
-                   tuple(tuple(row) for row in slopes), window)
+                   tuple(tuple(row) for row in slopes), window, label)
 
 
-def order(claim: str, resolution: str, values, errors, window: int) -> RateFit:
+def order(claim: str, resolution: str, values, errors, window: int, label: str = "") -> RateFit:
     """Order of convergence: slope of log(error) against log(resolution)."""
     values = finite_array(resolution, values)
     errors = finite_array("errors", errors)
     if np.any(values <= 0) or np.any(errors <= 0):
         raise ValueError("resolutions and errors must be positive to take logarithms")
     return fit(claim, f"log error against log {resolution}", resolution, values, np.log(values), np.log(errors),
-               window)
+               window, label)
 
 
 class Recorder:

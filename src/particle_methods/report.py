@@ -1,6 +1,6 @@
 """LaTeX snippets for the replication report, written by the pipeline from its own outputs.
 
-``python -m particle_methods.report CLAIMS VERSIONS CONFIG OUTDIR`` writes:
+``write_snippets(claims, rates, versions, config, outdir)`` writes:
 
 - ``claims_<paper>.tex``: each paper's claims table (a longtable);
 - ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}``, ``\\tol{<claim id>}`` and
@@ -8,7 +8,10 @@
 - ``failures.tex``: the failing claims of every paper in one table;
 - ``parameters.tex``: ``\\param{<dotted config key>}`` for every configuration value;
 - ``configuration.tex``: the whole configuration of the run, one line per key (an appendix);
-- ``summary.tex``: ``\\claimcount{<paper>.pass}``, ``.fail`` and ``.all``;
+- ``summary.tex``: ``\\claimcount{<paper>.pass}``, ``.fail`` and ``.all`` over every kind, and
+  ``\\claimcount{<paper>.<kind>.pass}`` (``.fail``, ``.all``) per kind, with ``all`` for the
+  three papers together (``\\claimcount{all.paper.pass}`` is the headline);
+- ``rates.tex``: every fitted rate, its pairwise slopes and the fit over every window (an appendix);
 - ``versions.tex``: the software versions table (a tabular).
 
 The article (``paper/ms.tex``) types no parameter or measured value of its own: it uses these
@@ -24,7 +27,8 @@ from pathlib import Path
 
 import yaml
 
-from .claims import read_claims
+from .claims import KINDS, read_claims
+from .rates import read_rates
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
             "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}", "|": r"$|$", "<": r"$<$",
@@ -32,9 +36,9 @@ _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": 
 
 
 _CLAIM_TABLE_HEAD = (
-    "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.6cm}>{\\raggedright}p{1.15cm}>{\\raggedright}p{5.35cm}"
-    ">{\\raggedright}p{1.4cm}>{\\raggedright}p{1.5cm}>{\\raggedright}p{1.3cm}l@{}}\n"
-    "\\toprule id & figure & claim & published & measured & tolerance & status \\\\ \\midrule \\endhead\n"
+    "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.3cm}>{\\raggedright\\scriptsize}p{1.6cm}"
+    ">{\\raggedright}p{5.0cm}>{\\raggedright}p{1.35cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.25cm}l@{}}\n"
+    "\\toprule id & kind, source & claim & published & measured & tolerance & status \\\\ \\midrule \\endhead\n"
     "\\bottomrule \\endlastfoot\n"
 )
 _SYMBOLS = {"<=": r"\ensuremath{\le}", ">=": r"\ensuremath{\ge}", "+-": r"\ensuremath{\pm}"}
@@ -92,7 +96,8 @@ def _claims_table(claims) -> str:
     rows = []
     for claim in claims:
         status = r"\textbf{fail}" if claim.status == "fail" else "pass"
-        cells = [f"\\texttt{{{_breakable(claim.id)}}}", tex(claim.figure), tex(claim.claim), cell(claim.published),
+        cells = [f"\\texttt{{{_breakable(claim.id)}}}", f"\\textit{{{claim.kind}}}: {tex(claim.source)}",
+                 tex(claim.claim), cell(claim.published),
                  cell(claim.measured), cell(claim.tolerance), status]
         rows.append(" & ".join(cells) + " \\\\\n")
     return _CLAIM_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
@@ -102,7 +107,36 @@ def _define(family: str, key: str, value: str) -> str:
     return f"\\expandafter\\def\\csname {family}@{key}\\endcsname{{{value}}}\n"
 
 
-def write_snippets(claims_csv, versions_md, config, outdir) -> None:
+def _counts(prefix: str, rows) -> list[str]:
+    failed = sum(claim.status == "fail" for claim in rows)
+    return [_define("claimcount", f"{prefix}.all", str(len(rows))),
+            _define("claimcount", f"{prefix}.fail", str(failed)),
+            _define("claimcount", f"{prefix}.pass", str(len(rows) - failed))]
+
+
+def _rate_table(rate) -> str:
+    """One fitted rate: slopes over every window (rows: first point, columns: last point); the
+    deciding window in bold."""
+    count = len(rate.values)
+    first = count - rate.window
+    head = "".join(f" & {number(value)}" for value in rate.values[1:])
+    rows = []
+    for i in range(count - 1):
+        cells = []
+        for j in range(1, count):
+            value = rate.slopes[i][j]
+            text = "" if value is None else f"{value:.3f}"
+            cells.append(f"\\textbf{{{text}}}" if (i, j) == (first, count - 1) else text)
+        rows.append(f"{number(rate.values[i])} & " + " & ".join(cells) + " \\\\\n")
+    label = f" ({tex(rate.label)})" if rate.label else ""
+    return ("\\noindent\\texttt{" + _breakable(rate.claim) + "}" + label + ": slope of " + tex(rate.quantity)
+            + f"; window of the {rate.window} finest ({tex(rate.resolution)}).\\par\\nopagebreak\n"
+            + "{\\scriptsize\\begin{tabular}{@{}r" + "r" * (count - 1) + "@{}}\\toprule "
+            + f"first {tex(rate.resolution)} $\\backslash$ last" + head + " \\\\ \\midrule\n" + "".join(rows)
+            + "\\bottomrule\\end{tabular}}\\par\\medskip\n")
+
+
+def write_snippets(claims_csv, rates_json, versions_md, config, outdir) -> None:
     """Write every snippet to ``outdir``; ``config`` is the run's configuration (dict or YAML path)."""
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
@@ -116,16 +150,17 @@ def write_snippets(claims_csv, versions_md, config, outdir) -> None:
         measured.append(_define("status", claim.id, claim.status))
     (outdir / "measured.tex").write_text("".join(measured))
     summary = []
-    for paper in papers:
-        rows = [claim for claim in claims if claim.paper == paper]
-        failed = sum(claim.status == "fail" for claim in rows)
-        summary += [_define("claimcount", f"{paper}.all", str(len(rows))),
-                    _define("claimcount", f"{paper}.fail", str(failed)),
-                    _define("claimcount", f"{paper}.pass", str(len(rows) - failed))]
-        (outdir / f"claims_{paper}.tex").write_text(_claims_table(rows))
+    for paper in [*papers, "all"]:
+        rows = [claim for claim in claims if paper in (claim.paper, "all")]
+        summary += _counts(paper, rows)
+        for kind in KINDS:
+            summary += _counts(f"{paper}.{kind}", [claim for claim in rows if claim.kind == kind])
+        if paper != "all":
+            (outdir / f"claims_{paper}.tex").write_text(_claims_table(rows))
     failures = [claim for claim in claims if claim.status == "fail"]
     (outdir / "failures.tex").write_text(_claims_table(failures) if failures else "No claim fails.\n")
     (outdir / "summary.tex").write_text("".join(summary))
+    (outdir / "rates.tex").write_text("".join(_rate_table(rate) for rate in read_rates(rates_json)))
     if not isinstance(config, dict):
         config = yaml.safe_load(Path(config).read_text())
     parameters = list(_flatten(config))
@@ -142,11 +177,12 @@ def write_snippets(claims_csv, versions_md, config, outdir) -> None:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m particle_methods.report", description=__doc__)
     parser.add_argument("claims")
+    parser.add_argument("rates")
     parser.add_argument("versions")
     parser.add_argument("config")
     parser.add_argument("outdir")
     args = parser.parse_args(argv)
-    write_snippets(args.claims, args.versions, args.config, args.outdir)
+    write_snippets(args.claims, args.rates, args.versions, args.config, args.outdir)
     return 0
 
 

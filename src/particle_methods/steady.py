@@ -25,10 +25,12 @@ def relative_change(times, states, window: float) -> tuple[np.ndarray, np.ndarra
     """Times t (those with a recorded time at or before t - window) and
     max|s(t) - s(t')| / max|s(t)| with t' the latest recorded time <= t - window."""
     times = finite_array("times", times)
-    states = finite_array("states", states)
+    states = np.asarray(states, dtype=np.float64)
     window = positive("window", window)
-    if times.ndim != 1 or states.shape[0] != times.size:
+    if states.ndim < 1 or states.shape[0] != times.size:
         raise ValueError("states must have one row per recorded time")
+    if not np.all(np.isfinite(states)):
+        raise ValueError("states contains NaN or infinite values")
     if np.any(np.diff(times) <= 0):
         raise ValueError("times must be increasing")
     flat = states.reshape(times.size, -1)
@@ -66,9 +68,9 @@ def run_until(advance, state, chunk: float, t_min: float, t_max: float, done):
     """Advance ``state`` by chunks of ``chunk`` until ``done(times, states)`` returns a finite time
     and at least ``t_min`` is covered, or until ``t_max``.
 
-    ``advance(state, chunk)`` returns the states recorded over one chunk, the first being
-    ``state`` itself; ``done`` receives every recorded time and state so far. Returns
-    (times, states, time at which the criterion holds or ``inf``).
+    ``advance(state, chunk)`` returns the states recorded over one chunk at a uniform spacing
+    (the same for every chunk), the first being ``state`` itself; ``done`` receives every recorded
+    time and state so far. Returns (times, states, time at which the criterion holds or ``inf``).
     """
     chunk, t_max = positive("chunk", chunk), positive("t_max", t_max)
     if not 0 <= t_min <= t_max:

@@ -38,8 +38,8 @@ def _farthest_from_centre(values, band):
 
 def burgers_claims(d, rates: Recorder, window: int):
     """Figure 2 (d): order 1/n for every t, curves ordered by t; (2.1) exact for even n."""
-    slopes = [rates.add(order(f"{PAPER}.fig2d.order", "n", d["error_n"], row, window)) * np.log(2)
-              for row in d["errors"]]
+    slopes = [rates.add(order(f"{PAPER}.fig2d.order", "n", d["error_n"], row, window, f"t = {t:g}")) * np.log(2)
+              for t, row in zip(d["error_times"], d["errors"])]
     worst = max(slopes, key=lambda s: abs(s + np.log(2)))
     ratios = d["errors"][1:] / d["errors"][:-1]
     even = d["error_n"] % 2 == 0
@@ -73,13 +73,14 @@ def concave_claims(d, rates: Recorder, window: int, band):
         critical.append(n[length - 1])
         shapes.append(bool(np.all(np.diff(row[length - 1:]) < 0)))
     plotted = []
-    for row, count in zip(errors, clusters):
+    for t, row, count in zip(d["error_times"], errors, clusters):
         if np.all(count[-window:] > 1):  # the window lies past the plateau (not every particle in the shock)
             plotted.append(rates.add(fit(f"{PAPER}.fig3d.decay_plotted", "n error against log n", "n", n,
-                                         np.log(n), n * row, window)))
+                                         np.log(n), n * row, window, f"t = {t:g}")))
     rate_n = d["rate_n"].astype(float)
     asymptotic = [rates.add(fit(f"{PAPER}.fig3d.decay_asymptotic", "n error against log n", "n", rate_n,
-                                np.log(rate_n), rate_n * row, window)) for row in d["rate_errors"]]
+                                np.log(rate_n), rate_n * row, window, f"t = {t:g}"))
+                  for t, row in zip(d["error_times"], d["rate_errors"])]
     ratios = errors[1:] / errors[:-1]
     growth = np.diff(critical)
     lower, upper = band
@@ -125,8 +126,8 @@ def remark33_claims(d, rates: Recorder, window: int, order_min: float, convex_to
     t, n = d["dirac_times"][:, None], d["dirac_n"][None, :]
     dirac_gap = np.abs(d["dirac_errors"] / (t / (4 * n)) - 1.0).max()
     h = 1.0 / d["cells_per_unit"].astype(float)
-    orders = [rates.add(order(f"{PAPER}.remark33.concave", "dx", h[::-1], row[::-1], window))
-              for per_n in d["distances"] for row in per_n]
+    orders = [rates.add(order(f"{PAPER}.remark33.concave", "dx", h, row, window, f"n = {n_}, t = {t_:g}"))
+              for n_, per_n in zip(d["godunov_n"], d["distances"]) for t_, row in zip(d["godunov_times"], per_n)]
     moving = d["godunov_times"] > 0
     contraction = (d["total_errors"][:, moving] / d["initial_errors"][:, None]).max()
     expected = float(d["convex_t"]) / (4 * int(d["convex_n"]))
@@ -213,12 +214,12 @@ def tspd_claims(d, rates: Recorder, window: int, order_min: float, growth_max: f
     out = []
     times = ", ".join(f"{t:g}" for t in d["times"])
     for c_index, case in enumerate(d["cases"]):
-        orders = [rates.add(order(f"{PAPER}.thm44.delta_order_{case}", "Delta", d["deltas"], row, window))
-                  for row in d["delta_errors"][c_index]]
+        orders = [rates.add(order(f"{PAPER}.thm44.delta_order_{case}", "Delta", d["deltas"], row, window,
+                                  f"t = {t:g}")) for t, row in zip(d["times"], d["delta_errors"][c_index])]
         n = d["n_values"].astype(float)
         growth = [rates.add(fit(f"{PAPER}.thm44.n_bound_{case}", "log(error / bound) against log n", "n", n,
-                                np.log(n), np.log(row / bound), window))
-                  for row, bound in zip(d["n_errors"][c_index], d["bounds"][c_index])]
+                                np.log(n), np.log(row / bound), window, f"t = {t:g}"))
+                  for t, row, bound in zip(d["times"], d["n_errors"][c_index], d["bounds"][c_index])]
         out += [
             claim(c.at_least, f"thm44.delta_order_{case}", "paper", "Theorem 4.4 (the C Delta term)", "Theorem 4.4",
                   f"{case} case, n = {int(d['delta_n'])} per type: the iterated TSPD is within C Delta of the MSPD; "

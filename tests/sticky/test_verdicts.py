@@ -1,0 +1,242 @@
+"""Every paper claim of the sticky paper can fail: each measure passes on an outcome of the shape the
+paper states and fails on a plausible wrong one (a rate without its log factor, a plateau, a state
+that never recovers, a cluster that splits at the wrong crossing, a quadratic cost)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from particle_methods.rates import Recorder
+from particle_methods.sticky import verdicts as v
+from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
+
+N = 2.0 ** np.arange(1, 10)
+BAND = (0.25, 1.0)
+
+
+def status(claims, name):
+    return {claim.id: claim.status for claim in claims}[f"sticky.{name}"]
+
+
+def quiet():
+    return Recorder(log=lambda text: None)
+
+
+def burgers(errors):
+    return {"error_n": N, "errors": errors, "error_times": np.array([10.0, 20.0]),
+            "initial_errors": np.zeros(N.size), "flux_lipschitz": 1.0}
+
+
+@pytest.mark.parametrize("power, expected", [(1.0, "pass"), (0.5, "fail"), (2.0, "fail")])
+def test_fig2d_order_needs_order_one(power, expected):
+    errors = np.array([t / 4 * N**-power for t in (10.0, 20.0)])
+    assert status(v.burgers_claims(burgers(errors), quiet(), 9), "fig2d.order") == expected
+
+
+def test_fig2d_curves_must_be_ordered_by_time():
+    errors = np.array([t / 4 / N for t in (10.0, 20.0)])
+    assert status(v.burgers_claims(burgers(errors), quiet(), 9), "fig2d.ordering") == "pass"
+    assert status(v.burgers_claims(burgers(errors[::-1]), quiet(), 9), "fig2d.ordering") == "fail"
+
+
+def concave(shape):
+    """Figure 3 (d) data: for t = 0, 1, 2 a plateau up to a critical n, then the decay ``shape(n, t)``."""
+    times = np.array([0.0, 1.0, 2.0])
+    critical = {0.0: 1, 1.0: 3, 2.0: 5}  # index of the last plateau point
+    errors, clusters = np.empty((3, N.size)), np.ones((3, N.size), dtype=np.int64)
+    for i, t in enumerate(times):
+        k = critical[t]
+        decay = shape(N, t)
+        errors[i] = np.where(np.arange(N.size) <= k, decay[k], decay)
+        clusters[i, k + 1:] = 2
+    rate_n = 2.0 ** np.array([18, 19, 20])
+    return {"errors": errors, "clusters": clusters, "error_n": N, "error_times": times, "rate_n": rate_n,
+            "rate_errors": np.array([shape(rate_n, t) for t in times])}
+
+
+LOG_OVER_N = lambda n, t: (0.5 * np.log(n) + 1 / (1 + t)) / n  # noqa: E731
+
+
+def test_fig3d_shape_passes_with_a_plateau_then_log_n_over_n():
+    claims = v.concave_claims(concave(LOG_OVER_N), quiet(), 3, BAND)
+    assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims]
+
+
+@pytest.mark.parametrize("shape", [lambda n, t: 1 / (1 + t) / n, lambda n, t: np.log(n) ** 2 / (1 + t) / n,
+                                   lambda n, t: n**-0.5 / (1 + t)])
+def test_fig3d_decay_fails_for_another_rate(shape):
+    claims = v.concave_claims(concave(shape), quiet(), 3, BAND)
+    assert status(claims, "fig3d.decay_asymptotic") == "fail"
+    assert status(claims, "fig3d.decay_plotted") == "fail"
+
+
+def test_fig3d_fails_when_the_error_grows_past_the_plateau_or_the_critical_n_shrinks():
+    data = concave(LOG_OVER_N)
+    data["errors"][2, -1] = data["errors"][2, -2] * 1.5
+    assert status(v.concave_claims(data, quiet(), 3, BAND), "fig3d.plateau_then_decay") == "fail"
+    data = concave(LOG_OVER_N)
+    data["errors"][1:] = data["errors"][[2, 1]]  # t = 1 now has the longer plateau
+    assert status(v.concave_claims(data, quiet(), 3, BAND), "fig3d.critical_n_grows") == "fail"
+
+
+def test_theorem31_bound_can_fail():
+    good = burgers(np.array([t / (4 * N) for t in (10.0, 20.0)]))
+    assert status(v.theorem31_claims(good, good), "thm31.bound") == "pass"
+    bad = burgers(np.array([2 * t / N for t in (10.0, 20.0)]))
+    assert status(v.theorem31_claims(good, bad), "thm31.bound") == "fail"
+
+
+def remark33(distance_shape, dirac_factor=4.0):
+    n, t = np.array([1, 10, 100]), np.array([1.0, 10.0])
+    cells = np.array([50, 100, 200, 400])
+    return {"dirac_n": n, "dirac_times": t, "dirac_errors": t[:, None] / (dirac_factor * n[None, :]),
+            "cells_per_unit": cells, "godunov_n": np.array([4, 32]), "godunov_times": np.array([1.0, 5.0]),
+            "distances": np.array([[distance_shape(1.0 / cells)] * 2] * 2),
+            "total_errors": np.full((2, 2), 0.5), "initial_errors": np.ones(2),
+            "convex_n": 4, "convex_t": 1.0, "convex_distances": 1 / 16 + 1.0 / cells,
+            "refined_cells": cells[-3:], "refined_distances": 1.0 / cells[-3:], "refined_n": 256, "refined_t": 1.0}
+
+
+def test_remark33_godunov_distance_must_vanish_at_first_order():
+    assert status(v.remark33_claims(remark33(lambda h: 0.3 * h), quiet(), 3, 0.8, 0.1), "remark33.concave") == "pass"
+    plateau = remark33(lambda h: 1e-3 + 0.3 * h)  # a non-entropic SPD: the distance stops at its own error
+    assert status(v.remark33_claims(plateau, quiet(), 3, 0.8, 0.1), "remark33.concave") == "fail"
+
+
+def test_remark33_dirac_error_must_be_t_over_4n():
+    assert status(v.remark33_claims(remark33(lambda h: h), quiet(), 3, 0.8, 0.1), "remark33.dirac") == "pass"
+    stuck = remark33(lambda h: h, dirac_factor=2.0)
+    assert status(v.remark33_claims(stuck, quiet(), 3, 0.8, 0.1), "remark33.dirac") == "fail"
+
+
+def lemma21(exponential_limit=0.25, weibull=lambda n, a: (0.25 * np.log(n) ** (1 / a) + 1) / n,
+            heavy=lambda r: np.log(r)):
+    n = np.array([16, 64, 256, 1024, 4096, 16384])
+    upper = 10.0 ** np.arange(2, 7)
+    data = {"n_values": n, "odd_n": n + 1, "uniform": 0.25 / n, "uniform_odd": 0.25 / (n + 1),
+            "uniform_support": 1.0, "uniform_sqrt_variance": 1.0,
+            "exponential_1": exponential_limit / n, "exponential_1_odd": exponential_limit / (n + 1),
+            "exponential_1_support": 1.0, "pareto_alpha": np.array([1.5]), "pareto_1.5": n ** (-1 / 3),
+            "weibull_alpha": np.array([1.0, 0.5]), "heavy_upper": upper, "heavy_errors": heavy(upper)}
+    for alpha in (1.0, 0.5):
+        data[f"weibull_{alpha:g}"] = weibull(n, alpha)
+    return data
+
+
+def test_lemma21_passes_on_the_stated_behaviour():
+    claims = v.lemma21_claims(lemma21(), quiet(), 4, (0.125, 0.5), 0.5)
+    assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims]
+
+
+@pytest.mark.parametrize("weibull", [lambda n, a: 1.0 / n, lambda n, a: np.log(n) ** (2 / a) / n])
+def test_lemma21_weibull_rates_need_their_log_factor(weibull):
+    claims = v.lemma21_claims(lemma21(weibull=weibull), quiet(), 4, (0.125, 0.5), 0.5)
+    assert status(claims, "lemma21.weibull_1") == "fail"
+
+
+def test_lemma21_iv_limit_and_i_growth_can_fail():
+    claims = v.lemma21_claims(lemma21(exponential_limit=0.5), quiet(), 4, (0.125, 0.5), 0.5)
+    assert status(claims, "lemma21.iv.exponential_1") == "fail"
+    finite_moment = lambda r: 0.2 - r ** -0.5  # noqa: E731  (a tail with alpha = 1.5 saturates)
+    claims = v.lemma21_claims(lemma21(heavy=finite_moment), quiet(), 4, (0.125, 0.5), 0.5)
+    assert status(claims, "lemma21.i.heavy_tail") == "fail"
+
+
+def tspd(delta_power=1.0, n_power=1.0):
+    deltas, n = 0.1 / 2.0 ** np.arange(5), np.array([25.0, 50, 100, 200, 400])
+    bound = np.log(n) / n
+    return {"cases": np.array(["rarefaction"]), "times": np.array([1.0, 2.0]), "deltas": deltas, "delta_n": 100,
+            "reference_delta": 1e-3, "delta_errors": np.array([[deltas**delta_power] * 2]), "n_values": n,
+            "n_delta": 2e-3, "reference_n": 6400, "n_errors": np.array([[bound * (25 / n) ** (n_power - 1)] * 2]),
+            "bounds": np.array([[bound] * 2]), "delta_reference_gap": np.full((1, 2), 1e-6),
+            "n_reference_gap": np.full((1, 2), 1e-6)}
+
+
+def test_theorem44_measures_can_fail():
+    claims = v.tspd_claims(tspd(), quiet(), 3, 0.9, 0.1, 0.5)
+    assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims]
+    assert status(v.tspd_claims(tspd(delta_power=0.5), quiet(), 3, 0.9, 0.1, 0.5),
+                  "thm44.delta_order_rarefaction") == "fail"
+    assert status(v.tspd_claims(tspd(n_power=0.5), quiet(), 3, 0.9, 0.1, 0.5),
+                  "thm44.n_bound_rarefaction") == "fail"
+
+
+def rarefaction(collide=False, cross=False):
+    times = np.linspace(0, 1, 11)
+    base = np.linspace(0.0, 1.0, 4)
+    path = np.array([[base + 2 + t, base - 2 - t] for t in times])
+    if collide:
+        path[5:, PLUS, 1] = path[5:, PLUS, 2]
+    if cross:
+        path[5:, PLUS] += 10.0
+    return {"trajectories": path, "field_path": path, "times": times}
+
+
+def shocks(split_after=2, recover=True, clusters_left=False):
+    """A + cluster of 4 at -t; - particles cross it one per step from the right; it splits in the step
+    after rank ``split_after`` has crossed; then (if ``recover``) everything separates."""
+    n, steps = 4, 12
+    times = 0.1 * np.arange(steps + 1)
+    path = np.empty((steps + 1, 2, n))
+    for step, t in enumerate(times):
+        crossed = min(max(step - 1, 0), n)
+        minus = np.concatenate([-1.0 - np.arange(n - crossed)[::-1] * 0.1, 1.0 + np.arange(crossed) * 0.1])
+        path[step, MINUS] = np.sort(minus)
+        split = step > split_after + 1
+        path[step, PLUS] = np.arange(n) * 0.02 * (step - split_after - 1) if split else 0.0
+        if not recover:
+            path[step, PLUS] += 10.0
+    path[1:4, MINUS, 0] = path[1:4, MINUS, 1]  # two - particles stuck together early: a - cluster
+    if clusters_left:
+        path[:, MINUS, 0] = path[:, MINUS, 1]
+    end = math.inf if (not recover or clusters_left) else float(times[-3])
+    return {"trajectories": path, "field_path": path, "times": times, "trajectories_end": end, "field_end": end,
+            "max_time": 10.0}
+
+
+def test_psystem_claims_pass_on_the_described_dynamics():
+    claims = v.psystem_claims(rarefaction(), shocks(), 0.05, PSystem())
+    paper = [claim for claim in claims if claim.kind == "paper"]
+    assert all(claim.status == "pass" for claim in paper), [(c.id, c.measured) for c in paper]
+
+
+@pytest.mark.parametrize("data, name", [
+    (dict(rarefaction=rarefaction(cross=True)), "fig4.order_preserved"),
+    (dict(rarefaction=rarefaction(collide=True)), "fig4.no_same_type_collision"),
+    (dict(rarefaction=rarefaction(collide=True)), "fig5.no_shock"),
+    (dict(shocks=shocks(split_after=0)), "fig6.breakup_at_median"),
+    (dict(shocks=shocks(split_after=4)), "fig6.breakup_at_median"),
+    (dict(shocks=shocks(recover=False)), "fig6.order_recovered"),
+    (dict(shocks=shocks(clusters_left=True)), "fig6.drift_apart"),
+    (dict(shocks=shocks(clusters_left=True)), "fig7.late_rarefactions"),
+])
+def test_psystem_claims_fail_on_wrong_dynamics(data, name):
+    claims = v.psystem_claims(data.get("rarefaction", rarefaction()), data.get("shocks", shocks()), 0.05, PSystem())
+    assert status(claims, name) == "fail"
+
+
+def test_fig6_and_fig7_clusters_are_needed():
+    separate = shocks()
+    separate["trajectories"][1:4, MINUS, 0] -= 0.05  # no - cluster
+    assert status(v.psystem_claims(rarefaction(), separate, 0.05, PSystem()), "fig6.minus_clusters_form") == "fail"
+    assert status(v.psystem_claims(rarefaction(), shocks(), 2.0, PSystem()), "fig7.early_shocks") == "fail"
+
+
+def test_plus_cluster_threshold_follows_the_velocities():
+    # With most - particles still on its left the + cluster holds; the rank that breaks it is the
+    # same fraction of n for large n (about 32 %, not the median).
+    thresholds = {n: v.plus_cluster_threshold(PSystem(), n) for n in (20, 200, 2000)}
+    assert thresholds[20] == 7 and 0.31 < thresholds[2000] / 2000 < 0.33
+
+
+def cost(power):
+    sizes = np.array([1e3, 1e4, 1e5, 1e6])
+    return {"hull_n": sizes, "hull_times": 1e-9 * sizes**power, "rank_n": sizes, "rank_times": 1e-9 * sizes,
+            "tspd_n": sizes, "tspd_times": 1e-9 * sizes, "tspd_steps": 20, "steps_values": sizes,
+            "steps_times": 1e-9 * sizes, "steps_n": 1000}
+
+
+def test_cost_claims_fail_for_a_quadratic_kernel():
+    assert status(v.cost_claims(cost(1.0), quiet(), 3, (0.8, 1.2)), "cost.hull") == "pass"
+    assert status(v.cost_claims(cost(2.0), quiet(), 3, (0.8, 1.2)), "cost.hull") == "fail"
