@@ -5,6 +5,7 @@ import re
 import pytest
 
 from particle_methods.claims import Claim, write_claims
+from particle_methods.rates import order, write_rates
 from particle_methods.report import cell, number, tex, write_snippets
 
 
@@ -41,14 +42,19 @@ def test_special_characters_are_escaped():
 @pytest.fixture
 def snippets(tmp_path):
     claims = [
-        Claim("demo.fig1.order", "demo", "1", "order of the scheme", "2", "1.98765", "+-0.1", "pass"),
-        Claim("demo.fig2.peaks", "demo", "2", "two peaks", "2", "3", "+-0", "fail"),
-        Claim("other.mass", "other", "3", "mass conserved", "0", "1.5e-15", "<= 1e-12", "pass"),
+        Claim("demo.fig1.order", "demo", "paper", "Theorem 1", "1", "order of the scheme", "2", "1.98765", "+-0.1",
+              "pass"),
+        Claim("demo.fig2.peaks", "demo", "paper", "Figure 2", "2", "two peaks", "2", "3", "+-0", "fail"),
+        Claim("other.mass", "other", "check", "conservation", "3", "mass conserved", "0", "1.5e-15", "<= 1e-12",
+              "pass"),
     ]
     write_claims(tmp_path / "claims.csv", claims)
+    rate = order("demo.fig1.order", "h", [0.1, 0.05, 0.025], [1e-2, 2.6e-3, 6.4e-4], window=2, label="t = 1")
+    write_rates(tmp_path / "rates.json", [rate])
     (tmp_path / "versions.md").write_text("| package | version |\n|---|---|\n| python | 3.11.7 |\n| numpy | 2.0 |\n")
     config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]}}
-    write_snippets(tmp_path / "claims.csv", tmp_path / "versions.md", config, tmp_path / "out")
+    write_snippets(tmp_path / "claims.csv", tmp_path / "rates.json", tmp_path / "versions.md", config,
+                   tmp_path / "out")
     return {path.stem: path.read_text() for path in (tmp_path / "out").iterdir()}
 
 
@@ -69,11 +75,21 @@ def test_every_claim_value_and_parameter_gets_a_macro(snippets):
 
 def test_counts_tables_and_failures(snippets):
     counts = definitions(snippets["summary"])
-    assert counts == {"claimcount@demo.all": "2", "claimcount@demo.fail": "1", "claimcount@demo.pass": "1",
-                      "claimcount@other.all": "1", "claimcount@other.fail": "0", "claimcount@other.pass": "1"}
+    assert {key: counts[f"claimcount@{key}"] for key in ("demo.all", "demo.fail", "demo.pass", "other.all")} == {
+        "demo.all": "2", "demo.fail": "1", "demo.pass": "1", "other.all": "1"}
+    assert counts["claimcount@demo.paper.pass"] == "1" and counts["claimcount@demo.check.all"] == "0"
+    assert counts["claimcount@all.paper.all"] == "2" and counts["claimcount@all.check.pass"] == "1"
+    assert r"\textit{paper}: Theorem 1" in snippets["claims_demo"]
     body = snippets["claims_demo"].split(r"\endlastfoot")[1]
     assert body.count(r" \\") == 2 and "other.mass" not in body
     assert "demo.\\allowbreak{}fig2.\\allowbreak{}peaks" in snippets["failures"]
     assert "fig1" not in snippets["failures"].split(r"\endlastfoot")[1]
     assert "numpy & 2.0" in snippets["versions"]
     assert snippets["configuration"].count(r"\par") == 3
+
+
+def test_rate_tables_mark_the_deciding_window(snippets):
+    table = snippets["rates"]
+    assert "demo.\\allowbreak{}fig1.\\allowbreak{}order} (t = 1)" in table
+    assert table.count(r"\textbf{") == 1 and r"\textbf{2.022}" in table  # log2(2.6e-3 / 6.4e-4)
+    assert table.count(r" \\") == 2 + 1  # header and two rows of first points

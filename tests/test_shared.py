@@ -220,3 +220,13 @@ def test_steadiness_criteria():
     assert reached == pytest.approx(4.7, abs=0.11) and t[-1] == pytest.approx(6.0) and states.shape == (61, 2)
     t, _, reached = run_until(advance, np.ones(2), chunk=2.0, t_min=2.0, t_max=3.0, done=lambda *a: np.inf)
     assert reached == np.inf and t[-1] == pytest.approx(3.0)
+
+
+def test_catalogue_gives_every_claim_its_kind_and_source():
+    catalogue = c.Catalogue("x", {"fig1.order": ("paper", "Figure 1"), "mass": ("check", "conservation")})
+    row = catalogue.claim(c.at_most, "mass", "1", "mass defect", 1e-12, 0.0)
+    assert (row.id, row.kind, row.source, row.status) == ("x.mass", "check", "conservation", "pass")
+    with pytest.raises(ValueError, match="x.fig2.peaks has no kind and source"):
+        catalogue.claim(c.at_most, "fig2.peaks", "2", "peaks", 1.0, 0.0)
+    with pytest.raises(ValueError, match="must be one of"):
+        c.Catalogue("x", {"a": ("theorem", "Theorem 1")})

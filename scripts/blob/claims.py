@@ -67,22 +67,14 @@ KINDS = {
 }
 
 
-def kind_and_source(name):
-    """(kind, source) of the claim ``name`` from :data:`KINDS`; a clear error when it is missing."""
-    if name not in KINDS:
-        raise ValueError(f"claim {PAPER}.{name} has no kind and source: add it to KINDS in scripts/blob/claims.py")
-    return KINDS[name]
-
-
-def claim(compare, name, figure, text, *args, **kwargs):
-    kind, source = kind_and_source(name)
-    return compare(f"{PAPER}.{name}", PAPER, figure, text, *args, kind=kind, source=source, **kwargs)
+CATALOGUE = c.Catalogue(PAPER, KINDS)
+claim = CATALOGUE.claim
 
 
 def order(d, key, name, prefix=""):
     """Fitted order of d[prefix + key] against h on the finest ``fit_points`` steps, recorded under
     the claim ``name`` that it decides (the first one when it decides several)."""
-    kind_and_source(name)
+    CATALOGUE.kind_and_source(name)
     h, errors = d["h_values"], d[f"{prefix}{key}"]
     progress(f"{PAPER}.{name}: {prefix}{key} at h = {', '.join(f'{v:.5g}' for v in h)}: "
              f"{', '.join(f'{e:.5e}' for e in errors)}")

@@ -45,22 +45,14 @@ KINDS = {
 }
 
 
-def kind_and_source(name):
-    """(kind, source) of the claim ``name`` from :data:`KINDS`; a clear error when it is missing."""
-    if name not in KINDS:
-        raise ValueError(f"claim {PAPER}.{name} has no kind and source: add it to KINDS in scripts/ltp/claims.py")
-    return KINDS[name]
-
-
-def claim(compare, name, figure, text, *args, **kwargs):
-    kind, source = kind_and_source(name)
-    return compare(f"{PAPER}.{name}", PAPER, figure, text, *args, kind=kind, source=source, **kwargs)
+CATALOGUE = c.Catalogue(PAPER, KINDS)
+claim = CATALOGUE.claim
 
 
 def order(name, h, errors, points):
     """Fitted order of ``errors`` against ``h`` (coarse to fine) on the ``points`` finest steps,
     recorded under the claim ``name`` that it decides."""
-    kind_and_source(name)
+    CATALOGUE.kind_and_source(name)
     progress(f"{PAPER}.{name}: errors at h = {', '.join(f'{v:.5g}' for v in h)}: "
              f"{', '.join(f'{e:.5e}' for e in errors)}")
     return RATES.add(rates.order(f"{PAPER}.{name}", "h", h, errors, points))

@@ -108,6 +108,30 @@ def between(id, paper, figure, claim, lower: float, upper: float, measured: floa
                  f"in {band}", _verdict(lower <= measured <= upper, measured))
 
 
+class Catalogue:
+    """The kind and source of every claim of one paper, looked up by the claim's name.
+
+    ``catalogue.claim(close_to, "fig2.order", figure, text, ...)`` builds the claim
+    ``<paper>.fig2.order`` with the kind and source of its entry; a name without an entry is an
+    error, so no claim reaches the table without them.
+    """
+
+    def __init__(self, paper: str, kinds: dict[str, tuple[str, str]]):
+        self.paper, self.kinds = paper, dict(kinds)
+        unknown = sorted(name for name, (kind, _) in self.kinds.items() if kind not in KINDS)
+        if unknown:
+            raise ValueError(f"kinds of {unknown} must be one of {', '.join(KINDS)}")
+
+    def kind_and_source(self, name: str) -> tuple[str, str]:
+        if name not in self.kinds:
+            raise ValueError(f"claim {self.paper}.{name} has no kind and source: add it to the paper's table")
+        return self.kinds[name]
+
+    def claim(self, compare, name, figure, text, *args, **kwargs) -> Claim:
+        kind, source = self.kind_and_source(name)
+        return compare(f"{self.paper}.{name}", self.paper, figure, text, *args, kind=kind, source=source, **kwargs)
+
+
 def write_claims(path, claims) -> None:
     """Write claims to a CSV file with the columns of the repository-wide table."""
     path = Path(path)
