@@ -110,6 +110,7 @@ SNIPPETS = expand(
         "parameters",
         "configuration",
         "failures",
+        "rates",
         "summary",
         "versions",
     ],
@@ -128,6 +129,7 @@ rule report_snippets:
     """LaTeX snippets of the report: claims tables, measured values, parameters, versions."""
     input:
         claims="results/claims.csv",
+        rates="results/rates.json",
         versions="results/versions.md",
         code=imports("report/snippets.py"),
     output:
