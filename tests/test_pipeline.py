@@ -158,7 +158,9 @@ def test_verify_fails_when_a_verdict_changes(workdir, tmp_path):
     failing[changed_id] = "pretend it used to fail"
     expected = tmp_path / "verdicts.yaml"
     expected.write_text(yaml.safe_dump({"pass": passing, "fail": failing}))
-    result = snakemake(workdir, "verify", "--config", f"verdicts={expected}")
+    result = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "verify",
+                             "--configfile", str(QUICK), "--config", f"verdicts={expected}"], cwd=workdir,
+                            capture_output=True, text=True, timeout=600)
     assert result.returncode != 0
     assert f"CHANGED {changed_id}: expected fail" in result.stdout + result.stderr
 
