@@ -22,12 +22,12 @@ from particle_methods.sticky.spd import spd_positions
 def main(n=256, t=1.0, cells_per_unit=(1600, 3200, 6400, 12800, 25600)):
     x, v = SCALAR_CASES["concave_laplace"].initial_state(n)
     positions = spd_positions(x, v, t)
-    low, high = min(x[0], positions[0]) - 1.0, max(x[-1], positions[-1]) + 1.0
     previous = None
     print(f"n = {n}, t = {t:g}\ncells per unit | distance | pairwise order | seconds")
     for count in cells_per_unit:
-        cells = math.ceil((high - low) * count)
-        edges = np.linspace(low, low + cells / count, cells + 1)
+        left = math.ceil((1.0 - min(x[0], positions[0])) * count)  # a cell edge at x = 0, as in the pipeline
+        right = math.ceil((max(x[-1], positions[-1]) + 1.0) * count)
+        edges = np.arange(-left, right + 1) / count
         start = time.perf_counter()
         values = godunov(CONCAVE, cell_averages_of_step_cdf(x, edges), edges, t, left=0.0, right=1.0)
         distance = l1_distance_to_step_cdf(values, edges, positions)

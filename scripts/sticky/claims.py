@@ -24,7 +24,7 @@ def run(inputs, cfg, output):
         *v.lemma21_claims(load_results(inputs.lemma21), rates, l21["rate_window"], l21["weibull_band"],
                           l21["heavy_tail"]["growth_ratio"]),
         *v.tspd_claims(load_results(inputs.tspd), rates, tspd["window"], tspd["delta_order_min"],
-                       tspd["growth_max"], tspd["reference_share"]),
+                       tspd["growth_max"], tspd["reference_share"], tspd["constant_ratio"]),
         *v.psystem_claims(load_results(inputs.rarefaction), load_results(inputs.shocks),
                           cfg["psystem"]["shocks"]["shock_fraction"],
                           PSystem(nu=cfg["psystem"]["nu"], kappa=cfg["psystem"]["kappa"])),

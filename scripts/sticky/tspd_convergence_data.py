@@ -37,18 +37,22 @@ def run(system_params, cases, p, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
     times, deltas, n_values = (np.asarray(p[key], dtype=float) for key in ("times", "deltas", "n_values"))
     shape = (len(p["cases"]), times.size)
-    delta_errors = np.empty((*shape, deltas.size))
+    delta_n = np.asarray(p["delta_n"], dtype=np.int64)
+    delta_errors = np.empty((len(p["cases"]), delta_n.size, times.size, deltas.size))
     n_errors, bounds = np.empty((*shape, n_values.size)), np.empty((*shape, n_values.size))
     delta_reference_gap, n_reference_gap = np.empty(shape), np.empty(shape)
     for c, name in enumerate(p["cases"]):
         x0 = cases[name]["x0"]
-        progress(f"{name}: Delta sweep, n = {p['delta_n']}, reference Delta = {p['reference_delta']:g}")
-        reference = snapshots(name, x0, system, p["delta_n"], p["reference_delta"], times)
-        coarser = snapshots(name, x0, system, p["delta_n"], 2 * p["reference_delta"], times)
-        delta_reference_gap[c] = [distance(a, b) for a, b in zip(reference, coarser)]
-        for j, delta in enumerate(deltas):
-            run_ = snapshots(name, x0, system, p["delta_n"], delta, times)
-            delta_errors[c, :, j] = [distance(a, b) for a, b in zip(run_, reference)]
+        gaps = []
+        for m, n in enumerate(delta_n):
+            progress(f"{name}: Delta sweep, n = {n}, reference Delta = {p['reference_delta']:g}")
+            reference = snapshots(name, x0, system, int(n), p["reference_delta"], times)
+            coarser = snapshots(name, x0, system, int(n), 2 * p["reference_delta"], times)
+            gaps.append([distance(a, b) for a, b in zip(reference, coarser)])
+            for j, delta in enumerate(deltas):
+                run_ = snapshots(name, x0, system, int(n), delta, times)
+                delta_errors[c, m, :, j] = [distance(a, b) for a, b in zip(run_, reference)]
+        delta_reference_gap[c] = np.max(gaps, axis=0)
         progress(f"{name}: n sweep, Delta = {p['n_delta']:g}, reference n = {p['reference_n']}")
         reference = snapshots(name, x0, system, p["reference_n"], p["n_delta"], times)
         coarser = snapshots(name, x0, system, p["reference_n"] // 2, p["n_delta"], times)
@@ -60,7 +64,7 @@ def run(system_params, cases, p, output):
             initial = sum(w1_to_measure(m, x) for m, x in zip(measures, psystem_initial_configuration(name, x0, n)))
             # Theorem 4.4 without its constants: W1^(d)(m, mu_0[x(n)]) + t d L_LC / n.
             bounds[c, :, j] = initial + times * system.d * system.speed_lipschitz / n
-    save_results(output, cases=np.array(p["cases"]), times=times, deltas=deltas, delta_n=p["delta_n"],
+    save_results(output, cases=np.array(p["cases"]), times=times, deltas=deltas, delta_n=delta_n,
                  reference_delta=p["reference_delta"], delta_errors=delta_errors,
                  delta_reference_gap=delta_reference_gap, n_values=n_values, n_delta=p["n_delta"],
                  reference_n=p["reference_n"], n_errors=n_errors, bounds=bounds, n_reference_gap=n_reference_gap)

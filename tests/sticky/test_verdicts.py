@@ -51,8 +51,9 @@ def concave(shape):
         errors[i] = np.where(np.arange(N.size) <= k, decay[k], decay)
         clusters[i, k + 1:] = 2
     rate_n = 2.0 ** np.array([18, 19, 20])
+    heaviside = np.array([errors[i, critical[t]] for i, t in enumerate(times)])
     return {"errors": errors, "clusters": clusters, "error_n": N, "error_times": times, "rate_n": rate_n,
-            "rate_errors": np.array([shape(rate_n, t) for t in times])}
+            "rate_errors": np.array([shape(rate_n, t) for t in times]), "heaviside_errors": heaviside}
 
 
 LOG_OVER_N = lambda n, t: (0.5 * np.log(n) + 1 / (1 + t)) / n  # noqa: E731
@@ -75,6 +76,15 @@ def test_fig3d_fails_when_the_error_grows_past_the_plateau_or_the_critical_n_shr
     data = concave(LOG_OVER_N)
     data["errors"][2, -1] = data["errors"][2, -2] * 1.5
     assert status(v.concave_claims(data, quiet(), 3, BAND), "fig3d.plateau_then_decay") == "fail"
+    data = concave(LOG_OVER_N)
+    data["heaviside_errors"][2] *= 1.1  # a plateau that is not the distance to the step function
+    assert status(v.concave_claims(data, quiet(), 3, BAND), "fig3d.plateau_then_decay") == "fail"
+    no_plateau = concave(lambda n, t: (0.5 * np.log(n) + 1 / (1 + t)) / n)
+    no_plateau["errors"] = np.array([(0.5 * np.log(N) + 1 / (1 + t)) / N for t in (0.0, 1.0, 2.0)])
+    assert status(v.concave_claims(no_plateau, quiet(), 3, BAND), "fig3d.plateau_then_decay") == "fail"
+    data = concave(LOG_OVER_N)
+    data["errors"][2, 3] = data["errors"][1, 3] * 1.01  # a curve of a larger t above one of a smaller t
+    assert status(v.concave_claims(data, quiet(), 3, BAND), "fig3d.ordering") == "fail"
     data = concave(LOG_OVER_N)
     data["errors"][1:] = data["errors"][[2, 1]]  # t = 1 now has the longer plateau
     assert status(v.concave_claims(data, quiet(), 3, BAND), "fig3d.critical_n_grows") == "fail"
@@ -104,6 +114,20 @@ def test_remark33_godunov_distance_must_vanish_at_first_order():
     assert status(v.remark33_claims(plateau, quiet(), 3, 0.8, 0.1), "remark33.concave") == "fail"
 
 
+def test_remark33_distances_at_rounding_level_count_as_exact_agreement():
+    data = remark33(lambda h: 0.3 * h)
+    data["distances"][0, 1] = 1e-16 / data["cells_per_unit"]  # exact to rounding, no order to fit
+    assert status(v.remark33_claims(data, quiet(), 3, 0.8, 0.1), "remark33.concave") == "pass"
+    data["distances"][1, 1] = 1e-3 + 1e-16  # but a plateau elsewhere still fails
+    assert status(v.remark33_claims(data, quiet(), 3, 0.8, 0.1), "remark33.concave") == "fail"
+
+
+def test_remark33_contraction_can_fail():
+    data = remark33(lambda h: h)
+    data["total_errors"][1, 1] = 1.5  # an error above the initial discretisation error
+    assert status(v.remark33_claims(data, quiet(), 3, 0.8, 0.1), "remark33.contraction") == "fail"
+
+
 def test_remark33_dirac_error_must_be_t_over_4n():
     assert status(v.remark33_claims(remark33(lambda h: h), quiet(), 3, 0.8, 0.1), "remark33.dirac") == "pass"
     stuck = remark33(lambda h: h, dirac_factor=2.0)
@@ -119,6 +143,7 @@ def lemma21(exponential_limit=0.25, weibull=lambda n, a: (0.25 * np.log(n) ** (1
             "exponential_1": exponential_limit / n, "exponential_1_odd": exponential_limit / (n + 1),
             "exponential_1_support": 1.0, "pareto_alpha": np.array([1.5]), "pareto_1.5": n ** (-1 / 3),
             "weibull_alpha": np.array([1.0, 0.5]), "heavy_upper": upper, "heavy_errors": heavy(upper)}
+    data["uniform_sqrt_variance"] = 0.25
     for alpha in (1.0, 0.5):
         data[f"weibull_{alpha:g}"] = weibull(n, alpha)
     return data
@@ -143,23 +168,37 @@ def test_lemma21_iv_limit_and_i_growth_can_fail():
     assert status(claims, "lemma21.i.heavy_tail") == "fail"
 
 
-def tspd(delta_power=1.0, n_power=1.0):
+def test_lemma21_bounds_and_pareto_rate_can_fail():
+    data = lemma21()
+    data["uniform_odd"] = 0.6 / (data["odd_n"])  # above (b - a)/(2n)
+    data["uniform"] = data["uniform"] * 8  # above n^(-1/2) int sqrt(F(1 - F)) at the largest n
+    data["pareto_1.5"] = data["n_values"] ** -0.5  # the rate of a lighter tail than alpha = 1.5
+    claims = v.lemma21_claims(data, quiet(), 4, (0.125, 0.5), 0.5)
+    assert [status(claims, name) for name in ("lemma21.iii", "lemma21.ii", "lemma21.pareto_1.5")] == ["fail"] * 3
+
+
+def tspd(delta_power=1.0, n_power=1.0, constant=1.0):
     deltas, n = 0.1 / 2.0 ** np.arange(5), np.array([25.0, 50, 100, 200, 400])
     bound = np.log(n) / n
-    return {"cases": np.array(["rarefaction"]), "times": np.array([1.0, 2.0]), "deltas": deltas, "delta_n": 100,
-            "reference_delta": 1e-3, "delta_errors": np.array([[deltas**delta_power] * 2]), "n_values": n,
+    return {"cases": np.array(["rarefaction"]), "times": np.array([1.0, 2.0]), "deltas": deltas,
+            "delta_n": np.array([100, 400]), "reference_delta": 1e-3,
+            "delta_errors": np.array([[[deltas**delta_power] * 2, [constant * deltas**delta_power] * 2]]),
+            "n_values": n,
             "n_delta": 2e-3, "reference_n": 6400, "n_errors": np.array([[bound * (25 / n) ** (n_power - 1)] * 2]),
             "bounds": np.array([[bound] * 2]), "delta_reference_gap": np.full((1, 2), 1e-6),
             "n_reference_gap": np.full((1, 2), 1e-6)}
 
 
 def test_theorem44_measures_can_fail():
-    claims = v.tspd_claims(tspd(), quiet(), 3, 0.9, 0.1, 0.5)
+    claims = v.tspd_claims(tspd(), quiet(), 3, 0.9, 0.1, 0.5, 2.0)
     assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims]
-    assert status(v.tspd_claims(tspd(delta_power=0.5), quiet(), 3, 0.9, 0.1, 0.5),
+    assert status(v.tspd_claims(tspd(delta_power=0.5), quiet(), 3, 0.9, 0.1, 0.5, 2.0),
                   "thm44.delta_order_rarefaction") == "fail"
-    assert status(v.tspd_claims(tspd(n_power=0.5), quiet(), 3, 0.9, 0.1, 0.5),
+    assert status(v.tspd_claims(tspd(n_power=0.5), quiet(), 3, 0.9, 0.1, 0.5, 2.0),
                   "thm44.n_bound_rarefaction") == "fail"
+    # a constant that grows with n (four times more particles, four times the error per Delta)
+    assert status(v.tspd_claims(tspd(constant=4.0), quiet(), 3, 0.9, 0.1, 0.5, 2.0),
+                  "thm44.delta_constant_rarefaction") == "fail"
 
 
 def rarefaction(collide=False, cross=False):
@@ -234,7 +273,8 @@ def test_plus_cluster_threshold_follows_the_velocities():
 
 def cost(power):
     sizes = np.array([1e3, 1e4, 1e5, 1e6])
-    return {"hull_n": sizes, "hull_times": 1e-9 * sizes**power, "rank_n": sizes, "rank_times": 1e-9 * sizes,
+    return {"hull_n": sizes, "hull_times": 1e-9 * sizes**power, "hull_free_times": 1e-9 * sizes,
+            "rank_n": sizes, "rank_times": 1e-9 * sizes,
             "tspd_n": sizes, "tspd_times": 1e-9 * sizes, "tspd_steps": 20, "steps_values": sizes,
             "steps_times": 1e-9 * sizes, "steps_n": 1000}
 
@@ -242,3 +282,8 @@ def cost(power):
 def test_cost_claims_fail_for_a_quadratic_kernel():
     assert status(v.cost_claims(cost(1.0), quiet(), 3, (0.8, 1.2)), "cost.hull") == "pass"
     assert status(v.cost_claims(cost(2.0), quiet(), 3, (0.8, 1.2)), "cost.hull") == "fail"
+    slow = cost(1.0)
+    for key in ("rank_times", "tspd_times"):
+        slow[key] = 1e-12 * slow["rank_n"] ** 2
+    claims = v.cost_claims(slow, quiet(), 3, (0.8, 1.2))
+    assert status(claims, "cost.rank_step") == "fail" and status(claims, "cost.tspd_n") == "fail"
