@@ -22,15 +22,25 @@ LTP_CAPTIONS = {
         f"W = {power(LTP['fig7']['a'])} - {power(LTP['fig7']['b'])} from (6.3), {LTP['fig7']['steps']} steps: density snapshots, concentrating on two points."
     ),
     "fig8": (
-        f"W = {power(LTP['fig8']['a'])} - {power(LTP['fig8']['b'])} from (6.2), {LTP['fig8']['steps']} steps: SP and LTP end states and particle sizes; the SP density oscillates."
+        f"W = {power(LTP['fig8']['a'])} - {power(LTP['fig8']['b'])} from (6.2), h = {LTP['fig8']['h']}, {LTP['fig8']['steps']} steps up to t = {LTP['fig8']['t']}: SP (eps = {LTP['fig8']['sp_eps']}) and LTP densities at the paper's time and at the SP steady time, and particle sizes."
+    ),
+    "long_time": (
+        f"Long-time measures: the collapse measure of Figure 5, the concentration of Figures 6-7 up to t = {LTP['fig6']['t_long']}, and the peaks of Figure 8 up to t = {LTP['fig8']['t_long']}."
+    ),
+    "nonaffine": (
+        f"W = {power(LTP['nonaffine']['a'])} from (6.1), t = {LTP['nonaffine']['t']}, dt = {LTP['nonaffine']['dt']}: LTP errors against h = {LTP['nonaffine']['reference_h']}; drift of the centre of mass for W = {power(LTP['nonaffine']['centre_of_mass']['a'])} - {power(LTP['nonaffine']['centre_of_mass']['b'])}."
     ),
 }
 
-LTP_FIGURES = expand("figures/ltp/fig{number}.{ext}", number=range(1, 9), ext=["pdf", "png"])
+LTP_FIGURES = expand(
+    "figures/ltp/{name}.{ext}",
+    name=[*(f"fig{number}" for number in range(1, 9)), "long_time", "nonaffine"],
+    ext=["pdf", "png"],
+)
 # Figures 5 and 6 share one layout: rows potential, density, velocity, particle size.
 LTP_ROW_TITLES = {
-    "fig5": "LTP, W = |x|^a/a from (6.2), h = 0.01, 200 steps",
-    "fig6": "LTP, W = |x|^3/3 - |x|^b/b from (6.2), h = 0.01, 200 steps",
+    "fig5": f"LTP, W = |x|^a/a from (6.2), h = {LTP['fig5']['h']}, {LTP['fig5']['steps']} steps",
+    "fig6": f"LTP, W = |x|^3/3 - |x|^b/b from (6.2), h = {LTP['fig6']['h']}, {LTP['fig6']['steps']} steps",
 }
 
 
@@ -134,6 +144,7 @@ rule ltp_rows_data:
         ENVIRONMENT
     params:
         cfg=lambda wildcards: LTP[wildcards.figure],
+        concentration=LTP["concentration"],
     script:
         "../scripts/ltp/rows_data.py"
 
@@ -170,6 +181,7 @@ rule ltp_fig7_data:
         ENVIRONMENT
     params:
         cfg=LTP["fig7"],
+        concentration=LTP["concentration"],
     script:
         "../scripts/ltp/fig7_data.py"
 
@@ -224,6 +236,60 @@ rule ltp_fig8:
         "../scripts/ltp/plot_fig8.py"
 
 
+rule ltp_nonaffine_data:
+    """Convergence on a flow that is not affine; centre of mass on asymmetric data."""
+    input:
+        code=imports("ltp/nonaffine_data.py"),
+    output:
+        "results/ltp/nonaffine.npz",
+    log:
+        "logs/ltp/nonaffine_data.log",
+    conda:
+        ENVIRONMENT
+    params:
+        cfg=LTP["nonaffine"],
+    script:
+        "../scripts/ltp/nonaffine_data.py"
+
+
+rule ltp_nonaffine:
+    """Figure: errors against h on the non-affine flow, centre-of-mass drift."""
+    input:
+        data="results/ltp/nonaffine.npz",
+        code=imports("ltp/plot_nonaffine.py"),
+    output:
+        **figure("figures/ltp/nonaffine"),
+    log:
+        "logs/ltp/nonaffine_plot.log",
+    conda:
+        ENVIRONMENT
+    params:
+        caption=caption(LTP_CAPTIONS, "nonaffine"),
+    script:
+        "../scripts/ltp/plot_nonaffine.py"
+
+
+rule ltp_long_time:
+    """Figure: the long-time measures of Figures 5-8."""
+    input:
+        fig5="results/ltp/fig5.npz",
+        fig6="results/ltp/fig6.npz",
+        fig7="results/ltp/fig7.npz",
+        fig8="results/ltp/fig8.npz",
+        code=imports("ltp/plot_long_time.py"),
+    output:
+        **figure("figures/ltp/long_time"),
+    log:
+        "logs/ltp/long_time_plot.log",
+    conda:
+        ENVIRONMENT
+    params:
+        caption=caption(LTP_CAPTIONS, "long_time"),
+        cfg=LTP,
+    script:
+        "../scripts/ltp/plot_long_time.py"
+
+
 rule ltp_claims:
     """Measure every LTP claim from the cached results; record every fitted rate."""
     input:
@@ -233,6 +299,7 @@ rule ltp_claims:
         fig6="results/ltp/fig6.npz",
         fig7="results/ltp/fig7.npz",
         fig8="results/ltp/fig8.npz",
+        nonaffine="results/ltp/nonaffine.npz",
         code=imports("ltp/claims.py"),
     output:
         claims="results/ltp/claims.csv",
@@ -241,5 +308,7 @@ rule ltp_claims:
         "logs/ltp/claims.log",
     conda:
         ENVIRONMENT
+    params:
+        cfg=LTP,
     script:
         "../scripts/ltp/claims.py"

@@ -1,22 +1,59 @@
-"""Figure 8: end states of the SP and LTP methods for |x|^4/4 - |x|^2.5/2.5 from (6.2)."""
+"""Figure 8: the SP and LTP methods for |x|^4/4 - |x|^2.5/2.5 from (6.2), followed in time.
+
+Both runs continue past the figure's time ``t`` to ``t_long``; every ``record_every`` steps we
+keep the centres, the widths and the number of peaks of the density (sampled on a fine grid and
+at every particle centre, so that particles narrower than the grid are seen). The steadiness
+criterion of the config (relative change of the centres over a window) gives each method's
+steady time; the figure shows both methods at the paper's time and at the SP steady time."""
+
+import math
 
 import numpy as np
 
 from particle_methods.ltp import density_named, potential, simulate
+from particle_methods.ltp.measures import excess_variation, peak_count
+from particle_methods.steady import first_steady_time
 from particle_methods.workflow import logged, progress, save_results
+
+
+def sampled(particles, grid):
+    points = np.union1d(grid, particles.centres)
+    return points, particles.density(points)
 
 
 def run(p, output):
     initial = density_named(p["initial"])
     w = potential("attractive_repulsive", a=p["a"], b=p["b"])
     dt = p["t"] / p["steps"]
+    steps = int(round(max(p["t"], p["t_long"]) / dt))
     grid = np.linspace(-1.1, 1.1, 8801)
-    results = {"grid": grid, "label": np.array(w.name)}
+    results = {"grid": grid, "label": np.array(w.name), "h": p["h"], "dt": dt, "steps": p["steps"], "t": p["t"],
+               "sp_eps": p["sp_eps"]}
+    runs = {}
     for method, eps in (("ltp", None), ("sp", p["sp_eps"])):
-        progress(f"{method}: {p['steps']} steps up to t = {p['t']}")
-        final = simulate(initial, w, p["h"], dt, p["t"], method=method, eps=eps).at(-1)
-        results.update({f"{method}_density": final.density(grid), f"{method}_centres": final.centres,
-                        f"{method}_widths": final.widths, f"{method}_mass": final.mass})
+        progress(f"{method}: {steps} steps up to t = {steps * dt:g}")
+        runs[method] = simulate(initial, w, p["h"], dt, steps * dt, method=method, eps=eps,
+                                record_every=p["record_every"])
+    times = runs["sp"].times
+    for method, sim in runs.items():
+        samples = [sampled(sim.at(i), grid) for i in range(times.size)]
+        peaks = np.array([peak_count(density, p["prominence"]) for _, density in samples])
+        oscillation = np.array([excess_variation(x, density) for x, density in samples])
+        steady = first_steady_time(times, sim.centres, p["steady"]["window"], p["steady"]["tolerance"])
+        progress(f"{method}: peaks {peaks.tolist()}; excess variation {np.round(oscillation, 3).tolist()}; "
+                 f"steady from t = {steady:g}")
+        results.update({f"{method}_times": times, f"{method}_peaks": peaks, f"{method}_oscillation": oscillation,
+                        f"{method}_steady": steady,
+                        f"{method}_centres": sim.centres, f"{method}_widths": sim.widths,
+                        f"{method}_weights": sim.weights})
+    paper_index = int(np.argmin(np.abs(times - p["t"])))
+    steady_sp = results["sp_steady"]
+    steady_index = int(np.argmin(np.abs(times - steady_sp))) if math.isfinite(steady_sp) else times.size - 1
+    for name, index in (("paper", paper_index), ("steady", steady_index)):
+        results[f"{name}_time"] = times[index]
+        for method, sim in runs.items():
+            points, density = sampled(sim.at(index), grid)
+            results[f"{method}_{name}_x"], results[f"{method}_{name}_density"] = points, density
     save_results(output, **results)
 
 

@@ -13,8 +13,9 @@ def run(d, output):
     for colour, t, density in zip(colours, d["times"], d["densities"]):
         ax.plot(d["grid"], density, color=colour, label=f"t = {t:.3g}")
     ax.set(xlabel="x", ylabel="density rho_h", yscale="log", ylim=(1e-2, 2 * d["densities"].max()))
-    ax.legend(ncol=2)
-    ax.set_title(f"LTP, W = {d['label']}, data (6.3): concentration on finitely many points")
+    ax.legend(ncol=2, fontsize="small", loc="upper center")
+    ax.set_title(f"LTP, W = {d['label']}, data (6.3), h = {float(d['h']):g}, dt = {float(d['dt']):g}, "
+                 f"N = {int(d['steps'])} steps", fontsize="medium")
     save_figure(fig, output.pdf, output.png)
 
 

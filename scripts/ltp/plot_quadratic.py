@@ -1,5 +1,6 @@
 """Figures 2 and 3 from the cached W = x^2 runs."""
 
+import numpy as np
 
 from particle_methods.convergence import fit_order
 from particle_methods.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure
@@ -28,34 +29,61 @@ def figure2(d, output):
     label_panel(ax, "(b) LTP errors against h")
 
     ax = axes[2]
-    ax.plot(d["grid"], d["exact"], "k-", lw=2, label="exact (6.4)")
+    exact_variation = np.abs(np.diff(d["exact"])).sum()
     for eps, density in zip(d["sp_eps"], d["sp_densities"]):
-        ax.plot(d["grid"], density, lw=0.9, label=f"SP, eps = {eps:g}")
+        # Widths below h oscillate at the particle spacing (total variation far above the exact
+        # one): thin and translucent, under the rest, so they cannot fill the panel.
+        rough = np.abs(np.diff(density)).sum() > 1.5 * exact_variation
+        ax.plot(
+            d["grid"],
+            density,
+            lw=0.5 if rough else 1.2,
+            alpha=0.45 if rough else 0.9,
+            zorder=1 if rough else 2,
+            label=f"SP, eps = {eps:g}",
+        )
+    # The exact solution last and on top, so the oscillating curves cannot hide it.
+    ax.plot(d["grid"], d["exact"], color="k", ls=(0, (4, 2)), lw=1.4, zorder=10, label="exact (6.4)")
     ax.set(xlabel="x", ylabel="density", xlim=(-0.6, 0.4))
-    ax.legend()
-    label_panel(ax, "(c) SP with h = 0.01 and fixed eps")
-    fig.suptitle("W = x^2, data (6.1), dt = 1e-4, B3 shape")
+    legend = ax.legend(loc="upper left")
+    for handle in legend.legend_handles:
+        handle.set_linewidth(1.5)
+        handle.set_alpha(1.0)
+    label_panel(ax, f"(c) SP with h = {float(d['sp_h']):g} and fixed eps")
+    fig.suptitle(f"W = x^2, data (6.1), dt = {float(d['dt']):g}, B3 shape, t = {float(d['t']):g}")
     save_figure(fig, output.fig2_pdf, output.fig2_png)
 
 
 def figure3(d, output):
-    fig, axes = new_figure(1, 2, width=11, height=4.2)
+    fig, axes = new_figure(1, 3, width=16, height=4.4)
+    t = float(d["t"])
     ax = axes[0]
     for column, name, colour in ((0, "L1", "C0"), (1, "Linf", "C3")):
-        ax.loglog(d["eps_values"], d["scan_sp"][:, column], "o-", ms=3, color=colour, label=f"SP {name}")
-        ax.axhline(d["scan_ltp"][column], color=colour, ls="--", label=f"LTP {name}")
-    ax.set(xlabel="SP particle width eps", ylabel="error at t = 0.5")
-    ax.legend()
-    label_panel(ax, "(a) h = 0.01, dt = 0.01")
+        ax.loglog(d["eps_values"], d["scan_sp"][:, column], "o-", ms=3, color=colour,
+                  label=f"SP {name}, dt = {float(d['scan_dt']):g}")
+        ax.axhline(d["scan_ltp"][column], color=colour, ls="--", label=f"LTP {name}, dt = {float(d['scan_dt']):g}")
+        ax.loglog(d["eps_values"], d["scan_sp_fine"][:, column], "^:", ms=3, color=colour, alpha=0.7,
+                  label=f"SP {name}, dt = {float(d['fine_dt']):g}")
+        ax.axhline(d["scan_ltp_fine"][column], color=colour, ls=":", label=f"LTP {name}, dt = {float(d['fine_dt']):g}")
+    ax.axvline(float(d["scan_h"]) * np.exp(-2 * t), color="0.5", lw=0.8)
+    ax.set(xlabel="SP particle width eps (grey: h e^{-2t}, the LTP width)", ylabel=f"error at t = {t:g}")
+    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2)
+    label_panel(ax, f"(a) h = {float(d['scan_h']):g}")
     ax = axes[1]
     for column, name, colour in ((0, "L1", "C0"), (1, "Linf", "C3")):
         ax.loglog(d["h_values"], d["sp_errors"][:, column], "o-", color=colour, label=f"SP (eps = h) {name}")
         ax.loglog(d["h_values"], d["ltp_errors"][:, column], "s--", color=colour, label=f"LTP {name}")
-    ax.set(xlabel="h", ylabel="error at t = 0.5")
+    ax.set(xlabel="h", ylabel=f"error at t = {t:g}")
     hide_minor_log_labels(ax)
-    ax.legend()
-    label_panel(ax, "(b) dt = 1e-4, eps = h")
-    fig.suptitle("SP against LTP errors, W = x^2, data (6.1)")
+    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2)
+    label_panel(ax, f"(b) dt = {float(d['dt']):g}, eps = h")
+    ax = axes[2]
+    for h, errors, marker in zip(d["dt_h"], d["dt_errors"], "os^v"):
+        ax.loglog(d["dt_values"], errors[:, 0], marker + "-", ms=4, label=f"LTP L1, h = {h:g}")
+    ax.set(xlabel="dt", ylabel=f"L1 error at t = {t:g}")
+    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2)
+    label_panel(ax, "(c) error against dt at fixed h (Theorem 1: dt/h)")
+    fig.suptitle("SP against LTP errors, W = x^2, data (6.1); the time step")
     save_figure(fig, output.fig3_pdf, output.fig3_png)
 
 

@@ -40,13 +40,31 @@ def run(p, output):
     scan_ltp = errors(simulate(initial, w, scan["h"], scan["dt"], t), initial, w, t, grid)
     scan_sp = np.array([errors(simulate(initial, w, scan["h"], scan["dt"], t, method="sp", eps=eps),
                                initial, w, t, grid) for eps in eps_values])
+    fine = scan["fine_dt"]
+    progress(f"eps scan again at dt = {fine:g}, where the time error is negligible")
+    scan_ltp_fine = errors(simulate(initial, w, scan["h"], fine, t), initial, w, t, grid)
+    scan_sp_fine = np.array([errors(simulate(initial, w, scan["h"], fine, t, method="sp", eps=eps),
+                                    initial, w, t, grid) for eps in eps_values])
+
+    study = p["dt_study"]
+    progress(f"dt study: h = {study['h_values']}, dt = {study['dt_values']}")
+    dt_errors, dt_gaps = [], []
+    for h in study["h_values"]:
+        runs = [simulate(initial, w, h, step, t).at(-1).density(grid) for step in study["dt_values"]]
+        dt_errors.append([grid_errors(run, exact_density(initial, w, t, grid), grid) for run in runs])
+        dt_gaps.append([grid_errors(run, runs[-1], grid) for run in runs[:-1]])
+    dt_errors, dt_gaps = np.array(dt_errors), np.array(dt_gaps)
     save_results(
         output, grid=grid, exact=exact_density(initial, w, t, grid), h_values=h_values,
         ltp_errors=np.array(ltp_errors), sp_errors=np.array(sp_errors), mass_error=np.array(mass_error),
         centre_drift=np.array(centre_drift), plot_h=np.array(sorted(plot_density, reverse=True)),
         plot_density=np.array([plot_density[h] for h in sorted(plot_density, reverse=True)]),
         sp_eps=np.asarray(p["sp_eps"], float), sp_densities=sp_densities, eps_values=eps_values,
-        scan_ltp=np.array(scan_ltp), scan_sp=scan_sp, order_points=p["order_points"], t=t,
+        scan_ltp=np.array(scan_ltp), scan_sp=scan_sp, order_points=p["order_points"], t=t, dt=dt, sp_h=p["sp_h"],
+        scan_dt=scan["dt"], scan_h=scan["h"], fine_dt=fine, scan_ltp_fine=np.array(scan_ltp_fine),
+        scan_sp_fine=scan_sp_fine, dt_h=np.asarray(study["h_values"], float),
+        dt_values=np.asarray(study["dt_values"], float), dt_errors=dt_errors, dt_gaps=dt_gaps,
+        dt_fit_points=study["fit_points"],
     )
 
 

@@ -1,8 +1,14 @@
-"""Figures 5 and 6: potential, density, velocity and particle sizes of LTP runs from (6.2)."""
+"""Figures 5 and 6: potential, density, velocity and particle sizes of LTP runs from (6.2).
+
+Every step is recorded, for the collapse measure of Figure 5 (the smallest particle width and the
+spread of the centres at every step). Figure 6 runs continue past the figure's final time to
+``t_long`` with the same time step, for the concentration measures (width holding a fraction of
+each side's mass, mass near each side's peak, density at the edge over the centre)."""
 
 import numpy as np
 
 from particle_methods.ltp import density_named, potential, simulate
+from particle_methods.ltp.measures import concentration_series
 from particle_methods.workflow import logged, progress, save_results
 
 
@@ -12,30 +18,39 @@ def case_potential(p, case):
     return potential("power", a=case["a"])
 
 
-def run(p, output):
+def run(p, concentration, output):
     initial = density_named(p["initial"])
     results = {"labels": []}
     grid = np.linspace(-1.1, 1.1, 2201)
     x_potential = np.linspace(-2.0, 2.0, 401)
     for index, case in enumerate(p["cases"]):
         w = case_potential(p, case)
-        label = w.name
-        progress(f"{label}: {p['steps']} steps up to t = {case['t']}")
-        every = p["steps"] // 20
-        sim = simulate(initial, w, p["h"], case["t"] / p["steps"], case["t"], record_every=every,
-                       log=progress)
-        shown = np.linspace(0, sim.steps.size - 1, p["snapshots"]).round().astype(int)
-        results["labels"].append(label)
+        dt = case["t"] / p["steps"]
+        t_end = max(case["t"], case.get("t_long", p.get("t_long", case["t"])))
+        steps = int(round(t_end / dt))
+        progress(f"{w.name}: {steps} steps of {dt:g} up to t = {t_end:g} (figure: t <= {case['t']:g})")
+        sim = simulate(initial, w, p["h"], dt, steps * dt, record_every=1, log=None)
+        shown = np.linspace(0, p["steps"], p["snapshots"]).round().astype(int)
         prefix = f"case{index}"
+        results["labels"].append(w.name)
         results.update({
-            f"{prefix}_times": sim.times, f"{prefix}_centres": sim.centres, f"{prefix}_widths": sim.widths,
+            f"{prefix}_times": sim.times, f"{prefix}_figure_t": case["t"],
+            f"{prefix}_centres": sim.centres, f"{prefix}_widths": sim.widths,
             f"{prefix}_velocities": sim.velocities, f"{prefix}_weights": sim.weights,
             f"{prefix}_shown": shown, f"{prefix}_densities": sim.densities(grid)[shown],
-            f"{prefix}_peaks": sim.peak_densities(), f"{prefix}_potential": w(x_potential),
+            f"{prefix}_potential": w(x_potential),
         })
+        if "b" in case:
+            widths, masses = concentration_series(sim, concentration["fraction"], concentration["radius"])
+            centre = np.argmin(np.abs(grid))
+            edge_ratio = np.array([density.max() / density[centre] for density in sim.densities(grid)])
+            results.update({f"{prefix}_concentration_widths": widths, f"{prefix}_concentration_masses": masses,
+                            f"{prefix}_edge_ratio": edge_ratio})
+            progress(f"  t = {t_end:g}: widths holding {concentration['fraction']:g} of each side "
+                     f"{widths[-1]}, mass within {concentration['radius']:g} of the peaks {masses[-1].sum():.4g}")
     results["labels"] = np.array(results["labels"])
-    save_results(output, grid=grid, x_potential=x_potential, h=p["h"], **results)
+    save_results(output, grid=grid, x_potential=x_potential, h=p["h"], steps=p["steps"], **results)
 
 
 with logged(snakemake.log[0]):  # noqa: F821
-    run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+    run(snakemake.params.cfg, snakemake.params.concentration, snakemake.output[0])  # noqa: F821

@@ -1,0 +1,143 @@
+"""Measures of the long-time behaviour of particle runs (section 6.2): collapse, concentration, peaks.
+
+- :func:`collapse_times`: whether a shrinking size (the smallest particle width, the spread of
+  the centres) collapses in finite time, from the inverse of its logarithmic shrink rate,
+  g(t) = -1 / (d log s / dt). For s ~ (T - t)^beta, g = (T - t)/beta falls linearly to 0 at the
+  collapse time T; for exponential shrinking g is constant, for algebraic shrinking (s ~ t^-p) it
+  grows. A line fitted to g over a window gives a slope (negative: finite-time collapse) and,
+  when negative, the extrapolated collapse time, which does not depend on where the run stops.
+- :func:`side_concentration`: on each side of x = 0, the width of the smallest interval holding a
+  fraction of that side's mass, and the mass within a radius of the side's densest particle.
+  Dirac masses forming: width to 0, mass near the peak to the side's mass; an L1 profile: both
+  settle.
+- :func:`peak_count`: local maxima of a sampled density standing out from their surroundings.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.signal import find_peaks
+
+from ..validation import finite_array, in_interval, positive, same_length
+
+
+def shrink_rate_inverse(times, sizes) -> np.ndarray:
+    """g(t) = -1 / (d log s / dt) at every recorded time (centred differences)."""
+    times = finite_array("times", times)
+    sizes = finite_array("sizes", sizes)
+    same_length(times=times, sizes=sizes)
+    if times.size < 3 or np.any(np.diff(times) <= 0):
+        raise ValueError("times must be increasing, with at least three records")
+    if np.any(sizes <= 0):
+        raise ValueError("sizes must be positive")
+    rate = -np.gradient(np.log(sizes), times)
+    with np.errstate(divide="ignore"):
+        return np.where(rate != 0, 1.0 / np.where(rate != 0, rate, 1.0), np.inf)
+
+
+def collapse_times(times, sizes, windows) -> tuple[np.ndarray, np.ndarray]:
+    """Slope of g(t) and extrapolated collapse time (``inf`` unless the slope is negative) for
+    every window, given as fractions (start, end) of the run's duration."""
+    times = finite_array("times", times)
+    g = shrink_rate_inverse(times, sizes)
+    span = times[-1] - times[0]
+    slopes, collapse = [], []
+    for start, end in windows:
+        start, end = in_interval("window", np.array([start, end], float), 0.0, 1.0)
+        inside = (times >= times[0] + start * span - 1e-12) & (times <= times[0] + end * span + 1e-12)
+        if inside.sum() < 3 or not np.all(np.isfinite(g[inside])):
+            raise ValueError(f"window ({start}, {end}) holds too few finite records of g")
+        slope, intercept = np.polyfit(times[inside], g[inside], 1)
+        slopes.append(slope)
+        collapse.append(-intercept / slope if slope < 0 else math.inf)
+    return np.array(slopes), np.array(collapse)
+
+
+def side_concentration(centres, weights, peak_values, fraction: float, radius: float):
+    """(widths, masses) on the sides x < 0 and x > 0.
+
+    widths[s]: the smallest interval holding ``fraction`` of side s's mass (particles as points);
+    masses[s]: the mass of the particles within ``radius`` of side s's particle with the largest
+    ``peak_values`` (the density at the centres), as a fraction of the total mass. A particle at
+    x = 0 belongs to neither side.
+    """
+    centres = finite_array("centres", centres)
+    weights = finite_array("weights", weights)
+    peak_values = finite_array("peak_values", peak_values)
+    same_length(centres=centres, weights=weights, peak_values=peak_values)
+    fraction = float(in_interval("fraction", np.array([fraction], float), 0.0, 1.0)[0])
+    radius = positive("radius", radius)
+    total = weights.sum()
+    if total <= 0:
+        raise ValueError("weights must have a positive sum")
+    widths, masses = [], []
+    for side in (centres < 0, centres > 0):
+        if not side.any():
+            raise ValueError("both sides of x = 0 need particles")
+        order = np.argsort(centres[side])
+        x, m = centres[side][order], weights[side][order]
+        cumulative = np.concatenate([[0.0], np.cumsum(m)])
+        need = fraction * cumulative[-1] * (1 - 1e-12)
+        # for every first particle i, the first j with mass(i..j) >= need
+        last = np.searchsorted(cumulative, cumulative[:-1] + need, side="left") - 1
+        valid = last < x.size
+        widths.append(float((x[last[valid]] - x[np.flatnonzero(valid)]).min()))
+        peak = centres[side][np.argmax(peak_values[side])]
+        masses.append(float(weights[side][np.abs(centres[side] - peak) <= radius].sum() / total))
+    return np.array(widths), np.array(masses)
+
+
+def peak_count(density, prominence: float = 0.05) -> int:
+    """Local maxima of a sampled density whose prominence is at least ``prominence`` times their
+    own height."""
+    density = finite_array("density", density)
+    prominence = positive("prominence", prominence)
+    peaks, properties = find_peaks(density, prominence=0.0)
+    return int(np.sum(properties["prominences"] >= prominence * density[peaks]))
+
+
+def excess_variation(x, density) -> float:
+    """TV(rho) / (2 (max over x < 0 + max over x > 0)) - 1 for a density sampled at increasing x that
+    vanishes at both ends: 0 (or below, with a valley between) for one peak on each side, positive
+    when ripples add variation. A small bump adds variation in proportion to its height only."""
+    x = finite_array("x", x)
+    density = finite_array("density", density)
+    same_length(x=x, density=density)
+    if np.any(np.diff(x) <= 0):
+        raise ValueError("x must be increasing")
+    left, right = density[x < 0], density[x > 0]
+    if left.size == 0 or right.size == 0 or left.max() <= 0 or right.max() <= 0:
+        raise ValueError("the density needs mass on both sides of x = 0")
+    variation = np.abs(np.diff(density)).sum() + density[0] + density[-1]
+    return float(variation / (2 * (left.max() + right.max())) - 1.0)
+
+
+def shrink_factor(times, sizes, window: float, since: float) -> float:
+    """Smallest factor s(t - window)/s(t) over the recorded t >= ``since``: at least 2 means the
+    size halves over every window, a settled size gives 1."""
+    times = finite_array("times", times)
+    sizes = finite_array("sizes", sizes)
+    same_length(times=times, sizes=sizes)
+    window = positive("window", window)
+    if np.any(sizes <= 0):
+        raise ValueError("sizes must be positive")
+    earlier = np.searchsorted(times, times - window + 1e-9 * window, side="left")
+    usable = (times - window >= times[0] - 1e-9 * window) & (times >= since)
+    if not usable.any():
+        raise ValueError("no recorded time at least one window after the start and after `since`")
+    return float((sizes[earlier[usable]] / sizes[usable]).min())
+
+
+def concentration_series(simulation, fraction: float, radius: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`side_concentration` at every recorded step of a :class:`~.solver.Simulation`, the
+    densest particle found from the density at the centres: arrays of shape (records, 2)."""
+    widths, masses = [], []
+    for index in range(simulation.steps.size):
+        particles = simulation.at(index)
+        w, m = side_concentration(particles.centres, particles.weights, particles.density(particles.centres),
+                                  fraction, radius)
+        widths.append(w)
+        masses.append(m)
+    return np.array(widths), np.array(masses)
