@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from particle_methods.ltp import density_named, potential, simulate
+from particle_methods.ltp import Particles, density_named, potential, simulate
 from particle_methods.ltp.measures import excess_variation, peak_count
 from particle_methods.steady import first_steady_time
 from particle_methods.workflow import logged, progress, save_results
@@ -46,6 +46,17 @@ def run(p, output):
                         f"{method}_steady": steady,
                         f"{method}_centres": sim.centres, f"{method}_widths": sim.widths,
                         f"{method}_weights": sim.weights})
+    # Why LTP does not settle: the particle at x = 0 sits where W'' * rho_h < 0 and widens; its share of
+    # the velocity of the outermost particles at the end of the run.
+    final = runs["ltp"].at(-1)
+    wide = int(np.argmax(final.widths))
+    alone = Particles(final.centres[[wide]], final.weights[[wide]], final.widths[[wide]], final.shape)
+    ends = final.centres[[np.argmin(final.centres), np.argmax(final.centres)]]
+    share = np.abs(alone.convolutions(w, ends)[0]) / np.abs(final.convolutions(w, ends)[0])
+    results.update(widest_centre=final.centres[wide], widest_width=final.widths[wide],
+                   widest_weight=final.weights[wide], widest_share=share.max())
+    progress(f"ltp at t = {times[-1]:g}: widest particle at x = {final.centres[wide]:.3g}, width "
+             f"{final.widths[wide]:.3g}, share of the outer velocities {share.max():.3g}")
     paper_index = int(np.argmin(np.abs(times - p["t"])))
     steady_sp = results["sp_steady"]
     steady_index = int(np.argmin(np.abs(times - steady_sp))) if math.isfinite(steady_sp) else times.size - 1

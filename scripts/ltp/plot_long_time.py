@@ -40,14 +40,21 @@ def run(inputs, p, output):
     axes[1, 0].legend(fontsize="small")
     label_panel(axes[1, 0], "(c) Figures 6-7: mass near the peaks")
     ax = axes[1, 1]
+    spread = ax.twinx()
     for method, colour in (("sp", "C3"), ("ltp", "C0")):
-        ax.step(d8[f"{method}_times"], np.maximum(d8[f"{method}_peaks"], 0.8), where="mid", color=colour,
-                label=method.upper())
+        times = d8[f"{method}_times"]
+        ax.plot(times, d8[f"{method}_oscillation"], "-", color=colour, label=f"{method.upper()}: excess variation")
+        spread.plot(times, np.ptp(d8[f"{method}_centres"], axis=1), ":", color=colour,
+                    label=f"{method.upper()}: spread of the centres")
         steady = float(d8[f"{method}_steady"])
         if math.isfinite(steady):
             ax.axvline(steady, color=colour, ls="--", lw=1, label=f"{method.upper()} steady from t = {steady:g}")
-    ax.set(xlabel="t", ylabel="peaks of the density", yscale="log")
-    ax.legend(fontsize="small")
+    ax.axhline(float(p["fig8"]["oscillation"]), color="0.4", lw=0.8, label="oscillation threshold")
+    ax.set(xlabel="t", ylabel="TV / (2 (max left + max right)) - 1")
+    spread.set(ylabel="max x_k - min x_k", ylim=(0, None))
+    lines = ax.get_legend_handles_labels()
+    more = spread.get_legend_handles_labels()
+    ax.legend(lines[0] + more[0], lines[1] + more[1], fontsize="x-small", loc="lower left", bbox_to_anchor=(0.08, 0.02))
     label_panel(ax, f"(d) Figure 8, W = {d8['label']}")
     fig.suptitle("LTP paper, section 6.2: the long-time behaviour measured")
     save_figure(fig, output.pdf, output.png)

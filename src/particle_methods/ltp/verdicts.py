@@ -294,6 +294,13 @@ def fig8_claims(d, p):
         claim(c.at_most, "fig8.ltp_smooth", "paper", "Figure 8, section 6.2", "8",
               f"the LTP state has no oscillations, largest over the run up to t = {t_long:g}: {measure}", limit,
               float(d["ltp_oscillation"].max()), published="no oscillation"),
+        claim(c.at_least, "fig8.ltp_central_particle", "check", "Figure 8: why LTP does not settle", "8",
+              f"at t = {t_long:g} the LTP particle at x = {float(d['widest_centre']):.2g} (mass "
+              f"{float(d['widest_weight']):.2g}), where W'' * rho_h < 0, has widened to "
+              f"{float(d['widest_width']):.3g}; "
+              "its contribution to the velocity of the outermost particles over their whole velocity (above 1: the "
+              "other particles oppose it): it pulls the two concentrations together",
+              0.5, float(d["widest_share"])),
         claim(c.at_least, "fig8.sp_transient", "check", "Figure 8 at the paper's time", "8",
               f"SP oscillates at t = {float(d['sp_times'][paper]):g}, the end of the paper's N = {int(d['steps'])} "
               f"steps: {measure} (local maxima: {int(d['sp_peaks'][paper])})", limit,
