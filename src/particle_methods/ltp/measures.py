@@ -22,6 +22,10 @@ from scipy.signal import find_peaks
 
 from ..validation import finite_array, in_interval, positive, same_length
 
+#: A shrink rate (per unit time) and a slope of g below these are zero up to rounding.
+RATE_ZERO = 1e-12
+SLOPE_ZERO = 1e-9
+
 
 def shrink_rate_inverse(times, sizes) -> np.ndarray:
     """g(t) = -1 / (d log s / dt) at every recorded time (centred differences)."""
@@ -33,8 +37,8 @@ def shrink_rate_inverse(times, sizes) -> np.ndarray:
     if np.any(sizes <= 0):
         raise ValueError("sizes must be positive")
     rate = -np.gradient(np.log(sizes), times)
-    with np.errstate(divide="ignore"):
-        return np.where(rate != 0, 1.0 / np.where(rate != 0, rate, 1.0), np.inf)
+    moving = np.abs(rate) > RATE_ZERO
+    return np.where(moving, 1.0 / np.where(moving, rate, 1.0), np.inf)
 
 
 def collapse_times(times, sizes, windows) -> tuple[np.ndarray, np.ndarray]:
@@ -50,6 +54,7 @@ def collapse_times(times, sizes, windows) -> tuple[np.ndarray, np.ndarray]:
         if inside.sum() < 3 or not np.all(np.isfinite(g[inside])):
             raise ValueError(f"window ({start}, {end}) holds too few finite records of g")
         slope, intercept = np.polyfit(times[inside], g[inside], 1)
+        slope = 0.0 if abs(slope) <= SLOPE_ZERO else slope  # exponential shrinking: 0 up to rounding
         slopes.append(slope)
         collapse.append(-intercept / slope if slope < 0 else math.inf)
     return np.array(slopes), np.array(collapse)
@@ -68,6 +73,8 @@ def side_concentration(centres, weights, peak_values, fraction: float, radius: f
     peak_values = finite_array("peak_values", peak_values)
     same_length(centres=centres, weights=weights, peak_values=peak_values)
     fraction = float(in_interval("fraction", np.array([fraction], float), 0.0, 1.0)[0])
+    if fraction <= 0:
+        raise ValueError(f"fraction must be positive, got {fraction}")
     radius = positive("radius", radius)
     total = weights.sum()
     if total <= 0:
@@ -123,8 +130,8 @@ def shrink_factor(times, sizes, window: float, since: float) -> float:
     window = positive("window", window)
     if np.any(sizes <= 0):
         raise ValueError("sizes must be positive")
-    earlier = np.searchsorted(times, times - window + 1e-9 * window, side="left")
-    usable = (times - window >= times[0] - 1e-9 * window) & (times >= since)
+    earlier = np.searchsorted(times, times - window + 1e-9 * window, side="right") - 1  # latest <= t - window
+    usable = (earlier >= 0) & (times >= since)
     if not usable.any():
         raise ValueError("no recorded time at least one window after the start and after `since`")
     return float((sizes[earlier[usable]] / sizes[usable]).min())
