@@ -26,9 +26,16 @@ BLOB_CAPTIONS = {
     "fig8": (
         f"2D particle (top) and blob (bottom, delta = {BLOB['fig8']['delta']}) end states for the Morse kernels e^-|x| - 2e^-|x|/2 and 2e^-|x| - 2e^-|x|/2, data (4.7) and the star patch."
     ),
+    "repulsive": (
+        f"K = -|x|/2, data (4.5), t = {BLOB['fig4']['t']}, q = {BLOB['fig4']['q']}: density error of the blob method (m = 4, 6) split into its quadrature and regularisation parts, with the model of the quadrature part fitted on the paper's h and the runs extended to h = 1/{BLOB['fig4']['repulsive']['extra_inverse_h'][-1]}."
+    ),
 }
 
-BLOB_FIGURES = expand("figures/blob/fig{number}.{ext}", number=range(1, 9), ext=["pdf", "png"])
+BLOB_FIGURES = expand(
+    "figures/blob/{name}.{ext}",
+    name=[*(f"fig{number}" for number in range(1, 9)), "repulsive"],
+    ext=["pdf", "png"],
+)
 BLOB_COMPARE_TITLES = {
     "fig7": "Repulsive-attractive power kernels, data (4.7): particle (top) and blob (bottom) methods",
     "fig8": "Morse kernels, data (4.7) and star patch (4.6): particle (top) and blob (bottom) methods",
@@ -94,6 +101,41 @@ rule blob_fig4_data:
         "../scripts/blob/fig4_data.py"
 
 
+rule blob_repulsive_data:
+    """Figure 4, K = -|x|/2: the density error split into quadrature and regularisation parts, and
+    the runs extended to finer h."""
+    input:
+        fig4="results/blob/fig4.npz",
+        code=imports("blob/repulsive_data.py"),
+    output:
+        "results/blob/repulsive.npz",
+    log:
+        "logs/blob/repulsive_data.log",
+    conda:
+        ENVIRONMENT
+    params:
+        cfg={**BLOB["fig4"], **BLOB["fig4"]["repulsive"]},
+    script:
+        "../scripts/blob/repulsive_data.py"
+
+
+rule blob_repulsive:
+    """Figure: the two parts of the repulsive density error and the model's prediction."""
+    input:
+        data="results/blob/repulsive.npz",
+        code=imports("blob/plot_repulsive.py"),
+    output:
+        **figure("figures/blob/repulsive"),
+    log:
+        "logs/blob/repulsive_plot.log",
+    conda:
+        ENVIRONMENT
+    params:
+        caption=caption(BLOB_CAPTIONS, "repulsive"),
+    script:
+        "../scripts/blob/plot_repulsive.py"
+
+
 rule blob_fig4:
     """Figure 4 from the cached runs."""
     input:
@@ -122,6 +164,7 @@ rule blob_claims:
         fig6="results/blob/fig6.npz",
         fig7="results/blob/fig7.npz",
         fig8="results/blob/fig8.npz",
+        repulsive="results/blob/repulsive.npz",
         code=imports("blob/claims.py"),
     output:
         claims="results/blob/claims.csv",
@@ -130,6 +173,8 @@ rule blob_claims:
         "logs/blob/claims.log",
     conda:
         ENVIRONMENT
+    params:
+        cfg=BLOB,
     script:
         "../scripts/blob/claims.py"
 

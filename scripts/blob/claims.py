@@ -18,7 +18,7 @@ RATES = Recorder(progress)
 # Kind and source of every claim (see particle_methods.claims): "paper" for what the paper
 # states (where), "derived" for what we derive from its theory, "check" for our own checks.
 FIG4_RATE = ("paper", "Figure 4, section 4.3")
-FIG4_M6_RATE = ("paper", "Corollary 3.10 (rate m q); Figure 4, section 4.3")
+FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates better than m = 4, not as good as m q")
 KINDS = {
     "fig1d.order_trajectory": ("paper", "Figure 1D, section 4.2"),
     "fig1d.order_density": ("paper", "Figure 1D, section 4.2"),
@@ -27,7 +27,7 @@ KINDS = {
     "fig3.slower_trajectory": ("paper", "Figure 3D, section 4.2"),
     "fig3.slower_density": ("paper", "Figure 3D, section 4.2"),
     "fig1c.no_collision": ("paper", "Figure 1C, section 4.2"),
-    "fig2.no_bending": ("paper", "Figure 2, section 4.2"),
+    "fig2.no_bending": ("check", "Figure 2, section 4.2: straight in 1D by construction (constant velocities)"),
     "integrator": ("check", "ODE error far below the method error (section 4.1: VODE)"),
     "energy.decrease": ("paper", "section 2.2, energy (2.4)"),
     "mass": ("check", "conservation of mass (2.2), section 2.2"),
@@ -64,6 +64,14 @@ KINDS = {
     "fig7.log_ring_collapse": ("paper", "Figure 7, section 4.4"),
     "fig7.septic_three_points": ("paper", "Figure 7, section 4.4"),
     "fig8.regularisation_effect": ("paper", "Figure 8, section 4.4"),
+    "fig4.repulsive_decomposition": ("check", "Figure 4, K = -|x|/2: our split of the density error"),
+    "fig4.repulsive_quadrature_dominates": ("check", "Figure 4, K = -|x|/2: our split of the density error"),
+    "fig4.repulsive_regularisation_m4": ("derived", "Corollary 3.10 for the regularisation part alone"),
+    "fig4.repulsive_regularisation_m6": ("derived", "Corollary 3.10 for the regularisation part alone"),
+    "fig4.repulsive_same_quadrature": ("derived", "(4.1): m = 4 and m = 6 share the narrowest Gaussian"),
+    "fig4.repulsive_model": ("derived", "aliasing of the narrowest Gaussian (Poisson summation), J = 1 + t rho0"),
+    "fig4.repulsive_extended_order": ("check", "Figure 4, K = -|x|/2, runs extended to finer h (not in the paper)"),
+    "fig4.repulsive_coarse_window": ("check", "Figure 4: dependence on the unstated h range"),
 }
 
 
@@ -138,9 +146,10 @@ def fig4_claims(d):
             m6 = order(d, f"{kernel}_blob6_{part}", f"fig4.m6_{kernel}_{part}")
             out.append(claim(c.close_to, f"fig4.m4_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 4: {part} "
                              f"rate close to m q = {rate4:g}", rate4, m4, 0.3))
-            out.append(claim(c.close_to, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate; "
-                             "the paper's stayed below m q = 5.4, which it blamed on numerical kernel convolutions, "
-                             "and ours uses exact ones", rate6, m6, 0.4))
+            out.append(claim(c.between, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate "
+                             f"better than m = 4's ({m4:.3g}) and not as good as m q = {rate6:g} (the paper blames "
+                             "other error sources; our kernels are exact)", min(m4, rate6), rate6, m6,
+                             published=f"< {rate6:g}"))
             ratio = d[f"{kernel}_blob6_{part}"][-1] / d[f"{kernel}_blob4_{part}"][-1]
             out.append(claim(c.at_most, f"fig4.m6_better_{kernel}_{part}", "4", f"K = {names[kernel]}: m = 6 "
                              f"beats m = 4 ({part}): ratio of the finest errors", 1.0, float(ratio),
@@ -171,6 +180,70 @@ def fig4_claims(d):
                          f"K = -|x|/2, m = {m}, with q = {q:g} instead of 0.9: the density rate reaches m q, so the "
                          "slow density rate at q = 0.9 is the quadrature error of the spreading particles, not the "
                          "regularisation", m * q, rate, 0.3))
+    return out
+
+
+def quadrature_model(h, quadrature, q, jacobian):
+    """Fit log Q = log A + p log h - pi^2 (delta / (h J))^2 (delta = h^q); return (A, p)."""
+    aliasing = np.pi**2 * h ** (2 * (q - 1)) / jacobian**2
+    (log_a, power), *_ = np.linalg.lstsq(np.column_stack([np.ones(h.size), np.log(h)]), np.log(quadrature) + aliasing,
+                                         rcond=None)
+    return float(np.exp(log_a)), float(power)
+
+
+def repulsive_claims(d, p):
+    """Figure 4, K = -|x|/2: where the slow density rate comes from, and whether the model predicts
+    the finer runs."""
+    n, base = d["inverse_h"], int(d["base_count"])
+    h, q, k = 1.0 / n, float(d["q"]), int(p["fit_points"])
+    jacobian = float(d["jacobian"])
+    out = []
+    mismatch = max(float(np.abs(d[f"m{m}_combined"] / d[f"m{m}_total"] - 1).max()) for m in (4, 6))
+    share = min(float(d[f"m{m}_quadrature"][base - 1] / d[f"m{m}_combined"][base - 1]) for m in (4, 6))
+    out += [
+        claim(c.at_most, "fig4.repulsive_decomposition", "4", "K = -|x|/2: the quadrature and regularisation parts, "
+              "integrated along the exact trajectories, account for the measured density error: largest relative "
+              "gap between their sum and the blob runs' error, m = 4 and 6, every h", 0.25, mismatch),
+        claim(c.at_least, "fig4.repulsive_quadrature_dominates", "4", f"K = -|x|/2 at h = 1/{n[base - 1]}: the "
+              "quadrature part (particle sum against the exact mollified convolution) is most of the density error: "
+              "its share, smallest of m = 4 and 6", 0.5, share),
+    ]
+    for m in (4, 6):
+        slope = RATES.add(rates.order(f"{PAPER}.fig4.repulsive_regularisation_m{m}", "h", h[:base],
+                                      d[f"m{m}_regularisation"][:base], k))
+        out.append(claim(c.close_to, f"fig4.repulsive_regularisation_m{m}", "4", f"K = -|x|/2, m = {m}: the "
+                         f"regularisation part alone converges at m q = {m * q:g}: order on the {k} finest h of the "
+                         "paper's range", m * q, slope, 0.3))
+    ratio = float(d["m6_quadrature"][base - 1] / d["m4_quadrature"][base - 1])
+    out.append(claim(c.between, "fig4.repulsive_same_quadrature", "4", "m = 4 and m = 6 share the narrowest Gaussian "
+                     "of (4.1), which sets the quadrature error, so their density errors coincide: m = 6 over m = 4 "
+                     f"quadrature part at h = 1/{n[base - 1]}", 0.5, 2.0, ratio, published="(our derivation)"))
+    a, power = quadrature_model(h[:base], d["m4_quadrature"][:base], q, jacobian)
+    regularisation = np.polyfit(np.log(h[base - k:base]), np.log(d["m4_regularisation"][base - k:base]), 1)
+    fine = 1.0 / np.geomspace(n[base - 1], 64 * n[base - 1], 400)
+    model_q = a * fine**power * np.exp(-np.pi**2 * fine ** (2 * (q - 1)) / jacobian**2)
+    crossing = fine[np.argmax(model_q < np.exp(np.polyval(regularisation, np.log(fine))))]
+    errors = []
+    for m in (4, 6):
+        reg = np.polyfit(np.log(h[base - k:base]), np.log(d[f"m{m}_regularisation"][base - k:base]), 1)
+        predicted = (a * h[base:] ** power * np.exp(-np.pi**2 * h[base:] ** (2 * (q - 1)) / jacobian**2)
+                     + np.exp(np.polyval(reg, np.log(h[base:]))))
+        measured = d[f"m{m}_total"][base:]
+        errors.append(float(np.max(np.maximum(predicted / measured, measured / predicted))))
+    out.append(claim(c.at_most, "fig4.repulsive_model", "4", f"model of the quadrature part A h^p exp(-pi^2 (delta/(h "
+                     f"J))^2), J = {jacobian:g}, fitted on the paper's h (p = {power:.2f}), plus the regularisation "
+                     f"part's power law: it puts the return of the m q rate (quadrature below regularisation, m = 4) "
+                     f"at h = 1/{1 / crossing:.0f}, and predicts the runs at h = "
+                     f"{', '.join(f'1/{v}' for v in n[base:])}: largest factor between prediction and measurement",
+                     float(p["repulsive"]["model_factor"]), max(errors), published="(our model)"))
+    extended = RATES.add(rates.order(f"{PAPER}.fig4.repulsive_extended_order", "h", h, d["m4_total"], k,
+                                     "m = 4 density, extended"))
+    out.append(claim(c.close_to, "fig4.repulsive_extended_order", "4", f"K = -|x|/2, m = 4: density order on the {k} "
+                     f"finest h of the extended runs (to h = 1/{n[-1]})", 4 * q, extended, 0.3))
+    coarse = float(np.polyfit(np.log(h[:k]), np.log(d["m4_total"][:k]), 1)[0])
+    out.append(claim(c.close_to, "fig4.repulsive_coarse_window", "4", f"K = -|x|/2, m = 4: density order on the {k} "
+                     f"coarsest h of the paper's range (h = 1/{n[0]} to 1/{n[k - 1]}): the verdict depends on the "
+                     "unstated h range", 4 * q, coarse, 0.3))
     return out
 
 
@@ -292,9 +365,10 @@ def fig8_claims(d):
                   differences[target] / max(others, 1e-12), published="only that case")]
 
 
-def run(inputs, output):
+def run(inputs, output, p):
     rows = [*newtonian_claims(load_results(inputs.fig1), load_results(inputs.fig2), load_results(inputs.fig3)),
-            *fig4_claims(load_results(inputs.fig4)), *fig5_claims(load_results(inputs.fig5)),
+            *fig4_claims(load_results(inputs.fig4)), *repulsive_claims(load_results(inputs.repulsive), p["fig4"]),
+            *fig5_claims(load_results(inputs.fig5)),
             *fig6_claims(load_results(inputs.fig6)), *fig7_claims(load_results(inputs.fig7)),
             *fig8_claims(load_results(inputs.fig8))]
     for row in rows:
@@ -304,4 +378,4 @@ def run(inputs, output):
 
 
 with logged(snakemake.log[0]):  # noqa: F821
-    run(snakemake.input, snakemake.output)  # noqa: F821
+    run(snakemake.input, snakemake.output, snakemake.params.cfg)  # noqa: F821
