@@ -1,0 +1,383 @@
+"""Every checked claim of the blob paper (Figures 1-8), measured from the cached results.
+
+The claims script (scripts/blob/claims.py) calls these functions on the cached result files;
+tests/blob/test_blob_verdicts.py feeds them wrong outcomes.
+
+Fitted orders use the finest ``fit_points`` grid steps; "close to" a published
+rate means within 0.3 (0.4 for m = 6, whose finest errors approach the integrator's
+floor); identities exact by construction get rounding tolerances.
+"""
+
+import numpy as np
+
+from .. import claims as c
+from .. import rates
+from ..rates import Recorder
+from ..workflow import progress
+
+PAPER = "blob"
+RATES = Recorder(progress)  # the claims script may replace it; every fit of a run is recorded here
+
+# Kind and source of every claim (see particle_methods.claims): "paper" for what the paper
+# states (where), "derived" for what we derive from its theory, "check" for our own checks.
+FIG4_RATE = ("paper", "Figure 4, section 4.3")
+FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates better than m = 4, not as good as m q")
+KINDS = {
+    "fig1d.order_trajectory": ("paper", "Figure 1D, section 4.2"),
+    "fig1d.order_density": ("paper", "Figure 1D, section 4.2"),
+    "fig2.order": ("paper", "Figure 2, section 4.2"),
+    "fig2.below_blob": ("paper", "Figure 2, section 4.2"),
+    "fig3.slower_trajectory": ("paper", "Figure 3D, section 4.2"),
+    "fig3.slower_density": ("paper", "Figure 3D, section 4.2"),
+    "fig1c.no_collision": ("paper", "Figure 1C, section 4.2"),
+    "fig2.no_bending": ("check", "Figure 2, section 4.2: straight in 1D by construction (constant velocities)"),
+    "integrator": ("check", "ODE error far below the method error (section 4.1: VODE)"),
+    "energy.decrease": ("paper", "section 2.2, energy (2.4)"),
+    "mass": ("check", "conservation of mass (2.2), section 2.2"),
+    "fig4.m4_newtonian_repulsive_trajectory": FIG4_RATE,
+    "fig4.m4_newtonian_repulsive_density": FIG4_RATE,
+    "fig4.m4_cubic_trajectory": FIG4_RATE,
+    "fig4.m4_cubic_density": FIG4_RATE,
+    "fig4.m6_newtonian_repulsive_trajectory": FIG4_M6_RATE,
+    "fig4.m6_newtonian_repulsive_density": FIG4_M6_RATE,
+    "fig4.m6_cubic_trajectory": FIG4_M6_RATE,
+    "fig4.m6_cubic_density": FIG4_M6_RATE,
+    "fig4.m6_better_newtonian_repulsive_trajectory": FIG4_RATE,
+    "fig4.m6_better_newtonian_repulsive_density": FIG4_RATE,
+    "fig4.m6_better_cubic_trajectory": FIG4_RATE,
+    "fig4.m6_better_cubic_density": FIG4_RATE,
+    "fig4.cubic_particle_beats_m4_trajectory": FIG4_RATE,
+    "fig4.cubic_particle_loses_density": FIG4_RATE,
+    "fig4.cubic_m6_best": FIG4_RATE,
+    "fig4.newtonian_blob_improves": FIG4_RATE,
+    "fig4.newtonian_m6_improves_more": FIG4_RATE,
+    "fig4.more_singular_more_gain": FIG4_RATE,
+    "fig4.cubic_reference": ("check", "convergence of the reference solution for K = |x|^3/3 (no exact solution)"),
+    "fig4.repulsive_density_q0.75_m4": ("check", "diagnostic rerun of Figure 4 with q = 0.75 (not in the paper)"),
+    "fig4.repulsive_density_q0.75_m6": ("check", "diagnostic rerun of Figure 4 with q = 0.75 (not in the paper)"),
+    "fig5.m4_regular_trajectory": ("paper", "Figure 5, section 4.4"),
+    "fig5.m4_regular_density": ("paper", "Figure 5, section 4.4"),
+    "fig5.particle_slower": ("paper", "Figure 5, section 4.4"),
+    "fig5.disk_slower": ("paper", "Figure 5, section 4.4"),
+    "fig6.quadratic_point": ("paper", "Figure 6, section 4.4"),
+    "fig6.cubic_ring": ("paper", "Figure 6, section 4.4"),
+    "fig6.newtonian_blowup": ("derived", "Figure 6, section 4.4: blow-up at 1/rho0(0); exact density of section 4.1"),
+    "energy.decrease_2d": ("paper", "section 2.2, energy (2.4)"),
+    "mass_2d": ("check", "conservation of mass (2.2), section 2.2"),
+    "mass_2d_tabulated": ("check", "conservation of mass (2.2), section 2.2, with a tabulated kernel"),
+    "fig7.delta_ring_radius": ("derived", "Figure 7, section 4.4: delta ring; stationary radius of a uniform ring"),
+    "fig7.blob_ring_faster": ("paper", "Figure 7, section 4.4"),
+    "fig7.log_ring_collapse": ("paper", "Figure 7, section 4.4"),
+    "fig7.septic_three_points": ("paper", "Figure 7, section 4.4"),
+    "fig8.regularisation_effect": ("paper", "Figure 8, section 4.4"),
+    "fig4.repulsive_decomposition": ("check", "Figure 4, K = -|x|/2: our split of the density error"),
+    "fig4.repulsive_quadrature_dominates": ("check", "Figure 4, K = -|x|/2: our split of the density error"),
+    "fig4.repulsive_regularisation_m4": ("derived", "Corollary 3.10 for the regularisation part alone"),
+    "fig4.repulsive_regularisation_m6": ("derived", "Corollary 3.10 for the regularisation part alone"),
+    "fig4.repulsive_same_quadrature": ("derived", "(4.1): m = 4 and m = 6 share the narrowest Gaussian"),
+    "fig4.repulsive_model": ("derived", "aliasing of the narrowest Gaussian (Poisson summation), J = 1 + t rho0"),
+    "fig4.repulsive_extended_order": ("check", "Figure 4, K = -|x|/2, runs extended to finer h (not in the paper)"),
+    "fig4.repulsive_coarse_window": ("check", "Figure 4: dependence on the unstated h range"),
+}
+
+
+CATALOGUE = c.Catalogue(PAPER, KINDS)
+claim = CATALOGUE.claim
+
+
+def order(d, key, name, prefix=""):
+    """Fitted order of d[prefix + key] against h on the finest ``fit_points`` steps, recorded under
+    the claim ``name`` that it decides (the first one when it decides several)."""
+    CATALOGUE.kind_and_source(name)
+    h, errors = d["h_values"], d[f"{prefix}{key}"]
+    progress(f"{PAPER}.{name}: {prefix}{key} at h = {', '.join(f'{v:.5g}' for v in h)}: "
+             f"{', '.join(f'{e:.5e}' for e in errors)}")
+    return RATES.add(rates.order(f"{PAPER}.{name}", "h", h, errors, int(d["fit_points"])))
+
+
+def newtonian_claims(d1, d2, d3):
+    rate = 4 * float(d1["q"])
+    blob_x = order(d1, "trajectory_errors", "fig1d.order_trajectory")
+    blob_rho = order(d1, "density_errors", "fig1d.order_density")
+    particle_x = order(d2, "trajectory_errors", "fig2.order")
+    patch_x = order(d3, "trajectory_errors", "fig3.slower_trajectory")
+    patch_rho = order(d3, "density_errors", "fig3.slower_density")
+    gaps = np.diff(d1["positions"], axis=1).min() / float(d1["h"])
+    times = d2["times"]
+    before = times < 0.99
+    paths = d2["positions"][before]
+    straight = paths[0] + times[before, None] * (paths[-1] - paths[0]) / times[before][-1]
+    bend = np.abs(paths - straight).max()
+    tight = np.abs(d1["tight_errors"] / np.array([d1["trajectory_errors"][-1], d1["density_errors"][-1]]) - 1).max()
+    energy = d1["energies"]
+    rise = np.diff(energy).max() / abs(energy[0])
+    mass_defect = float(d1["mass_defect"])
+    return [
+        claim(c.close_to, "fig1d.order_trajectory", "1D", f"blob m = 4, q = 0.9, smooth data: trajectory "
+              f"error rate close to m q = {rate:g}", rate, blob_x, 0.3),
+        claim(c.close_to, "fig1d.order_density", "1D", f"blob m = 4, q = 0.9, smooth data: density error rate "
+              f"close to m q = {rate:g}", rate, blob_rho, 0.3),
+        claim(c.close_to, "fig2.order", "2", "particle method (grad K(0) = 0): trajectory rate about 2, "
+              "O(h^(2 - eps))", 2.0, particle_x, 0.3),
+        claim(c.at_most, "fig2.below_blob", "2", "the particle method converges more slowly than the blob method: "
+              "particle rate minus blob rate (trajectories)", 0.0, particle_x - blob_x, published="slower"),
+        claim(c.at_most, "fig3.slower_trajectory", "3", "discontinuous data converge more slowly than smooth data "
+              "(Figure 1): rate difference, trajectories", 0.0, patch_x - blob_x, published="slower"),
+        claim(c.at_most, "fig3.slower_density", "3", "discontinuous data converge more slowly than smooth data "
+              "(Figure 1): rate difference, density", 0.0, patch_rho - blob_rho, published="slower"),
+        claim(c.at_least, "fig1c.no_collision", "1C", "blob trajectories never collide (they bend away near t = 1): "
+              "smallest gap between neighbouring particles up to t = 1, in units of h", 1e-6, float(gaps),
+              published="> 0"),
+        claim(c.at_most, "fig2.no_bending", "2", "particle trajectories do not bend: largest distance from the "
+              "straight line through their end points, t < 0.99", 1e-9, float(bend), published="straight"),
+        claim(c.at_most, "integrator", "1D", "the ODE error is far below the method's: relative change of the finest "
+              "errors when the tolerances are four times tighter", 0.01, float(tight), published="VODE"),
+        claim(c.at_most, "energy.decrease", "section 2.2", "the regularised energy E_delta decreases along the blob "
+              "particle system: largest increase between outputs, relative to E_delta(0)", 1e-12, float(rise),
+              published="decreasing"),
+        claim(c.at_most, "mass", "section 2.2", "mass is conserved along trajectories (2.2): rho~_i J_i = rho0_i "
+              "with J_i the Jacobian of the off-grid trajectory map (Definition 2.3, from massless tracers at "
+              "alpha_i +- 1e-5); largest relative defect at t = 0.4, h = 0.04", 1e-6, mass_defect,
+              published="conserved"),
+    ]
+
+
+def fig4_claims(d):
+    rate4, rate6 = 4 * float(d["q"]), 6 * float(d["q"])
+    out = []
+    names = {"newtonian_repulsive": "-|x|/2", "cubic": "|x|^3/3"}
+    for kernel in d["kernels"]:
+        for part in ("trajectory", "density"):
+            m4 = order(d, f"{kernel}_blob4_{part}", f"fig4.m4_{kernel}_{part}")
+            m6 = order(d, f"{kernel}_blob6_{part}", f"fig4.m6_{kernel}_{part}")
+            out.append(claim(c.close_to, f"fig4.m4_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 4: {part} "
+                             f"rate close to m q = {rate4:g}", rate4, m4, 0.3))
+            out.append(claim(c.between, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate "
+                             f"better than m = 4's ({m4:.3g}) and not as good as m q = {rate6:g} (the paper blames "
+                             "other error sources; our kernels are exact)", min(m4, rate6), rate6, m6,
+                             published=f"< {rate6:g}"))
+            ratio = d[f"{kernel}_blob6_{part}"][-1] / d[f"{kernel}_blob4_{part}"][-1]
+            out.append(claim(c.at_most, f"fig4.m6_better_{kernel}_{part}", "4", f"K = {names[kernel]}: m = 6 "
+                             f"beats m = 4 ({part}): ratio of the finest errors", 1.0, float(ratio),
+                             published="better"))
+    particle_x, particle_rho = d["cubic_particle_trajectory"][-1], d["cubic_particle_density"][-1]
+    m4_x, m4_rho = d["cubic_blob4_trajectory"][-1], d["cubic_blob4_density"][-1]
+    best = max(d["cubic_blob6_trajectory"][-1] / min(particle_x, m4_x),
+               d["cubic_blob6_density"][-1] / min(particle_rho, m4_rho))
+    gain = {kernel: d[f"{kernel}_particle_trajectory"][-1] / d[f"{kernel}_blob4_trajectory"][-1]
+            for kernel in ("newtonian_repulsive", "cubic")}
+    gain6 = d["newtonian_repulsive_particle_trajectory"][-1] / d["newtonian_repulsive_blob6_trajectory"][-1]
+    out += [
+        claim(c.at_least, "fig4.newtonian_blob_improves", "4", "K = -|x|/2: the m = 4 blob method improves on the "
+              "particle method: particle / m = 4 finest trajectory error", 1.0, float(gain["newtonian_repulsive"]),
+              published="improves"),
+        claim(c.at_least, "fig4.newtonian_m6_improves_more", "4", "K = -|x|/2: m = 6 improves even more: (particle / "
+              "m = 6) over (particle / m = 4), finest trajectory errors", 1.0,
+              float(gain6 / gain["newtonian_repulsive"]), published="greater improvement"),
+        claim(c.at_least, "fig4.more_singular_more_gain", "4", "the more singular the kernel, the greater the gain of "
+              "the blob method: particle / m = 4 finest trajectory error for -|x|/2 over that for |x|^3/3", 1.0,
+              float(gain["newtonian_repulsive"] / gain["cubic"]), published="greater for more singular"),
+        claim(c.at_most, "fig4.cubic_particle_beats_m4_trajectory", "4", "K = |x|^3/3: the particle method beats "
+              "m = 4 on trajectories: particle / m = 4 finest error", 1.0, float(particle_x / m4_x),
+              published="beats"),
+        claim(c.at_least, "fig4.cubic_particle_loses_density", "4", "K = |x|^3/3: but not on density: particle / "
+              "m = 4 finest error", 1.0, float(particle_rho / m4_rho), published="does not beat"),
+        claim(c.at_most, "fig4.cubic_m6_best", "4", "K = |x|^3/3: m = 6 is the best on both: its finest error over "
+              "the best other method's, worst of trajectory and density", 1.0, float(best), published="best"),
+        claim(c.at_most, "fig4.cubic_reference", "4", "K = |x|^3/3 has no exact solution: the reference (m = 6 on a "
+              "finer nested grid) differs from its half-resolution twin by far less than the errors fitted: that "
+              "difference over the smallest error fitted, worst of trajectory and density", 0.1,
+              float(max(d["cubic_reference_error"][0] / d["cubic_blob6_trajectory"][-1],
+                        d["cubic_reference_error"][1] / d["cubic_blob6_density"][-1])),
+              published="n/a"),
+    ]
+    q = float(d["diagnostic_q"])
+    for m in (4, 6):
+        rate = order(d, f"diagnostic_m{m}_density", f"fig4.repulsive_density_q{q:g}_m{m}")
+        out.append(claim(c.close_to, f"fig4.repulsive_density_q{q:g}_m{m}", "4 (diagnostic)",
+                         f"K = -|x|/2, m = {m}, with q = {q:g} instead of 0.9: the density rate reaches m q, so the "
+                         "slow density rate at q = 0.9 is the quadrature error of the spreading particles, not the "
+                         "regularisation", m * q, rate, 0.3))
+    return out
+
+
+def quadrature_model(h, quadrature, q, jacobian):
+    """Fit log Q = log A + p log h - pi^2 (delta / (h J))^2 (delta = h^q); return (A, p)."""
+    aliasing = np.pi**2 * h ** (2 * (q - 1)) / jacobian**2
+    (log_a, power), *_ = np.linalg.lstsq(np.column_stack([np.ones(h.size), np.log(h)]), np.log(quadrature) + aliasing,
+                                         rcond=None)
+    return float(np.exp(log_a)), float(power)
+
+
+def repulsive_claims(d, p):
+    """Figure 4, K = -|x|/2: where the slow density rate comes from, and whether the model predicts
+    the finer runs."""
+    n, base = d["inverse_h"], int(d["base_count"])
+    h, q, k = 1.0 / n, float(d["q"]), int(p["fit_points"])
+    jacobian = float(d["jacobian"])
+    out = []
+    mismatch = max(float(np.abs(d[f"m{m}_combined"] / d[f"m{m}_total"] - 1).max()) for m in (4, 6))
+    share = min(float(d[f"m{m}_quadrature"][base - 1] / d[f"m{m}_combined"][base - 1]) for m in (4, 6))
+    out += [
+        claim(c.at_most, "fig4.repulsive_decomposition", "4", "K = -|x|/2: the quadrature and regularisation parts, "
+              "integrated along the exact trajectories, account for the measured density error: largest relative "
+              "gap between their sum and the blob runs' error, m = 4 and 6, every h", 0.25, mismatch),
+        claim(c.at_least, "fig4.repulsive_quadrature_dominates", "4", f"K = -|x|/2 at h = 1/{n[base - 1]}: the "
+              "quadrature part (particle sum against the exact mollified convolution) is most of the density error: "
+              "its share, smallest of m = 4 and 6", 0.5, share),
+    ]
+    for m in (4, 6):
+        slope = RATES.add(rates.order(f"{PAPER}.fig4.repulsive_regularisation_m{m}", "h", h[:base],
+                                      d[f"m{m}_regularisation"][:base], k))
+        out.append(claim(c.close_to, f"fig4.repulsive_regularisation_m{m}", "4", f"K = -|x|/2, m = {m}: the "
+                         f"regularisation part alone converges at m q = {m * q:g}: order on the {k} finest h of the "
+                         "paper's range", m * q, slope, 0.3))
+    ratio = float(d["m6_quadrature"][base - 1] / d["m4_quadrature"][base - 1])
+    out.append(claim(c.between, "fig4.repulsive_same_quadrature", "4", "m = 4 and m = 6 share the narrowest Gaussian "
+                     "of (4.1), which sets the quadrature error, so their density errors coincide: m = 6 over m = 4 "
+                     f"quadrature part at h = 1/{n[base - 1]}", 0.5, 2.0, ratio, published="(our derivation)"))
+    a, power = quadrature_model(h[:base], d["m4_quadrature"][:base], q, jacobian)
+    regularisation = np.polyfit(np.log(h[base - k:base]), np.log(d["m4_regularisation"][base - k:base]), 1)
+    fine = 1.0 / np.geomspace(n[base - 1], 64 * n[base - 1], 400)
+    model_q = a * fine**power * np.exp(-np.pi**2 * fine ** (2 * (q - 1)) / jacobian**2)
+    crossing = fine[np.argmax(model_q < np.exp(np.polyval(regularisation, np.log(fine))))]
+    errors = []
+    for m in (4, 6):
+        reg = np.polyfit(np.log(h[base - k:base]), np.log(d[f"m{m}_regularisation"][base - k:base]), 1)
+        predicted = (a * h[base:] ** power * np.exp(-np.pi**2 * h[base:] ** (2 * (q - 1)) / jacobian**2)
+                     + np.exp(np.polyval(reg, np.log(h[base:]))))
+        measured = d[f"m{m}_total"][base:]
+        errors.append(float(np.max(np.maximum(predicted / measured, measured / predicted))))
+    out.append(claim(c.at_most, "fig4.repulsive_model", "4", f"model of the quadrature part A h^p exp(-pi^2 (delta/(h "
+                     f"J))^2), J = {jacobian:g}, fitted on the paper's h (p = {power:.2f}), plus the regularisation "
+                     f"part's power law: it puts the return of the m q rate (quadrature below regularisation, m = 4) "
+                     f"at h = 1/{1 / crossing:.0f}, and predicts the runs at h = "
+                     f"{', '.join(f'1/{v}' for v in n[base:])}: largest factor between prediction and measurement",
+                     float(p["repulsive"]["model_factor"]), max(errors), published="(our model)"))
+    extended = RATES.add(rates.order(f"{PAPER}.fig4.repulsive_extended_order", "h", h, d["m4_total"], k,
+                                     "m = 4 density, extended"))
+    out.append(claim(c.close_to, "fig4.repulsive_extended_order", "4", f"K = -|x|/2, m = 4: density order on the {k} "
+                     f"finest h of the extended runs (to h = 1/{n[-1]})", 4 * q, extended, 0.3))
+    coarse = float(np.polyfit(np.log(h[:k]), np.log(d["m4_total"][:k]), 1)[0])
+    out.append(claim(c.close_to, "fig4.repulsive_coarse_window", "4", f"K = -|x|/2, m = 4: density order on the {k} "
+                     f"coarsest h of the paper's range (h = 1/{n[0]} to 1/{n[k - 1]}): the verdict depends on the "
+                     "unstated h range", 4 * q, coarse, 0.3))
+    return out
+
+
+def ring_radii(points):
+    """Distances to the origin of the particles off the centre (a centre particle stays by symmetry)."""
+    r = np.linalg.norm(points, axis=-1)
+    return r[r > 1e-6]
+
+
+def variation(values):
+    return float(values.std() / values.mean())
+
+
+def cluster_count(points, threshold=0.05):
+    """Number of groups of particles closer than ``threshold`` (single linkage)."""
+    from scipy.cluster.hierarchy import fcluster, linkage
+
+    return int(fcluster(linkage(points, "single"), threshold, criterion="distance").max())
+
+
+def fig5_claims(d):
+    labels = list(d["labels"])
+    # the claim each case's fits are recorded under: the one its trajectory rate decides (the
+    # density rates of the particle and disk cases decide none)
+    names = {"regular, blob": ("fig5.m4_regular_trajectory", "fig5.m4_regular_density"),
+             "regular, particle": ("fig5.particle_slower",) * 2, "disk, blob": ("fig5.disk_slower",) * 2}
+    slopes = {label: (order(d, "_trajectory", names[label][0], f"case{i}"),
+                      order(d, "_density", names[label][1], f"case{i}") if np.isfinite(d[f"case{i}_density"]).all()
+                      else np.nan)
+              for i, label in enumerate(labels)}
+    regular, particle, disk = slopes["regular, blob"], slopes["regular, particle"], slopes["disk, blob"]
+    return [
+        claim(c.close_to, "fig5.m4_regular_trajectory", "5", "2D, K = log|x|/(2 pi), m = 4, regular data: trajectory "
+              "rate close to m q = 3.6", 3.6, regular[0], 0.3),
+        claim(c.close_to, "fig5.m4_regular_density", "5", "2D, m = 4, regular data: density rate close to m q = 3.6",
+              3.6, regular[1], 0.3),
+        claim(c.at_most, "fig5.particle_slower", "5", "2D: the particle method converges more slowly: particle "
+              "minus blob trajectory rate", 0.0, particle[0] - regular[0], published="slower"),
+        claim(c.at_most, "fig5.disk_slower", "5", "2D: discontinuous data converge more slowly: disk minus regular "
+              "trajectory rate (blob)", 0.0, disk[0] - regular[0], published="slower"),
+    ]
+
+
+def fig6_claims(d):
+    from .initial import data_2d
+
+    times = d["times"]
+    quadratic = np.linalg.norm(d["quadratic_positions"], axis=-1)
+    cubic_start, cubic_end = ring_radii(d["cubic_positions"][0]), ring_radii(d["cubic_positions"][-1])
+    peak = d["newtonian_densities"].max(axis=1)
+    target = 10 * peak[0]
+    k = int(np.argmax(peak >= target))
+    reached = np.interp(target, peak[k - 1:k + 1], times[k - 1:k + 1]) if k > 0 else np.nan
+    rho00 = float(data_2d("bump")(np.zeros((1, 2)))[0])
+    rises = [np.diff(d[f"{k}_energies"]).max() / abs(d[f"{k}_energies"][0]) for k in ("newtonian", "quadratic")]
+    return [
+        claim(c.at_most, "fig6.quadratic_point", "6", "K = |x|^2/2: particles converge to a point: final over initial "
+              f"largest radius at t = {times[-1]:g}", 0.1, float(quadratic[-1].max() / quadratic[0].max()),
+              published="a point"),
+        claim(c.at_most, "fig6.cubic_ring", "6", "K = |x|^3/3: particles approach a ring: coefficient of variation "
+              "of the radii (centre particle excluded), final over initial", 1.0,
+              variation(cubic_end) / variation(cubic_start), published="a ring"),
+        claim(c.close_to, "fig6.newtonian_blowup", "6", "K = log|x|/(2 pi): concentration near the blow-up time "
+              f"1/rho0(0) = {1 / rho00:.3f}: time at which the peak density reaches ten times its initial value, "
+              "against the exact 0.9/rho0(0)", 0.9 / rho00, float(reached), 0.15),
+        claim(c.at_most, "energy.decrease_2d", "section 2.2", "2D: E_delta decreases along the blob particle system "
+              "(log and quadratic kernels): largest relative increase", 1e-9, float(max(rises)),
+              published="decreasing"),
+        claim(c.at_most, "mass_2d", "section 2.2", "2D: rho~ det(J) = rho0 along trajectories (closed-form log and "
+              "quadratic kernels), largest relative defect", 1e-6,
+              float(max(d["newtonian_mass_defect"], d["quadratic_mass_defect"])), published="conserved"),
+        claim(c.at_most, "mass_2d_tabulated", "section 2.2", "2D, tabulated cubic kernel: the same defect, limited "
+              "by the linear interpolation of the radial tables", 1e-4, float(d["cubic_mass_defect"]),
+              published="conserved"),
+    ]
+
+
+def fig7_claims(d):
+    from .rings import uniform_ring_radius
+
+    labels = [label.split("|")[0] for label in d["labels"]]
+    case = {label: i for i, label in enumerate(labels)}
+    ring = ring_radii(d[f"case{case['quartic_power']}_blob"][-1])
+    radius = uniform_ring_radius(4.0, 1.5)
+    power_blob = variation(ring)
+    power_particle = variation(ring_radii(d[f"case{case['quartic_power']}_particle"][-1]))
+    log_blob = variation(ring_radii(d[f"case{case['quartic_log']}_blob"][-1]))
+    log_particle = variation(ring_radii(d[f"case{case['quartic_log']}_particle"][-1]))
+    septic = cluster_count(d[f"case{case['septic_power']}_blob"][-1])
+    return [
+        claim(c.relatively_close_to, "fig7.delta_ring_radius", "7", "K = |x|^4/4 - |x|^1.5/1.5: the blob end state "
+              "is a delta ring of the stationary radius (B_1.5/B_4)^(1/2.5)/2 derived for a uniform ring: mean "
+              "radius", radius, float(ring.mean()), 0.02),
+        claim(c.at_most, "fig7.blob_ring_faster", "7", "the blob method reaches the ring faster than the particle "
+              "method: spread of the radii at the final time, blob over particle", 1.0, power_blob / power_particle,
+              published="faster"),
+        claim(c.at_most, "fig7.log_ring_collapse", "7", "K = |x|^4/4 - log|x|/(2 pi): the particle method keeps a "
+              "radial compactly supported state, the large-delta blob collapses towards a ring: spread of radii, "
+              "blob over particle", 0.5, log_blob / log_particle, published="ring for large delta"),
+        claim(c.close_to, "fig7.septic_three_points", "7", "K = |x|^7/7 - |x|^1.5/1.5 with large delta: the end state "
+              "is three point masses: number of clusters of the blob end state (distance 0.05)", 3.0,
+              float(septic), 0.0),
+    ]
+
+
+def fig8_claims(d):
+    differences = []
+    for i in range(len(d["labels"])):
+        particle = np.sort(np.linalg.norm(d[f"case{i}_particle"][-1], axis=-1))
+        blob = np.sort(np.linalg.norm(d[f"case{i}_blob"][-1], axis=-1))
+        scale = np.linalg.norm(d[f"case{i}_particle"][0], axis=-1).mean()  # size of the initial data
+        differences.append(float(np.abs(particle - blob).mean() / scale))
+    labels = list(d["labels"])
+    target = labels.index("morse_2|quartic")
+    others = max(v for i, v in enumerate(differences) if i != target)
+    return [claim(c.at_least, "fig8.regularisation_effect", "8", "the large delta changes the end state only for "
+                  "K = 2e^-|x| - 2e^-|x|/2 with regular data: its particle-vs-blob difference of sorted radii "
+                  "(relative to the initial radius) over the largest of the other cases", 1.0,
+                  differences[target] / max(others, 1e-12), published="only that case")]
