@@ -51,3 +51,106 @@ def hide_minor_log_labels(ax) -> None:
 
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.yaxis.set_minor_formatter(NullFormatter())
+
+
+# Words that plain-text titles (rule params, data files) use for mathematical symbols.
+_MATH_WORDS = {"delta": r"\delta", "Delta": r"\Delta", "pi": r"\pi", "grad": r"\nabla", "nabla": r"\nabla",
+               "log": r"\log", "exp": r"\exp", "rho": r"\rho", "psi": r"\psi", "epsilon": r"\varepsilon",
+               "alpha": r"\alpha"}
+_OPERATORS = {"=", "+", "-", "<", ">", "<=", ">=", "*", "/", "~"}
+
+
+def _is_math_token(token: str) -> tuple[bool, bool]:
+    """(may sit in a formula, marks a formula) for one whitespace-separated token."""
+    import re
+
+    if token in _OPERATORS:
+        return True, True
+    if re.fullmatch(r"[-+]?\d+(\.\d+)?(/\d+(\.\d+)?)?", token):
+        return True, False
+    if re.fullmatch(r"[A-Za-z](\([^()]*\))?", token):
+        return True, False
+    if token in _MATH_WORDS:
+        return True, True
+    if any(mark in token for mark in "|^_") or re.search(r"(?<![A-Za-z])(" + "|".join(_MATH_WORDS) + r")(?![A-Za-z])",
+                                                          token):
+        return True, True
+    return False, False
+
+
+def _to_tex(formula: str) -> str:
+    """Plain-text formula -> mathtext body: Greek and operator words, braces after '^'."""
+    import re
+
+    formula = re.sub(r"(?<![A-Za-z\\])(" + "|".join(_MATH_WORDS) + r")(?![A-Za-z])",
+                     lambda match: _MATH_WORDS[match.group(1)] + " ", formula)
+    return re.sub(r"\^(?!\{)(-?(?:\d+(?:\.\d+)?|[A-Za-z]|\|[^|]*\|))", r"^{\1}", formula).replace(" )", ")")
+
+
+def mathtext(text: str) -> str:
+    """Plain-text title such as ``"m = 4, delta = h^0.9, K = log|x|/(2 pi)"`` in matplotlib mathtext:
+    each formula (a run of tokens with an operator, '|', '^' or a Greek word) goes between '$'.
+
+    Text that already holds a '$' is returned unchanged; text mathtext cannot parse comes back
+    as plain text (with '$' escaped), so a title never breaks a figure.
+    """
+    if "$" in text:
+        return text
+    pieces, run, strong, depth = [], [], False, 0
+
+    def close():
+        nonlocal run, strong, depth
+        if run:
+            body = " ".join(run)
+            pieces.append(f"${_to_tex(body)}$" if strong else body)
+        run, strong, depth = [], False, 0
+
+    for word in text.split(" "):
+        lead, core, tail = "", word, ""
+        while core and core[-1] in ",;:":
+            core, tail = core[:-1], core[-1] + tail
+        if core.startswith("(") and core.count("(") > core.count(")"):
+            lead, core = "(", core[1:]
+        while core.endswith(")") and depth + core.count("(") - core.count(")") < 0:
+            core, tail = core[:-1], ")" + tail
+        math, marks = _is_math_token(core) if core else (False, False)
+        if lead or not math:
+            close()
+        if math:
+            if lead:
+                pieces.append(lead + "\u200b")
+            run.append(core)
+            strong = strong or marks
+            depth += core.count("(") - core.count(")")
+            if tail:
+                close()
+                pieces.append("\u200b" + tail)
+        else:
+            pieces.append(lead + core + tail)
+    close()
+    result = " ".join(pieces).replace("\u200b ", "").replace(" \u200b", "").replace("\u200b", "")
+    try:
+        from matplotlib.mathtext import MathTextParser
+
+        MathTextParser("agg").parse(result)
+    except ValueError:
+        return text.replace("$", r"\$")
+    return result
+
+
+def label_h_axis(ax, h_values, axis: str = "x") -> None:
+    """Ticks of a log axis at the grid sizes ``h_values``, labelled 1/N when 1/h is an integer
+    (decimal otherwise), without minor ticks."""
+    import numpy as np
+    from matplotlib.ticker import FixedFormatter, FixedLocator, NullLocator
+
+    h_values = np.asarray(h_values, dtype=float)
+    inverse = 1.0 / h_values
+    if np.allclose(inverse, np.round(inverse), rtol=1e-6, atol=0):
+        labels = [f"1/{int(round(n))}" for n in inverse]
+    else:
+        labels = [f"{h:.3g}" for h in h_values]
+    target = ax.xaxis if axis == "x" else ax.yaxis
+    target.set_major_locator(FixedLocator(h_values))
+    target.set_major_formatter(FixedFormatter(labels))
+    target.set_minor_locator(NullLocator())

@@ -375,17 +375,43 @@ def fig7_claims(d):
     ]
 
 
-def fig8_claims(d):
-    differences = []
+def settled_from(times, radii, window: float, tolerance: float) -> float:
+    """First recorded time from which the sorted radii change by at most ``tolerance`` (absolute) over
+    every ``window``; inf when they still move at the end."""
+    earlier = np.searchsorted(times, times - window + 1e-9 * window, side="right") - 1
+    usable = earlier >= 0
+    change = np.full(times.size, np.inf)
+    change[usable] = np.abs(radii[usable] - radii[earlier[usable]]).max(axis=1)
+    ok = change <= tolerance
+    if not ok[-1]:
+        return float("inf")
+    failing = np.flatnonzero(~ok)
+    return float(times[failing[-1] + 1] if failing.size else times[0])
+
+
+def fig8_claims(d, p):
+    """Figure 8: the large delta changes the Morse end state only for 2e^-|x| - 2e^-|x|/2 with
+    regular data. The effect is compared with delta itself, a fixed length (not with the size of the
+    initial data, which differs threefold between the cases), once every state is steady."""
+    delta = float(d["delta"])
+    window, tolerance = float(p["steady"]["window"]), float(p["steady"]["tolerance"]) * delta
+    differences, steady = [], []
     for i in range(len(d["labels"])):
-        particle = np.sort(np.linalg.norm(d[f"case{i}_particle"][-1], axis=-1))
-        blob = np.sort(np.linalg.norm(d[f"case{i}_blob"][-1], axis=-1))
-        scale = np.linalg.norm(d[f"case{i}_particle"][0], axis=-1).mean()  # size of the initial data
-        differences.append(float(np.abs(particle - blob).mean() / scale))
+        times = d[f"case{i}_times"]
+        radii = {m: np.sort(np.linalg.norm(d[f"case{i}_{m}"], axis=-1), axis=1) for m in ("particle", "blob")}
+        steady.append(max(settled_from(times, radii[m], window, tolerance) for m in radii))
+        differences.append(float(np.abs(radii["particle"][-1] - radii["blob"][-1]).mean() / delta))
     labels = list(d["labels"])
     target = labels.index("morse_2|quartic")
     others = max(v for i, v in enumerate(differences) if i != target)
+    ratio = differences[target] / max(others, 1e-12)
+    all_steady = all(np.isfinite(steady))
+    text = ", ".join(f"{label}: {value:.3g} (steady from t = {t:g})"
+                     for label, value, t in zip(labels, differences, steady))
     return [claim(c.at_least, "fig8.regularisation_effect", "8", "the large delta changes the end state only for "
-                  "K = 2e^-|x| - 2e^-|x|/2 with regular data: its particle-vs-blob difference of sorted radii "
-                  "(relative to the initial radius) over the largest of the other cases", 1.0,
-                  differences[target] / max(others, 1e-12), published="only that case")]
+                  "K = 2e^-|x| - 2e^-|x|/2 with regular data: mean |particle - blob| difference of the sorted "
+                  f"end-state radii over delta ({text}), the named case over the largest other, measured once every "
+                  f"state is steady (sorted radii moving at most {p['steady']['tolerance']:g} delta per {window:g} "
+                  "time units; "
+                  f"at the final time the ratio is {ratio:.3g})", 1.0, ratio if all_steady else float("nan"),
+                  published="only that case")]
