@@ -3,16 +3,17 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import hide_minor_log_labels, new_figure, save_figure
+from particle_methods.plotting import label_h_axis, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
-ROWS = {"newtonian_repulsive": "K = (-Delta)^{-1} = -|x|/2", "cubic": "K = |x|^3/3"}
-COLUMNS = (("particle", "particle method"), ("blob4", "blob, m = 4"), ("blob6", "blob, m = 6"))
+ROWS = {"newtonian_repulsive": r"$K = (-\Delta)^{-1} = -|x|/2$", "cubic": r"$K = |x|^3/3$"}
+COLUMNS = (("particle", "particle method"), ("blob4", "blob, $m = 4$"), ("blob6", "blob, $m = 6$"))
 
 
-def run(d, output):
+def run(d, t, output):
     kernels = list(d["kernels"])
-    fig, axes = new_figure(len(kernels), 3, width=13, height=4 * len(kernels), sharey="row")
+    fig, axes = new_figure(len(kernels), 3, width=7.0, height=2.4 * len(kernels) + 0.4, sharey="row")
+    axes = np.atleast_2d(axes)
     k = int(d["fit_points"])
     h = d["h_values"]
     for row, kernel in enumerate(kernels):
@@ -23,14 +24,21 @@ def run(d, output):
                 if np.all(np.isnan(errors)):
                     continue
                 order = fit_order(h[-k:], errors[-k:])
-                ax.loglog(h, errors, style, ms=4, label=f"{part}: order {order:.2f}")
-            ax.set(xlabel="h", title=f"{ROWS[kernel]}, {title}")
-            hide_minor_log_labels(ax)
-            ax.legend(loc="lower right")
-        axes[row, 0].set_ylabel("L1_h error at t = 0.5")
-    fig.suptitle(f"Errors for data (4.5), delta = h^{float(d['q']):g}")
+                ax.loglog(h, errors, style, ms=3.5, label=f"{part} {order:.2f}")
+            ax.set_xlabel("$h$", labelpad=1)
+            if row == 0:
+                ax.set_title(title)
+            label_h_axis(ax, h)
+            ax.tick_params(axis="x", labelsize=8)
+            ax.legend(loc="upper left", handlelength=1.8, labelspacing=0.25, borderaxespad=0.3)
+        low, high = axes[row, 0].get_ylim()
+        axes[row, 0].set_ylim(low, high * (high / low) ** 0.3)   # room for the legends above the data
+        axes[row, 0].set_ylabel(f"{ROWS.get(kernel, kernel)}\n$L^1_h$ error at $t = {t:g}$")
+    fig.suptitle(rf"Errors for data (4.5), $\delta = h^{{{float(d['q']):g}}}$; legends: orders fitted on the "
+                 f"{k} finest $h$")
     save_figure(fig, output.pdf, output.png)
 
 
 with logged(snakemake.log[0]):  # noqa: F821
-    run(load_results(snakemake.input.data), snakemake.output)  # noqa: F821
+    run(load_results(snakemake.input.data), float(snakemake.config["blob"]["fig4"]["t"]),  # noqa: F821
+        snakemake.output)  # noqa: F821

@@ -3,16 +3,16 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure
+from particle_methods.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
-TITLES = {"regular, blob": "regular data, blob m = 4", "regular, particle": "regular data, particle method",
-          "disk, blob": "indicator of the disk, blob m = 4"}
+TITLES = {"regular, blob": "A. regular data, blob $m = 4$", "regular, particle": "B. regular data, particle",
+          "disk, blob": "C. disk indicator, blob $m = 4$"}
 
 
-def run(d, output):
+def run(d, t, output):
     labels = list(d["labels"])
-    fig, axes = new_figure(1, len(labels), width=4.5 * len(labels), height=4.2, sharey=True)
+    fig, axes = new_figure(1, len(labels), width=2.4 * len(labels), height=2.9, sharey=True)
     k = int(d["fit_points"])
     h = d["h_values"]
     for index, (ax, label) in enumerate(zip(np.atleast_1d(axes), labels)):
@@ -20,15 +20,22 @@ def run(d, output):
             errors = d[f"case{index}_{part}"]
             if np.all(np.isnan(errors)):
                 continue
-            ax.loglog(h, errors, style, label=f"{part}: order {fit_order(h[-k:], errors[-k:]):.2f}")
-        ax.set(xlabel="h")
-        hide_minor_log_labels(ax)
-        ax.legend(loc="lower right")
-        label_panel(ax, TITLES.get(label, label))
-    np.atleast_1d(axes)[0].set_ylabel("L1_h error at t = 0.5")
-    fig.suptitle(f"2D, K = log|x|/(2 pi), delta = h^{float(d['q']):g}")
+            ax.loglog(h, errors, style, ms=3.5, label=f"{part} {fit_order(h[-k:], errors[-k:]):.2f}")
+        ax.set(xlabel="$h$")
+        label_h_axis(ax, h)
+        ax.tick_params(axis="x", labelsize=8)
+        ax.legend(loc="upper left", handlelength=1.8, labelspacing=0.25, borderaxespad=0.3)
+        label_panel(ax, TITLES.get(label, mathtext(label)))
+        ax.title.set_fontsize(9)
+    first = np.atleast_1d(axes)[0]
+    low, high = first.get_ylim()
+    first.set_ylim(low, high * (high / low) ** 0.4)   # room for the legends above the data
+    first.set_ylabel(f"$L^1_h$ error at $t = {t:g}$")
+    fig.suptitle(rf"2D, $K = \log|x|/(2\pi)$, $\delta = h^{{{float(d['q']):g}}}$; legends: orders fitted on the {k} "
+                 "finest $h$")
     save_figure(fig, output.pdf, output.png)
 
 
 with logged(snakemake.log[0]):  # noqa: F821
-    run(load_results(snakemake.input.data), snakemake.output)  # noqa: F821
+    run(load_results(snakemake.input.data), float(snakemake.config["blob"]["fig5"]["t"]),  # noqa: F821
+        snakemake.output)  # noqa: F821

@@ -1,49 +1,145 @@
 """Figure 6: trajectories of 20 particles and density at t = 1.4 (top); star patch density from the side
-and from above at t = 0.8 (bottom), for K = log|x|/(2 pi), |x|^2/2, |x|^3/3."""
+and from above at t = 0.8 (bottom), for K = log|x|/(2 pi), |x|^2/2, |x|^3/3.
+
+The star patch is drawn on the particles' Lagrangian mesh: the squares of the initial grid hZ^2 whose
+corners are particles (split in two triangles, or one triangle when a corner is missing), carried by the
+flow. A triangulation of the convex hull of the particles would fill the gaps between the star's arms.
+"""
+
+from fractions import Fraction
 
 import numpy as np
+from matplotlib.colors import Normalize
+from matplotlib.ticker import MaxNLocator
 from matplotlib.tri import Triangulation
 
+from particle_methods.blob.initial import data_2d, grid_2d
 from particle_methods.plotting import save_figure
 from particle_methods.workflow import load_results, logged
 
-TITLES = {"newtonian": "K = log|x|/(2 pi)", "quadratic": "K = |x|^2/2", "cubic": "K = |x|^3/3"}
+TITLES = {"newtonian": r"$K = \log|x|/(2\pi)$", "quadratic": r"$K = |x|^2/2$", "cubic": r"$K = |x|^3/3$"}
+SQUARE = ((0, 0), (1, 0), (1, 1), (0, 1))
 
 
-def run(d, shown, output):
+def fraction(h):
+    """h as a short fraction (2/15, 1/14) when it is one, else in decimals."""
+    ratio = Fraction(float(h)).limit_denominator(100)
+    return f"{ratio.numerator}/{ratio.denominator}" if abs(float(ratio) - h) < 1e-9 * h else f"{h:.3g}"
+
+
+def lattice_triangulation(final, h, data="star"):
+    """Triangles of the initial grid hZ^2 restricted to the particles, on the particles' final positions;
+    None when the particles are not the grid points of ``data`` (then the caller falls back)."""
+    initial = grid_2d(h, data_2d(data))
+    if initial.shape != final.shape:
+        return None
+    cells = np.rint(initial / h).astype(int)
+    index = {(int(i), int(j)): n for n, (i, j) in enumerate(cells)}
+    corners = {(i - a, j - b) for i, j in index for a, b in SQUARE}
+    triangles = []
+    for i, j in sorted(corners):
+        present = [index.get((i + a, j + b)) for a, b in SQUARE]
+        if None not in present:
+            triangles += [present[:3], [present[0], present[2], present[3]]]
+        elif sum(p is not None for p in present) == 3:
+            triangles.append([p for p in present if p is not None])
+    return Triangulation(final[:, 0], final[:, 1], np.array(triangles))
+
+
+def support_triangulation(points, spacings=1.8):
+    """Fallback: Delaunay triangulation without the triangles having an edge longer than ``spacings``
+    median nearest-neighbour distances (those bridge the gaps between the arms)."""
+    triangulation = Triangulation(points[:, 0], points[:, 1])
+    gaps = np.linalg.norm(points[:, None] - points[None], axis=-1)
+    np.fill_diagonal(gaps, np.inf)
+    corners = points[triangulation.triangles]
+    edges = np.linalg.norm(corners - np.roll(corners, 1, axis=1), axis=-1).max(axis=1)
+    triangulation.set_mask(edges > spacings * np.median(gaps.min(axis=1)))
+    return triangulation
+
+
+def colour_norm(values):
+    """Colour scale of the values; a constant field gets a +-5% range so it shows as one mid colour."""
+    low, high = float(np.min(values)), float(np.max(values))
+    if high - low <= 1e-9 * max(abs(high), 1.0):
+        return Normalize(0.95 * low, 1.05 * high)
+    return Normalize(low, high)
+
+
+def tidy_3d(ax, zlabel, y_ticks=True, aspect=None, zoom=1.15):
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.set_major_locator(MaxNLocator(3))
+    ax.tick_params(labelsize=7, pad=-1)
+    ax.set_xlabel("$x$", labelpad=-5)
+    ax.set_ylabel("$y$" if y_ticks else "", labelpad=-7)
+    ax.set_zlabel(zlabel, labelpad=-6)
+    if not y_ticks:
+        ax.set_yticklabels([])
+    ax.set_box_aspect(aspect, zoom=zoom)
+
+
+def colour_bar(fig, mappable, ax):
+    """Colour bar as tall as the (equal-aspect) axes, right of it."""
+    bar = fig.colorbar(mappable, cax=ax.inset_axes([1.04, 0.0, 0.06, 1.0]))
+    bar.ax.tick_params(labelsize=7)
+    bar.locator = MaxNLocator(4)
+    bar.update_ticks()
+
+
+def run(d, shown, cfg, output):
     import matplotlib.pyplot as plt
 
     from particle_methods.plotting import STYLE
 
     plt.rcParams.update(STYLE)
     kernels = list(d["kernels"])
-    fig = plt.figure(figsize=(4.6 * len(kernels), 15), constrained_layout=True)
+    columns = len(kernels)
+    fig = plt.figure(figsize=(2.5 * columns, 8.8), constrained_layout=True)
+    fig.get_layout_engine().set(h_pad=0.02, w_pad=0.06)
+    grid = fig.add_gridspec(4, columns)
     times, index = d["times"], int(d["density_index"])
+    star_h = float(cfg["bottom"]["h"])
     for column, kernel in enumerate(kernels):
         positions = d[f"{kernel}_positions"]
         pick = np.linspace(0, positions.shape[1] - 1, shown).round().astype(int)
-        ax = fig.add_subplot(4, len(kernels), column + 1, projection="3d")
+        ax = fig.add_subplot(grid[0, column], projection="3d")
         for p in pick:
-            ax.plot(positions[:, p, 0], positions[:, p, 1], times, lw=0.8)
-        ax.set(xlabel="x", ylabel="y", zlabel="t", title=f"{TITLES[kernel]}: {shown} trajectories")
-        ax = fig.add_subplot(4, len(kernels), len(kernels) + column + 1)
-        points = positions[index]
-        scatter = ax.scatter(points[:, 0], points[:, 1], c=d[f"{kernel}_densities"][index], s=12, cmap="viridis")
-        fig.colorbar(scatter, ax=ax, label="density along trajectories")
-        ax.set(xlabel="x", ylabel="y", aspect="equal", title=f"density at t = {times[index]:g}")
+            ax.plot(positions[:, p, 0], positions[:, p, 1], times, lw=0.7)
+        tidy_3d(ax, "$t$")
+        ax.set_title(f"{TITLES.get(kernel, kernel)}\n{shown} trajectories", fontsize=9)
+
+        ax = fig.add_subplot(grid[1, column])
+        points, density = positions[index], d[f"{kernel}_densities"][index]
+        scatter = ax.scatter(points[:, 0], points[:, 1], c=density, s=5, norm=colour_norm(density))
+        colour_bar(fig, scatter, ax)
+        ax.set(xlabel="$x$", ylabel="$y$", aspect="equal")
+        ax.set_title(f"density at $t = {times[index]:g}$", fontsize=9)
+
         star, density = d[f"{kernel}_star_positions"], d[f"{kernel}_star_densities"]
-        triangles = Triangulation(star[:, 0], star[:, 1])
-        ax = fig.add_subplot(4, len(kernels), 2 * len(kernels) + column + 1, projection="3d")
-        ax.plot_trisurf(triangles, density, cmap="viridis", linewidth=0.1)
-        ax.view_init(elev=5, azim=-60)
-        ax.set(xlabel="x", ylabel="y", zlabel="density", title=f"star patch, t = {float(d['star_t']):g}, side")
-        ax = fig.add_subplot(4, len(kernels), 3 * len(kernels) + column + 1)
-        image = ax.tripcolor(triangles, density, shading="gouraud", cmap="viridis")
-        fig.colorbar(image, ax=ax, label="density")
-        ax.set(xlabel="x", ylabel="y", aspect="equal", title="star patch, from above")
-    fig.suptitle("2D blob method, m = 4, delta = h^0.9: bump data (h = 2/15) and star patch (4.6) (h = 1/14)")
+        mesh = lattice_triangulation(star, star_h)
+        if mesh is None:
+            mesh = support_triangulation(star)
+        norm = colour_norm(density)
+        ax = fig.add_subplot(grid[2, column], projection="3d")
+        ax.plot_trisurf(mesh, density, cmap="viridis", norm=norm, linewidth=0.1, edgecolor="0.3")
+        ax.view_init(elev=8, azim=-60)
+        tidy_3d(ax, "", y_ticks=False, aspect=(1, 1, 0.7), zoom=1.35)
+        ax.set_title(f"star patch, $t = {float(d['star_t']):g}$, side", fontsize=9)
+
+        ax = fig.add_subplot(grid[3, column])
+        image = ax.tripcolor(mesh, density, shading="gouraud", norm=norm)
+        ax.plot(star[:, 0], star[:, 1], ".", ms=1.5, color="0.2")
+        colour_bar(fig, image, ax)
+        ax.set(xlabel="$x$", ylabel="$y$", aspect="equal")
+        ax.set_title("star patch, from above", fontsize=9)
+        ax.xaxis.set_major_locator(MaxNLocator(3))
+        ax.yaxis.set_major_locator(MaxNLocator(5))
+    fig.suptitle(rf"2D blob method, $m = 4$, $\delta = h^{{{float(cfg['q']):g}}}$: bump data "
+                 rf"($h = {fraction(float(cfg['top']['h']))}$), star patch (4.6) ($h = {fraction(star_h)}$); "
+                 "colour: density")
     save_figure(fig, output.pdf, output.png)
 
 
 with logged(snakemake.log[0]):  # noqa: F821
-    run(load_results(snakemake.input.data), snakemake.params.shown, snakemake.output)  # noqa: F821
+    run(load_results(snakemake.input.data), snakemake.params.shown,  # noqa: F821
+        snakemake.config["blob"]["fig6"], snakemake.output)  # noqa: F821

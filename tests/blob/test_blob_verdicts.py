@@ -1,0 +1,576 @@
+"""Every paper and derived claim of the blob paper can fail: each measure passes on an outcome of the shape
+the paper (or our derivation) states and fails on a plausible wrong one (an order 0.5 below m q, an m = 6 rate
+outside its band, a particle method that wins where it should lose, a regularisation part at the wrong order,
+a quadrature model off by a factor 10, a cloud that does not contract, a ring of the wrong radius, two clusters
+instead of three). The inputs are synthetic: the smallest result dictionaries each function reads."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from particle_methods.blob import verdicts as v
+from particle_methods.blob.initial import data_2d
+from particle_methods.blob.rings import uniform_ring_radius
+from particle_methods.rates import Recorder
+
+CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["blob"]
+Q = 0.9
+
+
+@pytest.fixture(autouse=True)
+def quiet(monkeypatch):
+    monkeypatch.setattr(v, "RATES", Recorder(lambda *_: None))
+    monkeypatch.setattr(v, "progress", lambda *_: None)
+
+
+def status(claims, name):
+    return {claim.id: claim.status for claim in claims}[f"blob.{name}"]
+
+
+def failing(claims):
+    return [(claim.id, claim.measured, claim.tolerance) for claim in claims if claim.status != "pass"]
+
+
+# Figures 1-3: K = -|x|/2 in 1D, blob (smooth data), particle, blob (patch data)
+
+H = 0.05 * 2.0 ** -np.arange(6)
+TIMES = np.linspace(0.0, 1.0, 21)
+EXACT_TIMES = TIMES[:-1]  # the exact trajectories meet at t = 1
+ALPHA = np.linspace(-1.0, 1.0, 11)  # spacing h = 0.2
+EXACT = ALPHA[None, :] * (1.0 - EXACT_TIMES[:, None])
+TURNING = ALPHA[None, :] * (1.0 - 0.9 * TIMES[:, None])  # gap h / 10 at t = 1, twice the exact one at t = 0.95
+
+
+def blob_run(trajectory=4 * Q, density=4 * Q, paths=TURNING, energies=-1.0 - 0.1 * TIMES):
+    """Figure 1: errors C h^order; trajectories that contract but turn away from the exact collision."""
+    trajectory_errors, density_errors = 0.1 * H**trajectory, 2.0 * H**density
+    return {"h_values": H, "fit_points": 3, "q": Q, "h": 0.2, "trajectory_errors": trajectory_errors,
+            "density_errors": density_errors, "times": TIMES, "positions": paths, "exact_times": EXACT_TIMES,
+            "exact_paths": EXACT, "tight_errors": np.array([trajectory_errors[-1], density_errors[-1]]) * (1 + 1e-6),
+            "energies": energies, "mass_defect": 1e-10}
+
+
+def particle_run(trajectory=2.0, paths=None):
+    """Figure 2: straight trajectories (constant velocities in 1D)."""
+    if paths is None:
+        paths = ALPHA[None, :] * (1.0 - TIMES[:, None])
+    return {"h_values": H, "fit_points": 3, "times": TIMES, "positions": paths, "trajectory_errors": H**trajectory}
+
+
+def patch_run(trajectory=1.8, density=0.9):
+    """Figure 3: discontinuous data, slower rates."""
+    return {"h_values": H, "fit_points": 3, "trajectory_errors": 0.1 * H**trajectory, "density_errors": H**density}
+
+
+def newtonian(d1=None, d2=None, d3=None):
+    return v.newtonian_claims(d1 or blob_run(), d2 or particle_run(), d3 or patch_run())
+
+
+def test_newtonian_claims_all_pass_on_the_published_rates():
+    assert not failing(newtonian())
+
+
+def test_fig1d_blob_order_half_below_m_q_fails():
+    claims = newtonian(d1=blob_run(trajectory=4 * Q - 0.5, density=4 * Q - 0.5))
+    assert status(claims, "fig1d.order_trajectory") == "fail" and status(claims, "fig1d.order_density") == "fail"
+
+
+def test_fig2_particle_order_one_and_a_half_fails():
+    assert status(newtonian(d2=particle_run(trajectory=1.5)), "fig2.order") == "fail"
+
+
+def test_fig2_particle_faster_than_blob_fails():
+    claims = newtonian(d1=blob_run(trajectory=3.4), d2=particle_run(trajectory=3.6))
+    assert status(claims, "fig1d.order_trajectory") == "pass" and status(claims, "fig2.below_blob") == "fail"
+
+
+def test_fig3_patch_data_as_fast_as_smooth_data_fails():
+    claims = newtonian(d3=patch_run(trajectory=3.8, density=3.8))
+    assert status(claims, "fig3.slower_trajectory") == "fail" and status(claims, "fig3.slower_density") == "fail"
+
+
+def test_fig1c_blob_trajectories_that_follow_the_exact_ones_collide_and_do_not_bend_away():
+    paths = ALPHA[None, :] * (1.0 - TIMES[:, None])  # every particle reaches 0 at t = 1
+    claims = newtonian(d1=blob_run(paths=paths))
+    assert status(claims, "fig1c.no_collision") == "fail" and status(claims, "fig1c.bends_away") == "fail"
+
+
+def test_fig1c_trajectories_that_cross_collide():
+    paths = ALPHA[None, :] * (1.0 - 1.5 * TIMES[:, None])
+    assert status(newtonian(d1=blob_run(paths=paths)), "fig1c.no_collision") == "fail"
+
+
+def test_fig1c_rounding_gap_is_no_clear_gap():
+    paths = ALPHA[None, :] * np.maximum(1.0 - TIMES[:, None], 1e-4)  # gap 1e-4 h at t = 1
+    assert status(newtonian(d1=blob_run(paths=paths)), "fig1c.no_collision") == "fail"
+
+
+def test_fig1c_blob_trajectories_that_stop_just_short_of_the_collision_do_not_bend_away():
+    paths = ALPHA[None, :] * np.maximum(1.0 - TIMES[:, None], 0.06)  # a clear gap (0.06 h), the exact one at 0.95
+    claims = newtonian(d1=blob_run(paths=paths))
+    assert status(claims, "fig1c.no_collision") == "pass" and status(claims, "fig1c.bends_away") == "fail"
+
+
+def test_energy_that_rises_once_fails():
+    energies = -1.0 - 0.1 * TIMES
+    energies[10] = energies[8]
+    assert status(newtonian(d1=blob_run(energies=energies)), "energy.decrease") == "fail"
+
+
+def test_newtonian_checks_fail_on_bent_paths_loose_tolerances_and_lost_mass():
+    bent = ALPHA[None, :] * (1.0 - TIMES[:, None] ** 2)
+    assert status(newtonian(d2=particle_run(paths=bent)), "fig2.no_bending") == "fail"
+    loose = blob_run()
+    loose["tight_errors"] = loose["tight_errors"] * 1.1
+    assert status(newtonian(d1=loose), "integrator") == "fail"
+    leaky = blob_run()
+    leaky["mass_defect"] = 1e-3
+    assert status(newtonian(d1=leaky), "mass") == "fail"
+
+
+# Figure 4: K = -|x|/2 and K = |x|^3/3, particle, m = 4 and m = 6
+
+H4 = 0.05 * 2.0 ** -np.arange(5)
+KERNELS = ("newtonian_repulsive", "cubic")
+PARTS = ("trajectory", "density")
+
+
+def fig4(**errors):
+    """Errors (coefficient, order) per key ``<kernel>_<method>_<part>``; the defaults give m q = 3.6 for m = 4,
+    5.0 for m = 6, order 2 for the particle method with -|x|/2, and for |x|^3/3 a particle method at order 4 on
+    trajectories (better than m = 4, worse than m = 6) and order 2 on the density."""
+    shapes = {f"{kernel}_blob4_{part}": (0.5, 4 * Q) for kernel in KERNELS for part in PARTS}
+    shapes |= {f"{kernel}_blob6_{part}": (0.5, 5.0) for kernel in KERNELS for part in PARTS}
+    shapes |= {"newtonian_repulsive_particle_trajectory": (0.1, 2.0), "cubic_particle_trajectory": (0.01, 4.0),
+               "cubic_particle_density": (0.1, 2.0), "diagnostic_m4_density": (1.0, 3.0),
+               "diagnostic_m6_density": (1.0, 4.5)}
+    shapes |= errors
+    data = {key: a * H4**p for key, (a, p) in shapes.items()}
+    return data | {"h_values": H4, "fit_points": 3, "q": Q, "kernels": np.array(KERNELS), "diagnostic_q": 0.75,
+                   "cubic_reference_error": np.array([1e-16, 1e-16])}
+
+
+def test_fig4_claims_all_pass_on_the_published_picture():
+    assert not failing(v.fig4_claims(fig4()))
+
+
+@pytest.mark.parametrize("kernel", KERNELS)
+@pytest.mark.parametrize("part", PARTS)
+def test_fig4_m4_order_half_below_m_q_fails(kernel, part):
+    claims = v.fig4_claims(fig4(**{f"{kernel}_blob4_{part}": (0.5, 4 * Q - 0.5)}))
+    assert status(claims, f"fig4.m4_{kernel}_{part}") == "fail"
+
+
+@pytest.mark.parametrize("kernel", KERNELS)
+@pytest.mark.parametrize("part", PARTS)
+def test_fig4_m6_order_below_m4_fails(kernel, part):
+    claims = v.fig4_claims(fig4(**{f"{kernel}_blob6_{part}": (1e-3, 3.4)}))  # small finest error, slow rate
+    assert status(claims, f"fig4.m6_{kernel}_{part}") == "fail"
+    assert status(claims, f"fig4.m6_better_{kernel}_{part}") == "pass"
+
+
+@pytest.mark.parametrize("kernel", KERNELS)
+@pytest.mark.parametrize("part", PARTS)
+def test_fig4_m6_order_above_m_q_fails(kernel, part):
+    claims = v.fig4_claims(fig4(**{f"{kernel}_blob6_{part}": (0.5, 6 * Q + 0.3)}))
+    assert status(claims, f"fig4.m6_{kernel}_{part}") == "fail"
+
+
+@pytest.mark.parametrize("kernel", KERNELS)
+@pytest.mark.parametrize("part", PARTS)
+def test_fig4_m6_finest_error_above_m4_is_not_better(kernel, part):
+    claims = v.fig4_claims(fig4(**{f"{kernel}_blob6_{part}": (1e4, 5.0)}))
+    assert status(claims, f"fig4.m6_{kernel}_{part}") == "pass"
+    assert status(claims, f"fig4.m6_better_{kernel}_{part}") == "fail"
+
+
+def test_fig4_newtonian_particle_below_blob_does_not_improve():
+    claims = v.fig4_claims(fig4(newtonian_repulsive_particle_trajectory=(1e-3, 4.0)))
+    assert status(claims, "fig4.newtonian_blob_improves") == "fail"
+
+
+def test_fig4_larger_gain_for_the_cubic_kernel_fails():
+    # the particle method with |x|^3/3 far behind m = 4: the smooth kernel gains more than -|x|/2
+    claims = v.fig4_claims(fig4(cubic_particle_trajectory=(1e3, 2.0)))
+    assert status(claims, "fig4.newtonian_blob_improves") == "pass"
+    assert status(claims, "fig4.more_singular_more_gain") == "fail"
+
+
+def test_fig4_cubic_particle_behind_m4_on_trajectories_fails():
+    claims = v.fig4_claims(fig4(cubic_particle_trajectory=(0.1, 2.0)))
+    assert status(claims, "fig4.cubic_particle_beats_m4_trajectory") == "fail"
+
+
+def test_fig4_cubic_particle_ahead_of_m4_on_density_fails():
+    claims = v.fig4_claims(fig4(cubic_particle_density=(1e-3, 4.0)))
+    assert status(claims, "fig4.cubic_particle_loses_density") == "fail"
+
+
+def test_fig4_cubic_m6_behind_the_particle_trajectories_is_not_best():
+    claims = v.fig4_claims(fig4(cubic_particle_trajectory=(1e-5, 4.0)))
+    assert status(claims, "fig4.m6_better_cubic_trajectory") == "pass"
+    assert status(claims, "fig4.cubic_m6_best") == "fail"
+
+
+def test_fig4_cubic_m6_behind_m4_on_density_is_not_best():
+    claims = v.fig4_claims(fig4(cubic_blob6_density=(1e4, 5.0)))
+    assert status(claims, "fig4.cubic_m6_best") == "fail"
+
+
+def test_fig4_checks_fail_on_a_loose_reference_and_a_slow_diagnostic():
+    data = fig4(diagnostic_m4_density=(1.0, 2.4), diagnostic_m6_density=(1.0, 3.9))
+    data["cubic_reference_error"] = np.array([1e-13, 1e-16])
+    claims = v.fig4_claims(data)
+    assert status(claims, "fig4.cubic_reference") == "fail"
+    assert status(claims, "fig4.repulsive_density_q0.75_m4") == "fail"
+    assert status(claims, "fig4.repulsive_density_q0.75_m6") == "fail"
+
+
+# Figure 4, K = -|x|/2: quadrature and regularisation parts of the density error
+
+INVERSE_H = np.array([20, 40, 80, 160, 320, 640, 1280])
+BASE = 5
+JACOBIAN = 1.5
+HR = 1.0 / INVERSE_H
+
+
+def quadrature_model(h, a=0.07, power=0.34):
+    """A h^p exp(-pi^2 h^(2 (q - 1)) / J^2): aliasing of the narrowest Gaussian (about the measured A, p)."""
+    return a * h**power * np.exp(-np.pi**2 * h ** (2 * (Q - 1)) / JACOBIAN**2)
+
+
+def repulsive(m4_order=4 * Q, m6_order=6 * Q, m6_over_m4=1.07):
+    """Quadrature parts on the model, regularisation parts C h^(m q) below them at h = 1/320, totals their sum."""
+    quadrature = quadrature_model(HR)
+    finest = quadrature[BASE - 1]
+    data = {"inverse_h": INVERSE_H, "base_count": BASE, "q": Q, "t": 0.5, "jacobian": JACOBIAN}
+    for m, order, share, scale in ((4, m4_order, 0.6, 1.0), (6, m6_order, 0.01, m6_over_m4)):
+        regularisation = share * finest * (HR / HR[BASE - 1]) ** order
+        total = scale * quadrature + regularisation
+        data |= {f"m{m}_quadrature": scale * quadrature, f"m{m}_regularisation": regularisation,
+                 f"m{m}_combined": total, f"m{m}_total": total.copy()}
+    return data
+
+
+def extended(data, order):
+    """The measured totals beyond the paper's range continue at ``order`` from h = 1/320."""
+    for m in (4, 6):
+        total = data[f"m{m}_total"]
+        total[BASE:] = total[BASE - 1] * (HR[BASE:] / HR[BASE - 1]) ** order
+    return data
+
+
+def test_repulsive_claims_all_pass_on_the_aliasing_model():
+    assert not failing(v.repulsive_claims(repulsive(), CONFIG["fig4"]))
+
+
+def test_repulsive_regularisation_at_order_two_fails():
+    claims = v.repulsive_claims(repulsive(m4_order=2.0), CONFIG["fig4"])
+    assert status(claims, "fig4.repulsive_regularisation_m4") == "fail"
+
+
+def test_repulsive_m6_regularisation_at_the_m4_rate_fails():
+    claims = v.repulsive_claims(repulsive(m6_order=4 * Q), CONFIG["fig4"])
+    assert status(claims, "fig4.repulsive_regularisation_m6") == "fail"
+
+
+@pytest.mark.parametrize("ratio", [5.0, 0.2])
+def test_repulsive_different_quadrature_parts_fail(ratio):
+    claims = v.repulsive_claims(repulsive(m6_over_m4=ratio), CONFIG["fig4"])
+    assert status(claims, "fig4.repulsive_same_quadrature") == "fail"
+
+
+@pytest.mark.parametrize("factor", [10.0, 0.1])
+def test_repulsive_extended_totals_ten_times_off_the_model_fail(factor):
+    data = repulsive()
+    for m in (4, 6):
+        data[f"m{m}_total"][BASE:] *= factor
+    assert status(v.repulsive_claims(data, CONFIG["fig4"]), "fig4.repulsive_model") == "fail"
+
+
+def test_repulsive_slow_rate_that_persists_beyond_the_paper_range_fails_the_model():
+    claims = v.repulsive_claims(extended(repulsive(), 2.5), CONFIG["fig4"])
+    assert status(claims, "fig4.repulsive_model") == "fail"
+    assert status(claims, "fig4.repulsive_extended_order") == "fail"
+
+
+def test_repulsive_checks_fail_on_a_gap_between_parts_and_total_and_a_small_quadrature_share():
+    data = repulsive()
+    data["m4_combined"] = 1.5 * data["m4_combined"]
+    assert status(v.repulsive_claims(data, CONFIG["fig4"]), "fig4.repulsive_decomposition") == "fail"
+    data = repulsive()
+    data["m4_regularisation"] = 10 * data["m4_regularisation"]
+    data["m4_combined"] = data["m4_quadrature"] + data["m4_regularisation"]
+    data["m4_total"] = data["m4_combined"].copy()
+    assert status(v.repulsive_claims(data, CONFIG["fig4"]), "fig4.repulsive_quadrature_dominates") == "fail"
+
+
+@pytest.mark.xfail(strict=True, raises=AssertionError, reason="known weakness: with model_factor 2 over two "
+                   "extra halvings of h, totals that resume m q = 3.6 right after h = 1/320 (no aliasing) fit the "
+                   "model too (factor 1.13; 1.67 on the real results)")
+def test_repulsive_model_rejects_an_immediate_return_to_m_q():
+    claims = v.repulsive_claims(extended(repulsive(), 4 * Q), CONFIG["fig4"])
+    assert status(claims, "fig4.repulsive_model") == "fail"
+
+
+# Figure 5: 2D, K = log|x|/(2 pi)
+
+H5 = np.array([0.2, 0.1, 0.05, 0.025])
+
+
+def fig5(regular=(3.6, 3.6), particle=2.0, disk=(1.7, 0.9)):
+    return {"h_values": H5, "fit_points": 3, "q": Q,
+            "labels": np.array(["regular, blob", "regular, particle", "disk, blob"]),
+            "case0_trajectory": 0.1 * H5 ** regular[0], "case0_density": H5 ** regular[1],
+            "case1_trajectory": 0.1 * H5**particle, "case1_density": np.full(H5.size, np.nan),
+            "case2_trajectory": 0.1 * H5 ** disk[0], "case2_density": H5 ** disk[1]}
+
+
+def test_fig5_claims_all_pass_on_the_published_rates():
+    assert not failing(v.fig5_claims(fig5()))
+
+
+def test_fig5_regular_order_half_below_m_q_fails():
+    claims = v.fig5_claims(fig5(regular=(3.1, 3.1)))
+    assert status(claims, "fig5.m4_regular_trajectory") == "fail"
+    assert status(claims, "fig5.m4_regular_density") == "fail"
+
+
+def test_fig5_particle_faster_than_blob_fails():
+    assert status(v.fig5_claims(fig5(particle=3.9)), "fig5.particle_slower") == "fail"
+
+
+def test_fig5_disk_as_fast_as_regular_data_fails():
+    assert status(v.fig5_claims(fig5(disk=(3.8, 3.8))), "fig5.disk_slower") == "fail"
+
+
+# Figure 6: 2D end states (Newtonian, quadratic, cubic)
+
+T6 = np.linspace(0.0, 3.2, 65)
+RHO00 = float(data_2d("bump")(np.zeros((1, 2)))[0])
+
+
+def polar_cloud(radii=(0.2, 0.4, 0.6, 0.8, 1.0), angles=8):
+    """A centre particle and rings of particles."""
+    theta = 2 * np.pi * np.arange(angles) / angles
+    rings = [r * np.column_stack([np.cos(theta), np.sin(theta)]) for r in radii]
+    return np.vstack([np.zeros((1, 2)), *rings])
+
+
+CLOUD = polar_cloud()
+
+
+def radial(radius):
+    """Positions (time, particle, 2) moving along rays; ``radius(r0, t)`` gives each particle's radius."""
+    r0 = np.linalg.norm(CLOUD, axis=1)
+    direction = np.divide(CLOUD, r0[:, None], out=np.zeros_like(CLOUD), where=r0[:, None] > 0)
+    return radius(r0[None, :], T6[:, None])[..., None] * direction[None]
+
+
+def fig6(quadratic=lambda r, t: r * np.exp(-t), cubic=lambda r, t: 0.5 + (r - 0.5) * np.exp(-t), growth=RHO00,
+         energies=-1.0 - 0.1 * T6):
+    """Quadratic: contraction to a point; cubic: approach to the ring r = 0.5; the peak density of the
+    Newtonian run follows rho0(0) / (1 - growth t) (exact, growth = rho0(0): blow-up at 1/rho0(0))."""
+    peak = RHO00 / np.maximum(1.0 - T6 * growth, 1e-3)
+    return {"times": T6, "quadratic_positions": radial(quadratic), "cubic_positions": radial(cubic),
+            "newtonian_densities": peak[:, None] * np.array([0.2, 1.0]), "newtonian_energies": energies,
+            "quadratic_energies": -1.0 - 0.2 * T6, "newtonian_mass_defect": 1e-10, "quadratic_mass_defect": 1e-10,
+            "cubic_mass_defect": 1e-5}
+
+
+def test_fig6_claims_all_pass_on_point_ring_and_blowup():
+    assert not failing(v.fig6_claims(fig6()))
+
+
+@pytest.mark.parametrize("quadratic", [lambda r, t: r + 0 * t, lambda r, t: r * np.exp(-0.5 * t)],
+                         ids=["still", "slow"])
+def test_fig6_quadratic_cloud_that_does_not_contract_is_no_point(quadratic):
+    assert status(v.fig6_claims(fig6(quadratic=quadratic)), "fig6.quadratic_point") == "fail"
+
+
+@pytest.mark.parametrize("cubic", [lambda r, t: r ** (1 + t), lambda r, t: r * np.exp(-t)],
+                         ids=["inner_first", "self_similar"])
+def test_fig6_cubic_cloud_whose_radii_spread_or_keep_their_shape_is_no_ring(cubic):
+    assert status(v.fig6_claims(fig6(cubic=cubic)), "fig6.cubic_ring") == "fail"
+
+
+def test_fig6_cubic_collapse_to_a_point_is_no_ring():
+    # the coefficient of variation is scale-free: a collapse whose radii bunch lowers it as a ring does,
+    # so the ring's radius is a claim of its own
+    collapse = lambda r, t: np.exp(-t) * (0.5 + (r - 0.5) * np.exp(-t))  # noqa: E731
+    claims = v.fig6_claims(fig6(cubic=collapse))
+    assert status(claims, "fig6.cubic_ring_radius") == "fail"
+
+
+@pytest.mark.parametrize("growth", [RHO00 / 2, 0.0, RHO00 * 1.5], ids=["late", "never", "early"])
+def test_fig6_newtonian_concentration_away_from_the_blowup_time_fails(growth):
+    assert status(v.fig6_claims(fig6(growth=growth)), "fig6.newtonian_blowup") == "fail"
+
+
+def test_fig6_energy_that_rises_once_fails():
+    energies = -1.0 - 0.1 * T6
+    energies[30] = energies[28]
+    assert status(v.fig6_claims(fig6(energies=energies)), "energy.decrease_2d") == "fail"
+
+
+def test_fig6_mass_checks_fail_on_a_large_defect():
+    data = fig6()
+    data["quadratic_mass_defect"], data["cubic_mass_defect"] = 1e-4, 1e-3
+    claims = v.fig6_claims(data)
+    assert status(claims, "mass_2d") == "fail" and status(claims, "mass_2d_tabulated") == "fail"
+
+
+# Figures 7 and 8: end states of repulsive-attractive kernels, measured once steady
+
+DELTA = 0.32
+T7 = np.linspace(0.0, 40.0, 81)
+RING = uniform_ring_radius(4.0, 1.5)
+THETA = 2 * np.pi * np.arange(48) / 48
+
+
+def ring(radius, wobble=0.0, centre=True):
+    """Particles on a circle (radius * (1 + wobble cos 3 theta)), with a centre particle."""
+    r = radius * (1.0 + wobble * np.cos(3 * THETA))
+    points = np.column_stack([r * np.cos(THETA), r * np.sin(THETA)])
+    return np.vstack([np.zeros((1, 2)), points]) if centre else points
+
+
+def disk(radius):
+    """A compact radial state: a centre particle and particles spread over radii up to ``radius``."""
+    r = radius * np.linspace(0.2, 1.0, THETA.size)
+    return np.vstack([np.zeros((1, 2)), np.column_stack([r * np.cos(7 * THETA), r * np.sin(7 * THETA)])])
+
+
+def clusters(count, radius=0.6, spread=0.005):
+    """``count`` point masses on a circle, each a small cloud of 8 particles."""
+    angles = 2 * np.pi * np.arange(count) / count
+    centres = radius * np.column_stack([np.cos(angles), np.sin(angles)])
+    offsets = spread * np.column_stack([np.cos(THETA[::6]), np.sin(THETA[::6])])
+    return (centres[:, None, :] + offsets[None, :, :]).reshape(-1, 2)
+
+
+def settling(end, tau, start=None):
+    """Positions (time, particle, 2) relaxing from ``start`` (a disk) to ``end`` on the time scale ``tau``:
+    steady by the criterion (radii moving at most 0.01 delta per 5 time units) from t about 5 tau, never
+    within T7 for tau = 30."""
+    start = disk(0.3)[: len(end)] if start is None else start
+    decay = np.exp(-T7 / tau)[:, None, None]
+    return end[None] + decay * (start - end)[None]
+
+
+def fig7(**states):
+    """End states and time scales per ``<case>_<method>``; the defaults follow the paper: the blob reaches the
+    delta ring of the stationary radius first, the large-delta log state is a ring, the septic one three points."""
+    states = {"log_blob": (ring(0.4, 0.002), 1.0), "log_particle": (disk(0.5), 1.0),
+              "power_blob": (ring(RING, 0.001), 1.0), "power_particle": (ring(RING, 0.05), 3.0),
+              "septic_blob": (clusters(3), 1.0), "septic_particle": (ring(0.57, 0.01, centre=False), 1.0)} | states
+    data = {"labels": np.array(["quartic_log|quartic", "quartic_power|quartic", "septic_power|quartic"]),
+            "delta": DELTA, "h": 1 / 9}
+    for i, case in enumerate(("log", "power", "septic")):
+        data[f"case{i}_times"] = T7
+        for method in ("particle", "blob"):
+            data[f"case{i}_{method}"] = settling(*states[f"{case}_{method}"])
+    return data
+
+
+def test_fig7_claims_all_pass_on_rings_and_three_points():
+    assert not failing(v.fig7_claims(fig7(), CONFIG["fig7"]))
+
+
+@pytest.mark.parametrize("radius", [0.9 * RING, 1.1 * RING, 0.5])
+def test_fig7_ring_of_the_wrong_radius_fails(radius):
+    claims = v.fig7_claims(fig7(power_blob=(ring(radius, 0.001), 1.0)), CONFIG["fig7"])
+    assert status(claims, "fig7.delta_ring_radius") == "fail"
+
+
+def test_fig7_thick_annulus_is_no_delta_ring():
+    claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.3), 1.0)), CONFIG["fig7"])
+    assert status(claims, "fig7.delta_ring_thin") == "fail"
+
+
+def test_fig7_blob_ring_that_settles_later_than_the_particle_ring_fails():
+    claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.001), 3.0), power_particle=(ring(RING, 0.05), 1.0)),
+                           CONFIG["fig7"])
+    assert status(claims, "fig7.delta_ring_radius") == "pass"
+    assert status(claims, "fig7.blob_ring_faster") == "fail"
+
+
+@pytest.mark.xfail(strict=True, raises=AssertionError, reason="known weakness: the bound <= 1 on the ratio of "
+                   "settling times has no margin: a blob state relaxing on the particle state's time scale measures "
+                   "0.98 and passes (an exact tie, 1, passes too)")
+def test_fig7_blob_ring_that_settles_with_the_particle_ring_is_not_faster():
+    claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.001), 3.0), power_particle=(ring(RING, 0.05), 3.0)),
+                           CONFIG["fig7"])
+    assert status(claims, "fig7.blob_ring_faster") == "fail"
+
+
+def test_fig7_blob_ring_still_moving_at_the_final_time_is_unmeasured():
+    claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.001), 30.0)), CONFIG["fig7"])
+    assert status(claims, "fig7.delta_ring_radius") == "fail" and status(claims, "fig7.blob_ring_faster") == "fail"
+
+
+@pytest.mark.parametrize("log_blob", [(disk(0.45), 1.0), (ring(0.4, 0.002), 30.0)], ids=["compact", "moving"])
+def test_fig7_large_delta_log_state_that_stays_compact_or_moving_fails(log_blob):
+    claims = v.fig7_claims(fig7(log_blob=log_blob), CONFIG["fig7"])
+    assert status(claims, "fig7.log_ring_collapse") == "fail"
+
+
+@pytest.mark.parametrize("septic_blob", [(clusters(2), 1.0), (clusters(4), 1.0), (ring(0.6, centre=False), 1.0),
+                                         (clusters(3), 30.0)], ids=["two", "four", "ring", "moving"])
+def test_fig7_septic_end_state_other_than_three_steady_points_fails(septic_blob):
+    claims = v.fig7_claims(fig7(septic_blob=septic_blob), CONFIG["fig7"])
+    assert status(claims, "fig7.septic_three_points") == "fail"
+
+
+LABELS8 = ("morse_1|quartic", "morse_2|quartic", "morse_2|star")
+
+
+def fig8(changed=1, change=0.3, other=1e-3, tau=1.0):
+    """Steady end states (time scale ``tau``): particle rings of radius 1; the blob ring is larger by ``change``
+    in case ``changed`` and by ``other`` in the others."""
+    data = {"labels": np.array(LABELS8), "delta": DELTA, "h": 1 / 9}
+    for i in range(len(LABELS8)):
+        shift = change if i == changed else other
+        data |= {f"case{i}_times": T7, f"case{i}_particle": settling(ring(1.0), tau),
+                 f"case{i}_blob": settling(ring(1.0 + shift), tau)}
+    return data
+
+
+def test_fig8_claim_passes_when_only_morse_2_with_quartic_data_changes():
+    assert not failing(v.fig8_claims(fig8(), CONFIG["fig8"]))
+
+
+@pytest.mark.parametrize("changed, change, tau", [(0, 0.3, 1.0), (2, 0.3, 1.0), (1, 0.0, 1.0), (1, 0.3, 30.0)],
+                         ids=["morse_1", "star", "none", "moving"])
+def test_fig8_regularisation_effect_elsewhere_nowhere_or_unsettled_fails(changed, change, tau):
+    claims = v.fig8_claims(fig8(changed=changed, change=change, tau=tau), CONFIG["fig8"])
+    assert status(claims, "fig8.regularisation_effect") == "fail"
+
+
+# Every paper and derived claim is covered above
+
+COVERED = {
+    "fig1d.order_trajectory", "fig1d.order_density", "fig2.order", "fig2.below_blob", "fig3.slower_trajectory",
+    "fig3.slower_density", "fig1c.no_collision", "fig1c.bends_away", "energy.decrease",
+    *(f"fig4.{prefix}_{kernel}_{part}" for prefix in ("m4", "m6", "m6_better") for kernel in KERNELS
+      for part in PARTS),
+    "fig4.cubic_particle_beats_m4_trajectory", "fig4.cubic_particle_loses_density", "fig4.cubic_m6_best",
+    "fig4.newtonian_blob_improves", "fig4.more_singular_more_gain",
+    "fig4.repulsive_regularisation_m4", "fig4.repulsive_regularisation_m6", "fig4.repulsive_same_quadrature",
+    "fig4.repulsive_model", "fig4.repulsive_model_quadrature",
+    "fig5.m4_regular_trajectory", "fig5.m4_regular_density", "fig5.particle_slower", "fig5.disk_slower",
+    "fig6.quadratic_point", "fig6.cubic_ring", "fig6.cubic_ring_radius", "fig6.newtonian_blowup", "energy.decrease_2d",
+    "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.blob_ring_faster", "fig7.log_ring_collapse", "fig7.septic_three_points",
+    "fig8.regularisation_effect",
+}
+
+
+def test_every_paper_and_derived_claim_has_a_failing_test_here():
+    claims = [*newtonian(), *v.fig4_claims(fig4()), *v.repulsive_claims(repulsive(), CONFIG["fig4"]),
+              *v.fig5_claims(fig5()), *v.fig6_claims(fig6()), *v.fig7_claims(fig7(), CONFIG["fig7"]),
+              *v.fig8_claims(fig8(), CONFIG["fig8"])]
+    assert {claim.id.removeprefix("blob.") for claim in claims if claim.kind in ("paper", "derived")} == COVERED
+    catalogued = {name for name, (kind, _) in v.KINDS.items() if kind in ("paper", "derived")}
+    assert catalogued == COVERED
