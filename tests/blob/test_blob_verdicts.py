@@ -562,7 +562,8 @@ COVERED = {
     "fig4.repulsive_model", "fig4.repulsive_model_quadrature",
     "fig5.m4_regular_trajectory", "fig5.m4_regular_density", "fig5.particle_slower", "fig5.disk_slower",
     "fig6.quadratic_point", "fig6.cubic_ring", "fig6.cubic_ring_radius", "fig6.newtonian_blowup", "energy.decrease_2d",
-    "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.blob_ring_faster", "fig7.log_ring_collapse", "fig7.septic_three_points",
+    "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.blob_ring_faster", "fig7.log_ring_collapse",
+    "fig7.septic_three_points",
     "fig8.regularisation_effect",
 }
 
