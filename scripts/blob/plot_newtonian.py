@@ -76,6 +76,8 @@ def run(d, title, error_t, output):
     ax_d.set(xlabel="$h$", ylabel=f"$L^1_h$ error at $t = {error_t:g}$")
     label_h_axis(ax_d, h)
     ax_d.tick_params(axis="x", labelsize=8)
+    low, high = ax_d.get_ylim()
+    ax_d.set_ylim(low, high * (high / low) ** 0.35)   # room for the legend above the data
     ax_d.legend(loc="upper left")
     label_panel(ax_d, f"{next(letters)}. errors against $h$")
     fig.suptitle(mathtext(title))

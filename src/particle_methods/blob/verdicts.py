@@ -362,7 +362,7 @@ def fig6_claims(d):
 
 
 def fig7_claims(d, p):
-    """Figure 7: end states of the power-law kernels, each measured once steady (``nan`` otherwise)."""
+    """Figure 7: end states of the power-law kernels, each measured once steady (``inf``, unmeasured, otherwise)."""
     from .rings import uniform_ring_radius
 
     delta = float(d["delta"])
@@ -378,7 +378,7 @@ def fig7_claims(d, p):
         return d[f"case{i}_{method}"][at], steady
 
     def when_steady(value, *steady_times):
-        return float(value) if all(np.isfinite(steady_times)) else float("nan")
+        return float(value) if all(np.isfinite(steady_times)) else float("inf")  # unmeasured: never steady
 
     power_blob, power_blob_t = state("quartic_power", "blob")
     reached_blob = state("quartic_power", "blob", to_the_end=False)[1]
@@ -463,5 +463,5 @@ def fig8_claims(d, p):
                   f"end-state radii over delta ({text}), the named case over the largest other, measured once every "
                   f"state is steady (sorted radii moving at most {p['steady']['tolerance']:g} delta per {window:g} "
                   f"time units for {hold:g} time units; "
-                  f"at the final time the ratio is {ratio:.3g})", 1.0, ratio if all_steady else float("nan"),
+                  f"at the final time the ratio is {ratio:.3g})", 1.0, ratio if all_steady else float("inf"),
                   published="only that case")]
