@@ -331,7 +331,7 @@ def fig6_claims(d):
     peak = d["newtonian_densities"].max(axis=1)
     target = 10 * peak[0]
     k = int(np.argmax(peak >= target))
-    reached = np.interp(target, peak[k - 1:k + 1], times[k - 1:k + 1]) if k > 0 else np.nan
+    reached = np.interp(target, peak[k - 1:k + 1], times[k - 1:k + 1]) if k > 0 else np.inf  # never reached
     rho00 = float(data_2d("bump")(np.zeros((1, 2)))[0])
     rises = [np.diff(d[f"{k}_energies"]).max() / abs(d[f"{k}_energies"][0]) for k in ("newtonian", "quadratic")]
     return [
