@@ -43,13 +43,26 @@ EXACT = ALPHA[None, :] * (1.0 - EXACT_TIMES[:, None])
 TURNING = ALPHA[None, :] * (1.0 - 0.9 * TIMES[:, None])  # gap h / 10 at t = 1, twice the exact one at t = 0.95
 
 
-def blob_run(trajectory=4 * Q, density=4 * Q, paths=TURNING, energies=-1.0 - 0.1 * TIMES):
+EXACT_PEAK = 5.0 * np.exp(-(ALPHA / 0.3) ** 2)  # exact density at t = 0.8 at the particles, peaked
+PLATEAU = np.full(ALPHA.size, 5.0)  # exact density of the indicator data at t = 0.8: uniform
+# blob density of the indicator data: rounded at the edges, overshooting the plateau near them (the mollifier's lobe)
+ROUNDED = 5.0 * (1.0 - 0.5 * np.exp(-((1.0 - np.abs(ALPHA)) / 0.15) ** 2)
+                 + 0.03 * np.exp(-((0.6 - np.abs(ALPHA)) / 0.1) ** 2))
+
+
+def with_densities(run, blob, exact):
+    """The densities of a run at every output time (t = 0.8 is the one read) and the exact ones."""
+    return {**run, "densities": np.tile(blob, (TIMES.size, 1)), "density_times": np.array([0.0, 0.4, 0.8]),
+            "exact_densities": np.tile(exact, (3, 1))}
+
+
+def blob_run(trajectory=4 * Q, density=4 * Q, paths=TURNING, energies=-1.0 - 0.1 * TIMES, peak=0.75 * EXACT_PEAK):
     """Figure 1: errors C h^order; trajectories that contract but turn away from the exact collision."""
     trajectory_errors, density_errors = 0.1 * H**trajectory, 2.0 * H**density
-    return {"h_values": H, "fit_points": 3, "q": Q, "h": 0.2, "trajectory_errors": trajectory_errors,
+    return with_densities({"h_values": H, "fit_points": 3, "q": Q, "h": 0.2, "trajectory_errors": trajectory_errors,
             "density_errors": density_errors, "times": TIMES, "positions": paths, "exact_times": EXACT_TIMES,
             "exact_paths": EXACT, "tight_errors": np.array([trajectory_errors[-1], density_errors[-1]]) * (1 + 1e-6),
-            "energies": energies, "mass_defect": 1e-10}
+            "energies": energies, "mass_defect": 1e-10}, peak, EXACT_PEAK)
 
 
 def particle_run(trajectory=2.0, paths=None):
@@ -59,9 +72,10 @@ def particle_run(trajectory=2.0, paths=None):
     return {"h_values": H, "fit_points": 3, "times": TIMES, "positions": paths, "trajectory_errors": H**trajectory}
 
 
-def patch_run(trajectory=1.8, density=0.9):
-    """Figure 3: discontinuous data, slower rates."""
-    return {"h_values": H, "fit_points": 3, "trajectory_errors": 0.1 * H**trajectory, "density_errors": H**density}
+def patch_run(trajectory=1.8, density=0.9, profile=ROUNDED):
+    """Figure 3: discontinuous data, slower rates, a rounded density at t = 0.8."""
+    return with_densities({"h_values": H, "fit_points": 3, "trajectory_errors": 0.1 * H**trajectory,
+                           "density_errors": H**density, "times": TIMES, "positions": TURNING}, profile, PLATEAU)
 
 
 def newtonian(d1=None, d2=None, d3=None):
@@ -95,6 +109,20 @@ def test_fig1c_blob_trajectories_that_follow_the_exact_ones_collide_and_do_not_b
     paths = ALPHA[None, :] * (1.0 - TIMES[:, None])  # every particle reaches 0 at t = 1
     claims = newtonian(d1=blob_run(paths=paths))
     assert status(claims, "fig1c.no_collision") == "fail" and status(claims, "fig1c.bends_away") == "fail"
+
+
+def test_fig1b_a_sharp_blob_density_does_not_lose_resolution():
+    assert status(newtonian(d1=blob_run(peak=EXACT_PEAK)), "fig1b.loses_resolution") == "fail"
+
+
+def test_fig3b_sharp_edges_are_not_rounded():
+    assert status(newtonian(d3=patch_run(profile=PLATEAU)), "fig3b.rounded") == "fail"
+
+
+def test_fig3b_monotone_rounding_is_not_the_mollifier_oscillation():
+    monotone = 5.0 * (1.0 - 0.5 * np.exp(-((1.0 - np.abs(ALPHA)) / 0.15) ** 2))
+    claims = newtonian(d3=patch_run(profile=monotone))
+    assert status(claims, "fig3b.rounded") == "pass" and status(claims, "fig3b.mollifier_oscillation") == "fail"
 
 
 def test_fig1c_trajectories_that_cross_collide():
@@ -553,7 +581,8 @@ def test_fig8_regularisation_effect_elsewhere_nowhere_or_unsettled_fails(changed
 
 COVERED = {
     "fig1d.order_trajectory", "fig1d.order_density", "fig2.order", "fig2.below_blob", "fig3.slower_trajectory",
-    "fig3.slower_density", "fig1c.no_collision", "fig1c.bends_away", "energy.decrease",
+    "fig3.slower_density", "fig1c.no_collision", "fig1c.bends_away", "energy.decrease", "fig1b.loses_resolution",
+    "fig3b.rounded", "fig3b.mollifier_oscillation",
     *(f"fig4.{prefix}_{kernel}_{part}" for prefix in ("m4", "m6", "m6_better") for kernel in KERNELS
       for part in PARTS),
     "fig4.cubic_particle_beats_m4_trajectory", "fig4.cubic_particle_loses_density", "fig4.cubic_m6_best",

@@ -17,6 +17,7 @@ from ..steady import holds_from
 from ..workflow import progress
 
 PAPER = "blob"
+RESOLUTION_TIME = 0.8  # Figures 1B and 3B: the densities are compared with the exact ones at t = 0.8
 RATES = Recorder(progress)  # the claims script may replace it; every fit of a run is recorded here
 
 # Kind and source of every claim (see particle_methods.claims): "paper" for what the paper
@@ -32,6 +33,9 @@ KINDS = {
     "fig3.slower_density": ("paper", "Figure 3D, section 4.2"),
     "fig1c.no_collision": ("paper", "Figure 1C, section 4.2"),
     "fig1c.bends_away": ("paper", "Figure 1C, section 4.2"),
+    "fig1b.loses_resolution": ("paper", "Figure 1B, section 4.2"),
+    "fig3b.rounded": ("paper", "Figure 3B, section 4.2"),
+    "fig3b.mollifier_oscillation": ("paper", "Figure 3B, section 4.2"),
     "fig2.no_bending": ("check", "Figure 2, section 4.2: straight in 1D by construction (constant velocities)"),
     "integrator": ("check", "ODE error far below the method error (section 4.1: VODE)"),
     "energy.decrease": ("paper", "section 2.2, energy (2.4)"),
@@ -99,6 +103,14 @@ def order(d, key, name, prefix=""):
     return RATES.add(rates.order(f"{PAPER}.{name}", "h", h, errors, int(d["fit_points"])))
 
 
+def density_at(d, t):
+    """(blob density sorted by position, exact density at the same particles) at output time ``t``."""
+    i = int(np.argmin(np.abs(d["times"] - t)))
+    j = int(np.argmin(np.abs(d["density_times"] - t)))
+    order = np.argsort(d["positions"][i])
+    return d["densities"][i][order], d["exact_densities"][j][order]
+
+
 def newtonian_claims(d1, d2, d3):
     rate = 4 * float(d1["q"])
     blob_x = order(d1, "trajectory_errors", "fig1d.order_trajectory")
@@ -119,6 +131,8 @@ def newtonian_claims(d1, d2, d3):
     energy = d1["energies"]
     rise = np.diff(energy).max() / abs(energy[0])
     mass_defect = float(d1["mass_defect"])
+    peak_blob, peak_exact = density_at(d1, RESOLUTION_TIME)
+    patch_blob, patch_exact = density_at(d3, RESOLUTION_TIME)
     return [
         claim(c.close_to, "fig1d.order_trajectory", "1D", f"blob m = 4, q = 0.9, smooth data: trajectory "
               f"error rate close to m q = {rate:g}", rate, blob_x, 0.3),
@@ -135,6 +149,16 @@ def newtonian_claims(d1, d2, d3):
         claim(c.at_least, "fig1c.no_collision", "1C", "blob trajectories never collide: smallest gap between "
               "neighbouring particles up to t = 1, in units of h (a clear gap, not a rounding one)", 0.05, float(gaps),
               published="> 0"),
+        claim(c.at_most, "fig1b.loses_resolution", "1B", f"smooth data: the blob density loses resolution at t = "
+              f"{RESOLUTION_TIME:g}: largest blob density over the largest exact one", 0.9,
+              float(peak_blob.max() / peak_exact.max()), published="loses resolution"),
+        claim(c.at_most, "fig3b.rounded", "3B", "indicator data: the blob density is rounded at t = "
+              f"{RESOLUTION_TIME:g}: blob density at the outermost particle over the exact (uniform) density", 0.9,
+              float(patch_blob[[0, -1]].max() / patch_exact[[0, -1]].max()), published="rounded"),
+        claim(c.at_least, "fig3b.mollifier_oscillation", "3B", f"indicator data, t = {RESOLUTION_TIME:g}: the rounded "
+              "profile oscillates like the mollifier (4.1), whose negative lobe makes it overshoot the exact plateau "
+              "near the edges (a monotone rounding does not): largest blob density over the exact plateau, minus 1",
+              0.01, float(patch_blob.max() / patch_exact.max() - 1.0), published="oscillating profile"),
         claim(c.at_least, "fig1c.bends_away", "1C", f"near the exact collision the blob trajectories turn away from "
               f"the exact ones: smallest blob gap over smallest exact gap at t = {last:g}", 2.0, float(turning),
               published="bend away"),
