@@ -405,7 +405,20 @@ def fig6(quadratic=lambda r, t: r * np.exp(-t), cubic=lambda r, t: 0.5 + (r - 0.
     return {"times": T6, "quadratic_positions": radial(quadratic), "cubic_positions": radial(cubic),
             "newtonian_densities": peak[:, None] * np.array([0.2, 1.0]), "newtonian_energies": energies,
             "quadratic_energies": -1.0 - 0.2 * T6, "newtonian_mass_defect": 1e-10, "quadratic_mass_defect": 1e-10,
-            "cubic_mass_defect": 1e-5}
+            "cubic_mass_defect": 1e-5, "star_t": 0.8, "newtonian_star_densities": np.linspace(1.4, 4.3, 45),
+            "quadratic_star_densities": np.full(45, 1.44)}
+
+
+def test_fig6_uniform_newtonian_star_density_is_not_rounded():
+    data = fig6()
+    data["newtonian_star_densities"] = np.full(45, 5.0)
+    assert status(v.fig6_claims(data), "fig6.star_rounding_newtonian") == "fail"
+
+
+def test_fig6_rounded_quadratic_star_density_fails():
+    data = fig6()
+    data["quadratic_star_densities"] = np.linspace(1.40, 1.44, 45)
+    assert status(v.fig6_claims(data), "fig6.star_no_rounding_quadratic") == "fail"
 
 
 def test_fig6_claims_all_pass_on_point_ring_and_blowup():
@@ -590,7 +603,8 @@ COVERED = {
     "fig4.repulsive_regularisation_m4", "fig4.repulsive_regularisation_m6", "fig4.repulsive_same_quadrature",
     "fig4.repulsive_model", "fig4.repulsive_model_quadrature",
     "fig5.m4_regular_trajectory", "fig5.m4_regular_density", "fig5.particle_slower", "fig5.disk_slower",
-    "fig6.quadratic_point", "fig6.cubic_ring", "fig6.cubic_ring_radius", "fig6.newtonian_blowup", "energy.decrease_2d",
+    "fig6.quadratic_point", "fig6.cubic_ring", "fig6.cubic_ring_radius", "fig6.star_rounding_newtonian",
+    "fig6.star_no_rounding_quadratic", "fig6.newtonian_blowup", "energy.decrease_2d",
     "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.blob_ring_faster", "fig7.log_ring_collapse",
     "fig7.septic_three_points",
     "fig8.regularisation_effect",
