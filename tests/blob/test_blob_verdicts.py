@@ -526,6 +526,16 @@ def test_fig7_ring_of_the_wrong_radius_fails(radius):
     assert status(claims, "fig7.delta_ring_radius") == "fail"
 
 
+def test_fig7_particle_log_state_that_is_a_ring_fails():
+    claims = v.fig7_claims(fig7(log_particle=(ring(0.5, 0.002), 1.0)), CONFIG["fig7"])
+    assert status(claims, "fig7.particle_log_disk") == "fail"
+
+
+def test_fig7_particle_power_state_that_is_a_disk_fails():
+    claims = v.fig7_claims(fig7(power_particle=(disk(0.5), 3.0)), CONFIG["fig7"])
+    assert status(claims, "fig7.particle_power_ring") == "fail"
+
+
 def test_fig7_thick_annulus_is_no_delta_ring():
     claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.3), 1.0)), CONFIG["fig7"])
     assert status(claims, "fig7.delta_ring_thin") == "fail"
@@ -605,7 +615,8 @@ COVERED = {
     "fig5.m4_regular_trajectory", "fig5.m4_regular_density", "fig5.particle_slower", "fig5.disk_slower",
     "fig6.quadratic_point", "fig6.cubic_ring", "fig6.cubic_ring_radius", "fig6.star_rounding_newtonian",
     "fig6.star_no_rounding_quadratic", "fig6.newtonian_blowup", "energy.decrease_2d",
-    "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.blob_ring_faster", "fig7.log_ring_collapse",
+    "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.particle_log_disk", "fig7.particle_power_ring",
+    "fig7.blob_ring_faster", "fig7.log_ring_collapse",
     "fig7.septic_three_points",
     "fig8.regularisation_effect",
 }
