@@ -8,7 +8,9 @@ from particle_methods.workflow import load_results, logged, progress
 
 def run(inputs, output, p):
     rows = [*v.newtonian_claims(load_results(inputs.fig1), load_results(inputs.fig2), load_results(inputs.fig3)),
-            *v.fig4_claims(load_results(inputs.fig4)), *v.repulsive_claims(load_results(inputs.repulsive), p["fig4"]),
+            *v.fig4_claims(load_results(inputs.fig4)),
+            *v.fig4log_claims(load_results(inputs.fig4log), load_results(inputs.fig4)),
+            *v.repulsive_claims(load_results(inputs.repulsive), p["fig4"]),
             *v.fig5_claims(load_results(inputs.fig5)), *v.fig6_claims(load_results(inputs.fig6)),
             *v.fig7_claims(load_results(inputs.fig7), p["fig7"]), *v.fig8_claims(load_results(inputs.fig8), p["fig8"])]
     for row in rows:

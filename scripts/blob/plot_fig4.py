@@ -1,4 +1,5 @@
-"""Figure 4: L1_h errors at t = 0.5; rows K = -|x|/2 and |x|^3/3, columns particle, m = 4, m = 6."""
+"""Figure 4: L1_h errors at t = 0.5; rows K = -|x|/2 and |x|^3/3 (or the row label's -log|x|/(2 pi)),
+columns particle, m = 4, m = 6."""
 
 import numpy as np
 
@@ -6,7 +7,8 @@ from particle_methods.convergence import fit_order
 from particle_methods.plotting import label_h_axis, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
-ROWS = {"newtonian_repulsive": r"$K = (-\Delta)^{-1} = -|x|/2$", "cubic": r"$K = |x|^3/3$"}
+ROWS = {"newtonian_repulsive": r"$K = (-\Delta)^{-1} = -|x|/2$", "cubic": r"$K = |x|^3/3$",
+        "log_repulsive": r"$K = -\log|x|/(2\pi)$"}
 COLUMNS = (("particle", "particle method"), ("blob4", "blob, $m = 4$"), ("blob6", "blob, $m = 6$"))
 
 

@@ -508,11 +508,13 @@ def fig7(**states):
               "power_blob": (ring(RING, 0.001), 1.0), "power_particle": (ring(RING, 0.05), 3.0),
               "septic_blob": (clusters(3), 1.0), "septic_particle": (ring(0.57, 0.01, centre=False), 1.0)} | states
     data = {"labels": np.array(["quartic_log|quartic", "quartic_power|quartic", "septic_power|quartic"]),
-            "delta": DELTA, "h": 1 / 9}
+            "delta": DELTA, "h": 1 / 9, "paper_tables": np.array([2.5, 100])}
     for i, case in enumerate(("log", "power", "septic")):
         data[f"case{i}_times"] = T7
         for method in ("particle", "blob"):
             data[f"case{i}_{method}"] = settling(*states[f"{case}_{method}"])
+        coarse = states.get(f"{case}_blob_paper_tables", states[f"{case}_blob"])
+        data[f"case{i}_blob_paper_tables"] = settling(*coarse)
     return data
 
 
@@ -578,14 +580,19 @@ def test_fig7_septic_end_state_other_than_three_steady_points_fails(septic_blob)
 LABELS8 = ("morse_1|quartic", "morse_2|quartic", "morse_2|star")
 
 
-def fig8(changed=1, change=0.3, other=1e-3, tau=1.0):
+def fig8(changed=1, change=0.3, other=1e-3, tau=1.0, coarse_changed=None, coarse_change=None):
     """Steady end states (time scale ``tau``): particle rings of radius 1; the blob ring is larger by ``change``
-    in case ``changed`` and by ``other`` in the others."""
-    data = {"labels": np.array(LABELS8), "delta": DELTA, "h": 1 / 9}
+    in case ``changed`` and by ``other`` in the others. The blob run on the paper's tables is the same unless
+    ``coarse_changed`` and ``coarse_change`` say otherwise."""
+    coarse_changed = changed if coarse_changed is None else coarse_changed
+    coarse_change = change if coarse_change is None else coarse_change
+    data = {"labels": np.array(LABELS8), "delta": DELTA, "h": 1 / 9, "paper_tables": np.array([5.0, 200])}
     for i in range(len(LABELS8)):
         shift = change if i == changed else other
+        coarse = coarse_change if i == coarse_changed else other
         data |= {f"case{i}_times": T7, f"case{i}_particle": settling(ring(1.0), tau),
-                 f"case{i}_blob": settling(ring(1.0 + shift), tau)}
+                 f"case{i}_blob": settling(ring(1.0 + shift), tau),
+                 f"case{i}_blob_paper_tables": settling(ring(1.0 + coarse), tau)}
     return data
 
 
@@ -598,6 +605,45 @@ def test_fig8_claim_passes_when_only_morse_2_with_quartic_data_changes():
 def test_fig8_regularisation_effect_elsewhere_nowhere_or_unsettled_fails(changed, change, tau):
     claims = v.fig8_claims(fig8(changed=changed, change=change, tau=tau), CONFIG["fig8"])
     assert status(claims, "fig8.regularisation_effect") == "fail"
+
+
+def test_fig8_checks_fail_when_the_paper_tables_change_the_end_states():
+    claims = v.fig8_claims(fig8(coarse_changed=2, coarse_change=0.3), CONFIG["fig8"])
+    assert status(claims, "fig8.paper_tables") == "fail"
+    assert status(claims, "fig8.regularisation_effect_paper_tables") == "fail"
+    assert status(claims, "fig8.regularisation_effect") == "pass"
+
+
+def test_fig7_check_fails_when_the_paper_tables_change_an_end_state():
+    claims = v.fig7_claims(fig7(septic_blob_paper_tables=(clusters(3, radius=0.7), 1.0)), CONFIG["fig7"])
+    assert status(claims, "fig7.paper_tables") == "fail"
+    assert not failing(v.fig7_claims(fig7(), CONFIG["fig7"]))
+
+
+# Figure 4's row label, K = -log|x|/(2 pi), against its caption's (-Delta)^{-1}
+
+def fig4log(density=1.2, trajectory=3.4, reference=1e-12):
+    """The label's reading: m = 4 and m = 6 errors at the given orders, a reference error ``reference``."""
+    data = {f"log_repulsive_blob{m}_{part}": 0.5 * H4**order for m in (4, 6)
+            for part, order in (("trajectory", trajectory), ("density", density))}
+    data["log_repulsive_particle_trajectory"] = 0.1 * H4
+    return data | {"h_values": H4, "fit_points": 3, "q": Q, "kernels": np.array(["log_repulsive"]),
+                   "log_repulsive_reference_error": np.array([reference, reference])}
+
+
+def test_fig4log_checks_pass_when_the_caption_reading_fits_the_published_rates():
+    assert not failing(v.fig4log_claims(fig4log(), fig4(newtonian_repulsive_blob4_density=(0.5, 2.9))))
+
+
+def test_fig4log_check_fails_when_the_label_reading_fits_the_published_density_rate_better():
+    claims = v.fig4log_claims(fig4log(density=3.6), fig4(newtonian_repulsive_blob4_density=(0.5, 2.9)))
+    assert status(claims, "fig4log.caption_fits_density") == "fail"
+    assert status(claims, "fig4log.caption_fits_trajectory") == "pass"
+
+
+def test_fig4log_reference_as_far_off_as_the_errors_fails():
+    claims = v.fig4log_claims(fig4log(reference=1.0), fig4())
+    assert status(claims, "fig4log.reference") == "fail"
 
 
 # Every paper and derived claim is covered above

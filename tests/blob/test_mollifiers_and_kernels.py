@@ -78,16 +78,22 @@ def test_pair_sums_do_not_depend_on_the_number_of_threads(rng):
     results on one thread or several (the claims table must not depend on the machine's cores)."""
     import numba
 
-    x = rng.normal(size=(301, 2))
-    m = rng.uniform(0.1, 1, 301)
+    from particle_methods.blob import kernels
+
+    n = kernels.PARALLEL_MIN_PARTICLES + 13
+    x = rng.normal(size=(n, 2))
+    m = rng.uniform(0.1, 1, n)
     arrays = Kernel("test", 2, (POWER, POWER), (1.0, -1.0), (4.0, 1.5)).arrays()
     threads = numba.get_num_threads()
     try:
         numba.set_num_threads(1)
-        serial = pair_sums(x, m, *arrays)
+        one_thread = pair_sums(x, m, *arrays)
     finally:
         numba.set_num_threads(threads)
     parallel = pair_sums(x, m, *arrays)
+    assert all(np.array_equal(a, b) for a, b in zip(one_thread, parallel))
+    # Below PARALLEL_MIN_PARTICLES the serial driver runs: the same sums, bit for bit.
+    serial = kernels._reduce(*kernels._accumulators_serial(x, m, *arrays))
     assert all(np.array_equal(a, b) for a, b in zip(serial, parallel))
 
 

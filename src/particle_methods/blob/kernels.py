@@ -11,8 +11,11 @@ per Gaussian, each in closed form:
 - GAUSS_CUBIC_1D, (|x|^3/3) * G_s: with Z ~ N(x, s^2/2),
   k = E|Z|^3/3, grad = E[Z|Z|] = (x^2 + s^2/2) erf(x/s) + x s e^{-x^2/s^2}/sqrt(pi),
   Laplacian = 2 E|Z| = 2 (x erf(x/s) + s e^{-x^2/s^2}/sqrt(pi)).
-- LOG_2D, log|x|/(2 pi) in 2D (the Newtonian kernel): grad = x/(2 pi |x|^2), Laplacian a
-  Dirac mass (0 away from the origin), grad K(0) := 0.
+- LOG, log|x|/(2 pi) in d dimensions: grad = x/(2 pi |x|^2), Laplacian (d - 2)/(2 pi |x|^2) away
+  from the origin (in 2D, the Newtonian kernel, a Dirac mass), grad K(0) := 0.
+- GAUSS_LOG_1D, (log|x|/(2 pi)) * G_s in 1D: with Dawson's integral F and z = |x|/s,
+  grad = F(z)/(pi s) sign(x) (the principal value (1/x) * G_s = (2/s) F(x/s)),
+  Laplacian = F'(z)/(pi s^2) = (1 - 2 z F(z))/(pi s^2); its potential is not needed here.
 - GAUSS_LOG_2D, (log|x|/(2 pi)) * G_s in 2D: grad = x (1 - e^{-r^2/s^2})/(2 pi r^2),
   Laplacian = G_s = e^{-r^2/s^2}/(pi s^2), k = (log r + E1(r^2/s^2)/2)/(2 pi).
 - TABLE, a mollified term tabulated on a radial grid (:mod:`particle_methods.blob.radial`),
@@ -29,6 +32,7 @@ are written once for any dimension.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -38,8 +42,9 @@ from numba import prange
 from ..jit import njit
 from ..validation import finite_number, one_of
 from .mollifiers import Mollifier
+from .special import EULER_GAMMA, dawson_and_slope, exp1
 
-GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG_2D, GAUSS_LOG_2D, TABLE, EXP = 0, 1, 2, 3, 4, 5, 6
+GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG, GAUSS_LOG_2D, TABLE, EXP, GAUSS_LOG_1D = 0, 1, 2, 3, 4, 5, 6, 7
 _SQRT_PI = math.sqrt(math.pi)
 #: Beyond this many widths erfc and the Gaussian are below 1e-17 relative: erf = 1, e = 0 exactly
 #: in double precision, and the mollified kernel equals the raw one.
@@ -52,36 +57,6 @@ def _gauss_parts(r, s):
     if r > _GAUSS_CUTOFF * s:
         return 1.0, 0.0
     return math.erf(r / s), math.exp(-(r / s) ** 2)
-
-
-_EULER_GAMMA = 0.5772156649015329
-
-
-@njit
-def _exp1(x):
-    """Exponential integral E1(x), x > 0: power series below 1, continued fraction above."""
-    if x < 1.0:
-        total = 0.0
-        term = 1.0
-        for k in range(1, 40):
-            term *= -x / k
-            total -= term / k
-        return -_EULER_GAMMA - math.log(x) + total
-    # Lentz's continued fraction for e^x E1(x) = 1/(x + 1/(1 + 1/(x + 2/(1 + 2/(x + ...))))).
-    b = x + 1.0
-    c = 1e300
-    d = 1.0 / b
-    result = d
-    for i in range(1, 200):
-        a = -float(i * i)
-        b += 2.0
-        d = 1.0 / (a * d + b)
-        c = b + a / c
-        delta = c * d
-        result *= delta
-        if abs(delta - 1.0) < 1e-16:
-            break
-    return result * math.exp(-x)
 
 
 @njit
@@ -107,10 +82,17 @@ def _forces(kind, coefficient, parameter, r, dimension):
         e = math.exp(-z)
         one_minus_e = 1.0 - e if z > 1e-3 else -math.expm1(-z)
         return coefficient * one_minus_e / (2 * math.pi * r * r), coefficient * e / (math.pi * s * s)
-    if kind == LOG_2D:
+    if kind == LOG:
         if r == 0.0:
             return 0.0, 0.0
-        return coefficient / (2 * math.pi * r * r), 0.0
+        g = coefficient / (2 * math.pi * r * r)
+        return g, (dimension - 2.0) * g
+    if kind == GAUSS_LOG_1D:
+        s = parameter
+        if r == 0.0:
+            return coefficient / (math.pi * s * s), coefficient / (math.pi * s * s)
+        f, slope = dawson_and_slope(r / s)
+        return coefficient * f / (math.pi * s * r), coefficient * slope / (math.pi * s * s)
     if kind == EXP:
         if r == 0.0:
             return 0.0, 0.0
@@ -140,11 +122,13 @@ def _potential(kind, coefficient, parameter, r):
     if kind == GAUSS_LOG_2D:
         s = parameter
         if r == 0.0:
-            return coefficient * (math.log(s) - 0.5 * _EULER_GAMMA) / (2 * math.pi)
+            return coefficient * (math.log(s) - 0.5 * EULER_GAMMA) / (2 * math.pi)
         z = (r / s) ** 2
-        tail = 0.5 * _exp1(z) if z < 745.0 else 0.0
+        tail = 0.5 * exp1(z) if z < 745.0 else 0.0
         return coefficient * (math.log(r) + tail) / (2 * math.pi)
-    if kind == LOG_2D:
+    if kind == GAUSS_LOG_1D:  # not tabulated: Kernel.has_potential is False
+        return math.nan
+    if kind == LOG:
         return coefficient * math.log(r) / (2 * math.pi) if r > 0 else 0.0
     if kind == EXP:
         return coefficient * math.exp(-r / parameter)
@@ -187,41 +171,79 @@ def _profile_potential(kinds, coefficients, parameters, r):
 #: Rows are dealt to this many accumulators, round robin, whatever the number of threads: each
 #: pair is evaluated once, and the sums are added in the same order on any machine.
 _ACCUMULATORS = 16
+#: Below this many particles the sums run on one thread: a call is then a fraction of a millisecond,
+#: and waking threads (worse when two jobs share the cores) costs more than it saves. Both paths
+#: give bit-identical sums.
+PARALLEL_MIN_PARTICLES = 512
+
+
+@njit
+def _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, steps, velocities, divergences):
+    """Accumulator c: the rows i = c mod 16 and their partners j > i."""
+    n, dimension = positions.shape
+    diff = np.empty(dimension)
+    _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, dimension, tables, steps)
+    for i in range(c, n, _ACCUMULATORS):
+        divergences[c, i] -= masses[i] * self_lap
+        for j in range(i + 1, n):
+            r2 = 0.0
+            for axis in range(dimension):
+                diff[axis] = positions[i, axis] - positions[j, axis]
+                r2 += diff[axis] * diff[axis]
+            g, lap = _profile_forces(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
+            for axis in range(dimension):
+                velocities[c, i, axis] -= masses[j] * g * diff[axis]
+                velocities[c, j, axis] += masses[i] * g * diff[axis]
+            divergences[c, i] -= masses[j] * lap
+            divergences[c, j] -= masses[i] * lap
 
 
 @njit(parallel=True)
+def _accumulators_parallel(positions, masses, kinds, coefficients, parameters, tables, steps):
+    n, dimension = positions.shape
+    velocities = np.zeros((_ACCUMULATORS, n, dimension))
+    divergences = np.zeros((_ACCUMULATORS, n))
+    for c in prange(_ACCUMULATORS):
+        _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, steps, velocities, divergences)
+    return velocities, divergences
+
+
+@njit
+def _accumulators_serial(positions, masses, kinds, coefficients, parameters, tables, steps):
+    n, dimension = positions.shape
+    velocities = np.zeros((_ACCUMULATORS, n, dimension))
+    divergences = np.zeros((_ACCUMULATORS, n))
+    for c in range(_ACCUMULATORS):
+        _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, steps, velocities, divergences)
+    return velocities, divergences
+
+
+@njit
+def _reduce(velocities, divergences):
+    """The accumulators summed in a fixed order."""
+    velocity = np.zeros(velocities.shape[1:])
+    divergence = np.zeros(divergences.shape[1])
+    for c in range(_ACCUMULATORS):
+        velocity += velocities[c]
+        divergence += divergences[c]
+    return velocity, divergence
+
+
 def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps):
     """Velocities -sum_j m_j grad K(X_i - X_j) (shape (N, d)) and divergences -sum_j m_j Delta K(X_i - X_j).
 
     grad K is odd and Delta K even, so each pair i < j is evaluated once and added to both rows,
     half the kernel evaluations of the plain double loop. Accumulator c takes the rows i = c mod 16
-    and their partners; the accumulators are then summed in a fixed order.
+    and their partners; the accumulators are then summed in a fixed order, on one thread below
+    :data:`PARALLEL_MIN_PARTICLES` particles and on all of them above (the same sums either way).
+    The arrays are those of :meth:`Kernel.arrays`; ``positions`` (N, d) and ``masses`` (N,) are checked here.
     """
-    n, dimension = positions.shape
-    velocities = np.zeros((_ACCUMULATORS, n, dimension))
-    divergences = np.zeros((_ACCUMULATORS, n))
-    for c in prange(_ACCUMULATORS):
-        diff = np.empty(dimension)
-        _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, dimension, tables, steps)
-        for i in range(c, n, _ACCUMULATORS):
-            divergences[c, i] -= masses[i] * self_lap
-            for j in range(i + 1, n):
-                r2 = 0.0
-                for axis in range(dimension):
-                    diff[axis] = positions[i, axis] - positions[j, axis]
-                    r2 += diff[axis] * diff[axis]
-                g, lap = _profile_forces(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
-                for axis in range(dimension):
-                    velocities[c, i, axis] -= masses[j] * g * diff[axis]
-                    velocities[c, j, axis] += masses[i] * g * diff[axis]
-                divergences[c, i] -= masses[j] * lap
-                divergences[c, j] -= masses[i] * lap
-    velocity = np.zeros((n, dimension))
-    divergence = np.zeros(n)
-    for c in range(_ACCUMULATORS):
-        velocity += velocities[c]
-        divergence += divergences[c]
-    return velocity, divergence
+    positions = np.ascontiguousarray(positions, dtype=np.float64)
+    masses = np.ascontiguousarray(masses, dtype=np.float64)
+    if positions.ndim != 2 or masses.shape != positions.shape[:1]:
+        raise ValueError(f"positions must have shape (N, d) and masses (N,), got {positions.shape} and {masses.shape}")
+    driver = _accumulators_parallel if positions.shape[0] >= PARALLEL_MIN_PARTICLES else _accumulators_serial
+    return _reduce(*driver(positions, masses, kinds, coefficients, parameters, tables, steps))
 
 
 @njit(parallel=True)
@@ -256,8 +278,9 @@ class Kernel:
 
     @property
     def has_potential(self) -> bool:
-        """Whether K itself is known (tabulated terms carry only grad and Laplacian)."""
-        return TABLE not in self.kinds
+        """Whether K itself is known (tabulated terms and the mollified 1D log kernel carry only grad
+        and Laplacian)."""
+        return TABLE not in self.kinds and GAUSS_LOG_1D not in self.kinds
 
     def arrays(self):
         if self.tables:
@@ -288,6 +311,7 @@ KERNELS_1D = {
     "newtonian_attractive": (1.0, GAUSS_ABS_1D, 1.0),   # K = (Delta)^{-1} = |x|/2
     "newtonian_repulsive": (-1.0, GAUSS_ABS_1D, 1.0),   # K = (-Delta)^{-1} = -|x|/2
     "cubic": (1.0, GAUSS_CUBIC_1D, 3.0),                # K = |x|^3/3
+    "log_repulsive": (-1.0, GAUSS_LOG_1D, 0.0),         # K = -log|x|/(2 pi), Figure 4's row label
 }
 
 
@@ -297,6 +321,8 @@ def kernel_1d(name: str, mollifier: Mollifier | None = None, delta: float | None
     if mollifier is None:
         if delta is not None:
             raise ValueError("delta needs a mollifier")
+        if gaussian_kind == GAUSS_LOG_1D:
+            return Kernel(name, 1, (LOG,), (sign,), (0.0,))
         # |x|/2 for the Newtonian kernels, |x|^3/3 for the cubic one.
         return Kernel(name, 1, (POWER,), (sign * (0.5 if a == 1.0 else 1.0),), (a,))
     if mollifier.dimension != 1:
@@ -304,7 +330,7 @@ def kernel_1d(name: str, mollifier: Mollifier | None = None, delta: float | None
     if delta is None or finite_number("delta", delta) <= 0:
         raise ValueError(f"delta must be positive, got {delta}")
     widths = mollifier.scaled_widths(delta)
-    # The Gaussian terms carry the kernel's own factor (1/2 or 1/3): only sign and weights remain.
+    # The Gaussian terms carry the kernel's own factor (1/2, 1/3 or 1/(2 pi)): only sign and weights remain.
     return Kernel(f"{name} (m = {mollifier.order}, delta = {delta:.4g})", 1,
                   tuple(gaussian_kind for _ in widths), tuple(sign * w for w in mollifier.weights),
                   tuple(float(s) for s in widths))
@@ -312,10 +338,10 @@ def kernel_1d(name: str, mollifier: Mollifier | None = None, delta: float | None
 
 #: 2D kernels of section 4.4: name -> unmollified terms (kind, coefficient, parameter).
 KERNELS_2D = {
-    "newtonian": ((LOG_2D, 1.0, 0.0),),                           # log|x|/(2 pi) = (Delta)^{-1}
+    "newtonian": ((LOG, 1.0, 0.0),),                           # log|x|/(2 pi) = (Delta)^{-1}
     "quadratic": ((POWER, 1.0, 2.0),),                            # |x|^2/2
     "cubic": ((POWER, 1.0, 3.0),),                                # |x|^3/3
-    "quartic_log": ((POWER, 1.0, 4.0), (LOG_2D, -1.0, 0.0)),      # |x|^4/4 - log|x|/(2 pi)
+    "quartic_log": ((POWER, 1.0, 4.0), (LOG, -1.0, 0.0)),      # |x|^4/4 - log|x|/(2 pi)
     "quartic_power": ((POWER, 1.0, 4.0), (POWER, -1.0, 1.5)),     # |x|^4/4 - |x|^1.5/1.5
     "septic_power": ((POWER, 1.0, 7.0), (POWER, -1.0, 1.5)),      # |x|^7/7 - |x|^1.5/1.5
     "morse_1": ((EXP, 1.0, 1.0), (EXP, -2.0, 2.0)),               # e^{-|x|} - 2 e^{-|x|/2}
@@ -332,6 +358,15 @@ def _radial_laplacian(kind, parameter):
     raise ValueError(f"no radial Laplacian for term kind {kind}")
 
 
+@functools.lru_cache(maxsize=32)
+def _mollified_table(kind, parameter, mollifier, delta, radius, points):
+    """The radial table of one unmollified term (without its coefficient), built once per process:
+    the two Morse kernels share theirs, and the runs of a figure rebuild the same kernel."""
+    from .radial import tabulate
+
+    return tabulate(_radial_laplacian(kind, parameter), mollifier, delta, radius, points)
+
+
 def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None = None, *,
               table_radius: float = 5.0, table_points: int = 8001) -> Kernel:
     """A 2D kernel of section 4.4, raw (particle method) or mollified by psi_delta.
@@ -341,8 +376,6 @@ def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None
     below m, Remark 3.4); every other term is tabulated by numerical radial convolution
     (:func:`particle_methods.blob.radial.tabulate`) on [0, table_radius].
     """
-    from .radial import tabulate
-
     terms = one_of("2D kernel", name, KERNELS_2D)
     if mollifier is None:
         if delta is not None:
@@ -355,7 +388,7 @@ def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None
         raise ValueError(f"delta must be positive, got {delta}")
     kinds, coefficients, parameters, tables = [], [], [], []
     for kind, coefficient, parameter in terms:
-        if kind == LOG_2D:
+        if kind == LOG:
             for weight, width in zip(mollifier.weights, mollifier.scaled_widths(delta)):
                 kinds.append(GAUSS_LOG_2D)
                 coefficients.append(coefficient * weight)
@@ -365,8 +398,8 @@ def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None
             coefficients.append(coefficient)
             parameters.append(parameter)
         else:
-            tables.append(tabulate(_radial_laplacian(kind, parameter), mollifier, delta, table_radius,
-                                   table_points))
+            tables.append(_mollified_table(kind, float(parameter), mollifier, float(delta), float(table_radius),
+                                           int(table_points)))
             kinds.append(TABLE)
             coefficients.append(coefficient)
             parameters.append(float(len(tables) - 1))

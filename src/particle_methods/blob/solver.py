@@ -110,8 +110,10 @@ def run_1d(data, kernel: str, h: float, times, *, method: str = "blob", order: i
     return integrate_particles(points, rho0, masses, k, times, with_density=with_density, rtol=rtol, atol=atol, h=h)
 
 
-def setup_2d(data, kernel: str, h: float, *, method: str = "blob", q: float = 0.9, delta: float | None = None):
-    """(points (N, 2), rho0, masses, kernel, with_density) of the 2D blob (m = 4, (4.2)) or particle method."""
+def setup_2d(data, kernel: str, h: float, *, method: str = "blob", q: float = 0.9, delta: float | None = None,
+             table_radius: float = 5.0, table_points: int = 8001):
+    """(points (N, 2), rho0, masses, kernel, with_density) of the 2D blob (m = 4, (4.2)) or particle method;
+    the radial tables of a tabulated blob kernel cover [0, table_radius] with table_points nodes."""
     if isinstance(data, str):
         data = data_2d(data)
     points = grid_2d(h, data)
@@ -123,17 +125,20 @@ def setup_2d(data, kernel: str, h: float, *, method: str = "blob", q: float = 0.
             if not 0.5 < q < 1.0:
                 raise ValueError(f"q must lie in (1/2, 1), got {q}")
             delta = h**q
-        return points, rho0, masses, kernel_2d(kernel, mollifier(4, 2), delta), True
+        return points, rho0, masses, kernel_2d(kernel, mollifier(4, 2), delta, table_radius=table_radius,
+                                               table_points=table_points), True
     if method == "particle":
         return points, rho0, masses, kernel_2d(kernel), kernel != "newtonian"
     raise ValueError(f"unknown method {method!r}: expected 'blob' or 'particle'")
 
 
 def run_2d(data, kernel: str, h: float, times, *, method: str = "blob", q: float = 0.9, delta: float | None = None,
-           rtol: float = 1e-10, atol: float = 1e-12) -> BlobRun:
+           rtol: float = 1e-10, atol: float = 1e-12, table_radius: float = 5.0, table_points: int = 8001) -> BlobRun:
     """Blob (m = 4 mollifier (4.2), delta = h^q unless ``delta`` is given) or particle method in 2D
-    for a kernel of :data:`~particle_methods.blob.kernels.KERNELS_2D` and data of section 4.4."""
-    points, rho0, masses, k, with_density = setup_2d(data, kernel, h, method=method, q=q, delta=delta)
+    for a kernel of :data:`~particle_methods.blob.kernels.KERNELS_2D` and data of section 4.4
+    (tabulated kernels: radial tables on [0, table_radius] with table_points nodes)."""
+    points, rho0, masses, k, with_density = setup_2d(data, kernel, h, method=method, q=q, delta=delta,
+                                                     table_radius=table_radius, table_points=table_points)
     return integrate_particles(points, rho0, masses, k, times, with_density=with_density, rtol=rtol, atol=atol, h=h)
 
 
