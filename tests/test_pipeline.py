@@ -14,7 +14,8 @@ from particle_methods.claims import COLUMNS, KINDS, read_verdicts
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
 FIGURES = {"sticky": 7, "ltp": 8, "blob": 8}
-OWN_FIGURES = {"sticky": [], "ltp": ["long_time", "nonaffine"], "blob": ["repulsive"]}  # our studies beyond the papers
+# Figures of our own studies beyond the papers
+OWN_FIGURES = {"sticky": [], "ltp": ["long_time", "nonaffine"], "blob": ["repulsive", "fig4log"]}
 EXPECTED_FIGURES = [f"figures/{paper}/{name}.{ext}" for paper, count in FIGURES.items()
                     for name in [*(f"fig{number}" for number in range(1, count + 1)), *OWN_FIGURES[paper]]
                     for ext in ("pdf", "png")]
