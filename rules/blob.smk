@@ -34,6 +34,17 @@ BLOB_CAPTIONS = {
     ),
 }
 
+# Figure 4 (fig4) and the reading of its row label, K = -log|x|/(2 pi) (fig4log).
+BLOB_FIG4_STUDIES = {
+    "fig4": BLOB["fig4"],
+    "fig4log": {
+        **BLOB["fig4"],
+        **BLOB["fig4"]["log_reading"],
+        "kernels": ["log_repulsive"],
+        "diagnostic_q": None,
+    },
+}
+
 BLOB_FIGURES = expand(
     "figures/blob/{name}.{ext}",
     name=[*(f"fig{number}" for number in range(1, 9)), "fig4log", "repulsive"],
@@ -88,18 +99,6 @@ rule blob_newtonian_figure:
         "../scripts/blob/plot_newtonian.py"
 
 
-def fig4_study(wildcards):
-    """Figure 4 (fig4) or the reading of its row label, K = -log|x|/(2 pi) (fig4log)."""
-    if wildcards.figure == "fig4":
-        return BLOB["fig4"]
-    return {
-        **BLOB["fig4"],
-        **BLOB["fig4"]["log_reading"],
-        "kernels": ["log_repulsive"],
-        "diagnostic_q": None,
-    }
-
-
 rule blob_fig4_data:
     """Figure 4: particle, m = 4 and m = 6 errors for two kernels; the same for the row label's kernel."""
     input:
@@ -113,7 +112,7 @@ rule blob_fig4_data:
     conda:
         ENVIRONMENT
     params:
-        cfg=fig4_study,
+        cfg=lambda wildcards: BLOB_FIG4_STUDIES[wildcards.figure],
     script:
         "../scripts/blob/fig4_data.py"
 
