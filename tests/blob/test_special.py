@@ -99,3 +99,26 @@ def test_vectorised_radial_quadrature_matches_one_quadrature_per_radius():
                 return 1.5 * rho**0.5 * (2 / s**2) * np.exp(-((ri - rho) / s) ** 2) * special.i0e(2 * ri * rho / s**2)
             total += weight * integrate.quad(integrand, 0.0, ri + 9 * s, limit=200, epsabs=1e-13, epsrel=1e-12)[0]
         assert value == pytest.approx(total, rel=1e-10, abs=1e-12)
+
+
+def test_vectorised_exponential_and_its_complement_to_one_ulp():
+    from particle_methods.blob.vector_exp import exp_minus_and_complement_array
+
+    z = np.concatenate([np.geomspace(1e-300, 1e-3, 2001), np.linspace(0, 50, 200001),
+                        np.random.default_rng(0).uniform(0, 745, 100000)])
+    e, complement = exp_minus_and_complement_array(z)
+    exact = np.exp(-z)
+    normal = exact > 2.3e-308
+    assert np.max(np.abs(e - exact)[normal] / exact[normal]) < 4e-16
+    assert np.max(np.abs(e - exact)[~normal]) <= 5e-324          # subnormal results to the last bit
+    positive = z > 0
+    exact_complement = -np.expm1(-z[positive])
+    assert np.max(np.abs(complement[positive] - exact_complement) / exact_complement) < 4e-16
+
+
+def test_vectorised_exponential_at_the_ends_of_its_range():
+    from particle_methods.blob.vector_exp import exp_minus_and_complement_array
+
+    e, complement = exp_minus_and_complement_array(np.array([0.0, 745.2, 800.0, 1e4, 1e12]))
+    assert e[0] == 1.0 and complement[0] == 0.0
+    assert np.all(e[1:] == 0.0) and np.all(complement[1:] == 1.0)

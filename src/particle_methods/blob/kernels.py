@@ -43,6 +43,7 @@ from ..jit import njit
 from ..validation import finite_number, one_of
 from .mollifiers import Mollifier
 from .special import EULER_GAMMA, dawson_and_slope, exp1
+from .vector_exp import exp_minus_and_complement
 
 GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG, GAUSS_LOG_2D, TABLE, EXP, GAUSS_LOG_1D = 0, 1, 2, 3, 4, 5, 6, 7
 _SQRT_PI = math.sqrt(math.pi)
@@ -229,6 +230,136 @@ def _reduce(velocities, divergences):
     return velocity, divergence
 
 
+#: Partners are taken in tiles of this many, so that the row's forces stay in the L1 cache between the
+#: loop that computes them and the two that use them.
+_TILE = 256
+
+
+@njit
+def _newtonian_2d_forces(xi, yi, x, y, start, stop, constants, wx, wy, lap):
+    """Row i of the 2D Newtonian kernel: grad K(X_i - X_j) (as wx, wy) and Delta K(X_i - X_j) for
+    start <= j < stop, into the tile buffers. Mollified (m = 4, two Gaussians (4.2)) when the first
+    constant is 1, raw log|x|/(2 pi) (the particle method, Delta K = 0 away from 0) otherwise. No
+    branch inside the loops, so LLVM vectorises them; at r = 0 (coincident particles) the gradient
+    is finite and irrelevant (it multiplies X_i - X_j = 0), so grad K(0) := 0 holds."""
+    mollified, c0, c1, a0, a1, l0, l1 = constants
+    if mollified == 1.0:
+        for j in range(start, stop):
+            dx = xi - x[j]
+            dy = yi - y[j]
+            r2 = dx * dx + dy * dy
+            e0, f0 = exp_minus_and_complement(r2 * a0)
+            e1, f1 = exp_minus_and_complement(r2 * a1)
+            g = (c0 * f0 + c1 * f1) / (r2 + 1e-300)
+            wx[j - start] = g * dx
+            wy[j - start] = g * dy
+            lap[j - start] = l0 * e0 + l1 * e1
+    else:
+        for j in range(start, stop):
+            dx = xi - x[j]
+            dy = yi - y[j]
+            g = c0 / (dx * dx + dy * dy + 1e-300)
+            wx[j - start] = g * dx
+            wy[j - start] = g * dy
+            lap[j - start] = 0.0
+
+
+@njit
+def _partners_share(start, stop, mi, wx, wy, lap, vx, vy, divergence):
+    """The partners' share of row i: for start <= j < stop, v_j += m_i grad K, div_j -= m_i Delta K."""
+    for j in range(start, stop):
+        vx[j] += mi * wx[j - start]
+        vy[j] += mi * wy[j - start]
+        divergence[j] -= mi * lap[j - start]
+
+
+@njit
+def _row_share(start, stop, masses, wx, wy, lap):
+    """The row's own share over a tile, sum_j m_j (grad K, Delta K), in a fixed order: two interleaved
+    partial sums per quantity (even and odd j), added at the end."""
+    sx0 = sx1 = sy0 = sy1 = sd0 = sd1 = 0.0
+    count = stop - start
+    k = 0
+    while k + 1 < count:
+        m0, m1 = masses[start + k], masses[start + k + 1]
+        sx0 += m0 * wx[k]
+        sy0 += m0 * wy[k]
+        sd0 += m0 * lap[k]
+        sx1 += m1 * wx[k + 1]
+        sy1 += m1 * wy[k + 1]
+        sd1 += m1 * lap[k + 1]
+        k += 2
+    if k < count:
+        sx0 += masses[start + k] * wx[k]
+        sy0 += masses[start + k] * wy[k]
+        sd0 += masses[start + k] * lap[k]
+    return sx0 + sx1, sy0 + sy1, sd0 + sd1
+
+
+@njit
+def _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence):
+    """Accumulator c of the 2D Newtonian fast path: rows i = c mod 16 and their partners j > i, tile by tile."""
+    n = x.size
+    self_lap = constants[5] + constants[6]
+    wx = np.empty(_TILE)
+    wy = np.empty(_TILE)
+    lap = np.empty(_TILE)
+    for i in range(c, n, _ACCUMULATORS):
+        mi = masses[i]
+        sx = sy = sd = 0.0
+        for start in range(i + 1, n, _TILE):
+            stop = min(start + _TILE, n)
+            _newtonian_2d_forces(x[i], y[i], x, y, start, stop, constants, wx, wy, lap)
+            _partners_share(start, stop, mi, wx, wy, lap, vx[c], vy[c], divergence[c])
+            tx, ty, td = _row_share(start, stop, masses, wx, wy, lap)
+            sx += tx
+            sy += ty
+            sd += td
+        vx[c, i] -= sx
+        vy[c, i] -= sy
+        divergence[c, i] -= sd + mi * self_lap
+
+
+@njit(parallel=True)
+def _newtonian_2d_parallel(x, y, masses, constants):
+    vx, vy, divergence = np.zeros((_ACCUMULATORS, x.size)), np.zeros((_ACCUMULATORS, x.size)), np.zeros(
+        (_ACCUMULATORS, x.size))
+    for c in prange(_ACCUMULATORS):
+        _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence)
+    return vx, vy, divergence
+
+
+@njit
+def _newtonian_2d_serial(x, y, masses, constants):
+    vx, vy, divergence = np.zeros((_ACCUMULATORS, x.size)), np.zeros((_ACCUMULATORS, x.size)), np.zeros(
+        (_ACCUMULATORS, x.size))
+    for c in range(_ACCUMULATORS):
+        _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence)
+    return vx, vy, divergence
+
+
+def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths):
+    """Pair sums of the 2D Newtonian kernel, raw (one LOG term: the particle method) or mollified
+    (two GAUSS_LOG_2D terms, (4.2)), split into loops that vectorise: the forces of a row tile, then
+    the partners' share and the row's share (summed in a fixed order)."""
+    if kinds[0] == LOG:
+        constants = (0.0, coefficients[0] / (2 * math.pi), 0.0, 0.0, 0.0, 0.0, 0.0)
+    else:
+        inverse = 1.0 / widths**2
+        constants = (1.0, coefficients[0] / (2 * math.pi), coefficients[1] / (2 * math.pi), inverse[0],
+                     inverse[1], coefficients[0] * inverse[0] / math.pi, coefficients[1] * inverse[1] / math.pi)
+    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
+    driver = _newtonian_2d_parallel if x.size >= PARALLEL_MIN_PARTICLES else _newtonian_2d_serial
+    vx, vy, divergence = driver(x, y, masses, constants)
+    velocity = np.zeros((x.size, 2))
+    total = np.zeros(x.size)
+    for c in range(_ACCUMULATORS):  # fixed order: the same sums on any number of threads
+        velocity[:, 0] += vx[c]
+        velocity[:, 1] += vy[c]
+        total += divergence[c]
+    return velocity, total
+
+
 def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps):
     """Velocities -sum_j m_j grad K(X_i - X_j) (shape (N, d)) and divergences -sum_j m_j Delta K(X_i - X_j).
 
@@ -236,12 +367,17 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps)
     half the kernel evaluations of the plain double loop. Accumulator c takes the rows i = c mod 16
     and their partners; the accumulators are then summed in a fixed order, on one thread below
     :data:`PARALLEL_MIN_PARTICLES` particles and on all of them above (the same sums either way).
+    The 2D Newtonian kernel, raw or mollified by (4.2), takes a vectorised path with the same
+    accumulators (:func:`_newtonian_2d_sums`, exponentials from :mod:`.vector_exp`).
     The arrays are those of :meth:`Kernel.arrays`; ``positions`` (N, d) and ``masses`` (N,) are checked here.
     """
     positions = np.ascontiguousarray(positions, dtype=np.float64)
     masses = np.ascontiguousarray(masses, dtype=np.float64)
     if positions.ndim != 2 or masses.shape != positions.shape[:1]:
         raise ValueError(f"positions must have shape (N, d) and masses (N,), got {positions.shape} and {masses.shape}")
+    if positions.shape[1] == 2 and ((kinds.size == 2 and np.all(kinds == GAUSS_LOG_2D))
+                                    or (kinds.size == 1 and kinds[0] == LOG)):
+        return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters)
     driver = _accumulators_parallel if positions.shape[0] >= PARALLEL_MIN_PARTICLES else _accumulators_serial
     return _reduce(*driver(positions, masses, kinds, coefficients, parameters, tables, steps))
 
