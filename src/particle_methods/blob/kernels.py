@@ -104,8 +104,25 @@ def _forces(kind, coefficient, parameter, r, dimension):
     a = parameter
     if r == 0.0:
         return (coefficient, coefficient * (a + dimension - 2.0)) if a == 2.0 else (0.0, 0.0)
-    ra = r ** (a - 2.0)
-    return coefficient * ra, coefficient * (a + dimension - 2.0) * ra
+    return coefficient * _power(r, a - 2.0), coefficient * (a + dimension - 2.0) * _power(r, a - 2.0)
+
+
+@njit
+def _power(r, b):
+    """r^b, r > 0, by products and a square root for the exponents of section 4 (a call to pow costs
+    several times more); pow for the others."""
+    if b == 0.0:
+        return 1.0
+    if b == 1.0:
+        return r
+    if b == 2.0:
+        return r * r
+    if b == 5.0:
+        r2 = r * r
+        return r2 * r2 * r
+    if b == -0.5:
+        return 1.0 / math.sqrt(r)
+    return r**b
 
 
 @njit
