@@ -9,7 +9,11 @@ it times, for n = 10^3 .. 10^max:
             onto D_n computed by scipy's compiled pool-adjacent-violators;
   - python: the paper's pseudo-code on cumulative sums in plain Python/NumPy.
 It prints best-of-repeats wall times, the ratios to numba and the fitted scaling
-exponent of each method (time ~ n^slope) over n >= 10^5.
+exponent of each method (time ~ n^slope) over n >= 10^5; then, at the largest n, the
+compiled hull alone in nanoseconds per particle for three kinds of data, against a
+memory-bandwidth estimate of the same pass: 48 bytes per particle (read x and v, write and
+read back the segment stack of sums and counts, write the positions) at the bandwidth of a
+NumPy copy measured on the spot.
 """
 
 import argparse
@@ -62,5 +66,27 @@ def main():
                 print(f"  {key:7} {fit_order(sizes[usable], values[usable]):.3f}")
 
 
+
+def hull_against_bandwidth(n, repeats):
+    """ns per particle of the compiled hull against the memory-bandwidth estimate of its pass."""
+    from particle_methods.sticky.spd import _hull_positions
+
+    rng = np.random.default_rng(1)
+    x = np.sort(rng.normal(size=n))
+    out = np.empty(n)
+    copy = np.empty(n)
+    seconds, _ = best_time(lambda: np.copyto(copy, x), repeats)
+    bandwidth = 16 * n / seconds
+    print(f"\nhull at n = {n:.0e}: copy bandwidth {bandwidth / 1e9:.1f} GB/s, estimate "
+          f"{48 / bandwidth * 1e9:.2f} ns per particle (48 bytes)")
+    cases = (("random velocities (many collisions)", rng.normal(size=n)),
+             ("sorted velocities (no collision)", np.sort(rng.normal(size=n))),
+             ("one cluster (every particle collides)", -100 * np.sort(rng.normal(size=n))))
+    for name, v in cases:
+        seconds, _ = best_time(lambda v=v: _hull_positions(x, v, 1.0, out), repeats)
+        print(f"  {name:40} {seconds / n * 1e9:6.2f} ns per particle")
+
+
 if __name__ == "__main__":
     main()
+    hull_against_bandwidth(10**7, 5)
