@@ -73,6 +73,25 @@ def test_pair_sums_match_numpy_broadcasting(rng):
         assert pair_energy(x, m, *kernel.arrays()) == pytest.approx(energy, rel=1e-12)
 
 
+def on_one_thread(function, *args):
+    """function(*args) with numba limited to one thread."""
+    import numba
+
+    threads = numba.get_num_threads()
+    try:
+        numba.set_num_threads(1)
+        return function(*args)
+    finally:
+        numba.set_num_threads(threads)
+
+
+def generic_sums(x, m, arrays):
+    """The generic loop of every kernel, which the vectorised paths must reproduce."""
+    from particle_methods.blob import kernels
+
+    return kernels._reduce(*kernels._accumulators_parallel(np.ascontiguousarray(x), m, *arrays))
+
+
 def test_raw_newtonian_2d_fast_path_matches_the_generic_sums(rng):
     """The particle method's kernel log|x|/(2 pi) (grad K(0) := 0) on the vectorised path."""
     from particle_methods.blob import kernels
@@ -83,7 +102,7 @@ def test_raw_newtonian_2d_fast_path_matches_the_generic_sums(rng):
         m = rng.uniform(0.1, 1, n) / n
         arrays = kernels.kernel_2d("newtonian").arrays()
         fast = pair_sums(x, m, *arrays)
-        generic = kernels._reduce(*kernels._accumulators_serial(x, m, *arrays))
+        generic = generic_sums(x, m, arrays)
         assert np.abs(fast[0] - generic[0]).max() <= 1e-13 * np.abs(generic[0]).max()
         assert np.all(fast[1] == 0.0) and np.all(generic[1] == 0.0)
 
@@ -91,8 +110,6 @@ def test_raw_newtonian_2d_fast_path_matches_the_generic_sums(rng):
 def test_newtonian_2d_fast_path_matches_the_generic_sums(rng):
     """The vectorised path of the mollified 2D Newtonian kernel against the generic loop (closed forms
     with the library exp, erf-free), including two coincident particles; and it is thread-independent."""
-    import numba
-
     from particle_methods.blob import kernels
     from particle_methods.blob.mollifiers import mollifier
 
@@ -102,25 +119,15 @@ def test_newtonian_2d_fast_path_matches_the_generic_sums(rng):
     m = rng.uniform(0.1, 1, n) / n
     arrays = kernels.kernel_2d("newtonian", mollifier(4, 2), 0.05).arrays()
     fast = pair_sums(x, m, *arrays)
-    generic = kernels._reduce(*kernels._accumulators_parallel(x, m, *arrays))
+    generic = generic_sums(x, m, arrays)
     for ours, reference in zip(fast, generic):
         assert np.all(np.isfinite(ours))
         assert np.abs(ours - reference).max() <= 1e-13 * np.abs(reference).max()
-    threads = numba.get_num_threads()
-    try:
-        numba.set_num_threads(1)
-        one_thread = pair_sums(x, m, *arrays)
-    finally:
-        numba.set_num_threads(threads)
+    one_thread = on_one_thread(pair_sums, x, m, *arrays)
     assert all(np.array_equal(a, b) for a, b in zip(one_thread, fast))
-    # The serial driver (below PARALLEL_MIN_PARTICLES) gives the parallel one's sums, bit for bit.
-    columns = np.ascontiguousarray(x[:, 0]), np.ascontiguousarray(x[:, 1])
-    constants = (1.0, 0.1, -0.05, 400.0, 200.0, 25.0, -6.0)
-    assert all(np.array_equal(a, b) for a, b in zip(kernels._newtonian_2d_serial(*columns, m, constants),
-                                                    kernels._newtonian_2d_parallel(*columns, m, constants)))
-    few = x[:40]
+    few = x[:40]   # below PARALLEL_MIN_PARTICLES: one thread
     small = pair_sums(few, m[:40], *arrays)
-    small_generic = kernels._reduce(*kernels._accumulators_serial(few, m[:40], *arrays))
+    small_generic = generic_sums(few, m[:40], arrays)
     for ours, reference in zip(small, small_generic):
         assert np.abs(ours - reference).max() <= 1e-13 * np.abs(reference).max()
 
@@ -128,25 +135,29 @@ def test_newtonian_2d_fast_path_matches_the_generic_sums(rng):
 def test_pair_sums_do_not_depend_on_the_number_of_threads(rng):
     """Each pair is evaluated once and the partial sums are added in a fixed order: bit-identical
     results on one thread or several (the claims table must not depend on the machine's cores)."""
-    import numba
-
     from particle_methods.blob import kernels
 
     n = kernels.PARALLEL_MIN_PARTICLES + 13
     x = rng.normal(size=(n, 2))
     m = rng.uniform(0.1, 1, n)
     arrays = Kernel("test", 2, (POWER, POWER), (1.0, -1.0), (4.0, 1.5)).arrays()
-    threads = numba.get_num_threads()
-    try:
-        numba.set_num_threads(1)
-        one_thread = pair_sums(x, m, *arrays)
-    finally:
-        numba.set_num_threads(threads)
+    one_thread = on_one_thread(pair_sums, x, m, *arrays)
     parallel = pair_sums(x, m, *arrays)
     assert all(np.array_equal(a, b) for a, b in zip(one_thread, parallel))
-    # Below PARALLEL_MIN_PARTICLES the serial driver runs: the same sums, bit for bit.
-    serial = kernels._reduce(*kernels._accumulators_serial(x, m, *arrays))
+    # Below PARALLEL_MIN_PARTICLES pair_sums itself runs on one thread: the same sums, bit for bit.
+    serial = on_one_thread(generic_sums, x, m, arrays)
     assert all(np.array_equal(a, b) for a, b in zip(serial, parallel))
+
+
+def test_pair_sums_refuse_non_finite_input_and_mismatched_masses():
+    arrays = Kernel("test", 2, (POWER,), (1.0,), (2.0,)).arrays()
+    x = np.zeros((3, 2))
+    with pytest.raises(ValueError, match="finite"):
+        pair_sums(np.array([[0.0, 0.0], [np.nan, 1.0], [1.0, 1.0]]), np.ones(3), *arrays)
+    with pytest.raises(ValueError, match="finite"):
+        pair_sums(x, np.array([1.0, np.inf, 1.0]), *arrays)
+    with pytest.raises(ValueError, match="masses"):
+        pair_sums(x, np.ones(4), *arrays)
 
 
 @pytest.mark.parametrize(

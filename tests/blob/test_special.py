@@ -38,6 +38,19 @@ def test_dawson_is_odd_and_its_slope_even():
     assert dawson(0.0) == 0.0 and dawson_and_slope(0.0)[1] == 1.0
 
 
+def test_dawson_of_nan_is_nan_and_of_infinity_its_limit():
+    assert np.isnan(dawson(np.nan)) and np.isnan(dawson_and_slope(np.nan)[1])
+    assert dawson(np.inf) == 0.0 and dawson(-np.inf) == 0.0
+
+
+def test_vectorised_exponential_refuses_negative_and_non_finite_input():
+    from particle_methods.blob.vector_exp import exp_minus_and_complement_array
+
+    for bad in ([-1.0], [np.nan], [np.inf]):
+        with pytest.raises(ValueError, match="z"):
+            exp_minus_and_complement_array(bad)
+
+
 def test_exp1_matches_scipy():
     x = np.geomspace(1e-8, 700, 500)
     assert np.abs(np.array([exp1(v) for v in x]) / special.exp1(x) - 1).max() < 2e-14

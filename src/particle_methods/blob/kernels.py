@@ -32,10 +32,12 @@ are written once for any dimension.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 from numba import prange
 
@@ -104,7 +106,8 @@ def _forces(kind, coefficient, parameter, r, dimension):
     a = parameter
     if r == 0.0:
         return (coefficient, coefficient * (a + dimension - 2.0)) if a == 2.0 else (0.0, 0.0)
-    return coefficient * _power(r, a - 2.0), coefficient * (a + dimension - 2.0) * _power(r, a - 2.0)
+    ra = _power(r, a - 2.0)
+    return coefficient * ra, coefficient * (a + dimension - 2.0) * ra
 
 
 @njit
@@ -190,9 +193,20 @@ def _profile_potential(kinds, coefficients, parameters, r):
 #: pair is evaluated once, and the sums are added in the same order on any machine.
 _ACCUMULATORS = 16
 #: Below this many particles the sums run on one thread: a call is then a fraction of a millisecond,
-#: and waking threads (worse when two jobs share the cores) costs more than it saves. Both paths
-#: give bit-identical sums.
+#: and waking threads (worse when two jobs share the cores) costs more than it saves. The sums are
+#: bit-identical on any number of threads.
 PARALLEL_MIN_PARTICLES = 512
+
+
+@contextlib.contextmanager
+def _threads_for(particles):
+    """All of numba's threads for large systems, one below :data:`PARALLEL_MIN_PARTICLES`."""
+    threads = numba.get_num_threads()
+    numba.set_num_threads(threads if particles >= PARALLEL_MIN_PARTICLES else 1)
+    try:
+        yield
+    finally:
+        numba.set_num_threads(threads)
 
 
 @njit
@@ -222,16 +236,6 @@ def _accumulators_parallel(positions, masses, kinds, coefficients, parameters, t
     velocities = np.zeros((_ACCUMULATORS, n, dimension))
     divergences = np.zeros((_ACCUMULATORS, n))
     for c in prange(_ACCUMULATORS):
-        _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, steps, velocities, divergences)
-    return velocities, divergences
-
-
-@njit
-def _accumulators_serial(positions, masses, kinds, coefficients, parameters, tables, steps):
-    n, dimension = positions.shape
-    velocities = np.zeros((_ACCUMULATORS, n, dimension))
-    divergences = np.zeros((_ACCUMULATORS, n))
-    for c in range(_ACCUMULATORS):
         _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, steps, velocities, divergences)
     return velocities, divergences
 
@@ -339,18 +343,10 @@ def _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence):
 
 @njit(parallel=True)
 def _newtonian_2d_parallel(x, y, masses, constants):
-    vx, vy, divergence = np.zeros((_ACCUMULATORS, x.size)), np.zeros((_ACCUMULATORS, x.size)), np.zeros(
-        (_ACCUMULATORS, x.size))
+    vx = np.zeros((_ACCUMULATORS, x.size))
+    vy = np.zeros((_ACCUMULATORS, x.size))
+    divergence = np.zeros((_ACCUMULATORS, x.size))
     for c in prange(_ACCUMULATORS):
-        _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence)
-    return vx, vy, divergence
-
-
-@njit
-def _newtonian_2d_serial(x, y, masses, constants):
-    vx, vy, divergence = np.zeros((_ACCUMULATORS, x.size)), np.zeros((_ACCUMULATORS, x.size)), np.zeros(
-        (_ACCUMULATORS, x.size))
-    for c in range(_ACCUMULATORS):
         _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence)
     return vx, vy, divergence
 
@@ -366,15 +362,9 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths):
         constants = (1.0, coefficients[0] / (2 * math.pi), coefficients[1] / (2 * math.pi), inverse[0],
                      inverse[1], coefficients[0] * inverse[0] / math.pi, coefficients[1] * inverse[1] / math.pi)
     x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
-    driver = _newtonian_2d_parallel if x.size >= PARALLEL_MIN_PARTICLES else _newtonian_2d_serial
-    vx, vy, divergence = driver(x, y, masses, constants)
-    velocity = np.zeros((x.size, 2))
-    total = np.zeros(x.size)
-    for c in range(_ACCUMULATORS):  # fixed order: the same sums on any number of threads
-        velocity[:, 0] += vx[c]
-        velocity[:, 1] += vy[c]
-        total += divergence[c]
-    return velocity, total
+    with _threads_for(x.size):
+        vx, vy, divergence = _newtonian_2d_parallel(x, y, masses, constants)
+    return _reduce(np.stack([vx, vy], axis=-1), divergence)
 
 
 def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps):
@@ -392,11 +382,13 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps)
     masses = np.ascontiguousarray(masses, dtype=np.float64)
     if positions.ndim != 2 or masses.shape != positions.shape[:1]:
         raise ValueError(f"positions must have shape (N, d) and masses (N,), got {positions.shape} and {masses.shape}")
+    if not (np.isfinite(positions).all() and np.isfinite(masses).all()):
+        raise ValueError("positions and masses must be finite")
     if positions.shape[1] == 2 and ((kinds.size == 2 and np.all(kinds == GAUSS_LOG_2D))
                                     or (kinds.size == 1 and kinds[0] == LOG)):
         return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters)
-    driver = _accumulators_parallel if positions.shape[0] >= PARALLEL_MIN_PARTICLES else _accumulators_serial
-    return _reduce(*driver(positions, masses, kinds, coefficients, parameters, tables, steps))
+    with _threads_for(positions.shape[0]):
+        return _reduce(*_accumulators_parallel(positions, masses, kinds, coefficients, parameters, tables, steps))
 
 
 @njit(parallel=True)

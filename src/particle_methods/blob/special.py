@@ -63,6 +63,8 @@ def dawson_and_slope(z):
     below 1e-17 of the sum within 14 terms there, and F'(z) = -sum_{n >= 1} a_n without the
     cancellation of 1 - 2 z F. F is odd, F' even.
     """
+    if z != z:  # NaN in, NaN out (and no table index from it)
+        return z, z
     sign = 1.0 if z >= 0 else -1.0
     z = abs(z)
     if z >= _DAWSON_ASYMPTOTIC:

@@ -18,6 +18,7 @@ The table is a global constant (LLVM sees that it cannot alias the arrays being 
 import numpy as np
 
 from ..jit import njit
+from ..validation import finite_array
 
 _LN2_HI = 0.693147180369123816490    # ln 2 with its last 32 bits cleared: k * _LN2_HI is exact
 _LN2_LO = 1.90821492927058770002e-10   # ln 2 - _LN2_HI
@@ -52,9 +53,16 @@ def exp_minus_and_complement(z):
     return t + t * q, (1.0 - t) - t * q
 
 
-@njit
 def exp_minus_and_complement_array(z):
-    """The same, elementwise over a 1D array z >= 0 (for tests and benchmarks)."""
+    """The same, elementwise over a 1D array of z >= 0 (for tests and benchmarks)."""
+    z = finite_array("z", z)
+    if np.any(z < 0):
+        raise ValueError("z must be >= 0")
+    return _elementwise(z)
+
+
+@njit
+def _elementwise(z):
     e = np.empty_like(z)
     complement = np.empty_like(z)
     for j in range(z.size):
