@@ -4,13 +4,16 @@
 
 Both compute v_i = -sum_j m_j grad K_delta(X_i - X_j) and div_i = -sum_j m_j Delta K_delta(X_i - X_j)
 for the m = 4 mollified cubic kernel (two Gaussian terms, erf and exp per pair) on N
-random particles in [-1, 1], with delta = 0.05; then the 2D pair sums of Figure 5's finest grid
+random particles in [-1, 1], with delta = 0.05, and for the kernels of Figure 4 on its finest
+grids (the 1D sums now take a far field from sorted moments and a near field over windows of
+6.5 mollifier widths: particle_methods.blob.sums_1d); then the 2D pair sums of Figure 5's finest grid
 (closed-form log kernel), the raw log kernel and a tabulated power-law kernel, each against the
 previous implementation (benchmarks/reference_pairs.py), with the fraction of the arithmetic peak
 reached by the vectorised path.
 
-"pairs/s" counts the N^2 ordered pairs the sums cover. The compiled loop evaluates each
-unordered pair once (grad K is odd, Delta K even), NumPy evaluates all N^2.
+"pairs/s" counts the N^2 ordered pairs the sums cover, whatever the algorithm: the previous loop
+evaluates each unordered pair once (grad K is odd, Delta K even), NumPy all N^2, the 1D sums only
+the pairs closer than 6.5 widths.
 """
 
 import numpy as np
@@ -37,21 +40,45 @@ def numpy_pair_sums(x, m, weights, widths):
 
 
 def main():
-    psi, delta = mollifier(4, 1), 0.05
-    kernel = kernel_1d("cubic", psi, delta)
-    arrays = kernel.arrays()
-    widths = psi.scaled_widths(delta)
+    """1D: the issue's input (cubic kernel, m = 4, delta = 0.05, random particles, the same as the
+    benchmark of the last build) and Figure 4's finest runs (delta = h^0.9 on a grid), each against
+    the previous implementation (benchmarks/reference_pairs.py) and NumPy broadcasting."""
+    from reference_pairs import reference_pair_sums
+
+    from particle_methods.blob.initial import grid_1d
+
     rng = np.random.default_rng(0)
-    print(f"{'N':>7} {'numba [s]':>10} {'numpy [s]':>10} {'numba pairs/s':>14} {'numpy pairs/s':>14} {'speed-up':>9}")
+    cases = []
     for n in (1000, 10000):
-        x = np.sort(rng.uniform(-1, 1, n))
+        cases.append(("cubic", 4, 0.05, np.sort(rng.uniform(-1, 1, n))))
+    for name, order, inverse_h in (("newtonian_repulsive", 4, 1280), ("cubic", 6, 1280),
+                                   ("newtonian_attractive", 4, 5000)):
+        h = 1.0 / inverse_h
+        x = grid_1d(h)[:, 0]
+        cases.append((name, order, h**0.9, x))
+    print(f"{'1D kernel':>36} {'N':>6} {'before [s]':>10} {'now [s]':>9} {'numpy [s]':>9} {'vs before':>9} "
+          f"{'vs numpy':>8} {'pairs/s':>9}")
+    for name, order, delta, x in cases:
+        psi = mollifier(order, 1)
+        kernel = kernel_1d(name, psi, delta)
+        arrays = kernel.arrays()
+        n = x.size
         m = np.full(n, 2.0 / n)
-        ours, _ = best_time(lambda x=x, m=m: pair_sums(x[:, None], m, *arrays))
-        theirs, _ = best_time(lambda x=x, m=m: numpy_pair_sums(x, m, psi.weights, widths), repeats=1)
-        v1, d1 = pair_sums(x[:, None], m, *arrays)
-        v2, d2 = numpy_pair_sums(x, m, psi.weights, widths)
-        assert np.allclose(v1[:, 0], v2, atol=1e-10) and np.allclose(d1, d2, atol=1e-10)
-        print(f"{n:>7} {ours:10.4f} {theirs:10.4f} {n * n / ours:14.3e} {n * n / theirs:14.3e} {theirs / ours:9.1f}")
+        now, _ = best_time(lambda x=x, m=m, arrays=arrays: pair_sums(x[:, None], m, *arrays))
+        before, _ = best_time(lambda x=x, m=m, arrays=arrays: reference_pair_sums(x[:, None], m, *arrays), repeats=2)
+        ours, theirs = pair_sums(x[:, None], m, *arrays), reference_pair_sums(x[:, None], m, *arrays)
+        for a, b in zip(ours, theirs):
+            # the old loop accumulates its own rounding: 5e-14 at N = 2561, more at N = 10^4
+            assert np.abs(a - b).max() <= 1e-12 * np.abs(b).max()
+        numpy_time = float("nan")
+        if name == "cubic" and n <= 10000:
+            widths = psi.scaled_widths(delta)
+            numpy_time, _ = best_time(lambda x=x, m=m, w=widths, p=psi: numpy_pair_sums(x, m, p.weights, w),
+                                      repeats=1)
+            v, d = numpy_pair_sums(x, m, psi.weights, psi.scaled_widths(delta))
+            assert np.allclose(ours[0][:, 0], v, atol=1e-10) and np.allclose(ours[1], d, atol=1e-10)
+        print(f"{kernel.name:>36} {n:>6} {before:10.4f} {now:9.4f} {numpy_time:9.3f} {before / now:9.1f} "
+              f"{numpy_time / now:8.1f} {n * n / now:9.2e}")
 
 
 #: Floating-point operations per unordered pair of the vectorised 2D Newtonian path (m = 4, (4.2)),

@@ -69,6 +69,27 @@ def test_every_notebook_runs_on_the_quick_results(workdir):
         assert any("text/markdown" in o.get("data", {}) for cell in code for o in cell["outputs"]), paper
 
 
+def test_measured_values_match_the_last_build(workdir):
+    """Every claim's measured value within 1e-9 (relative) of the reference recorded from the last build
+    (config/values-quick.yaml): an optimisation that changes results beyond rounding fails here."""
+    from particle_methods.claims import read_claims, value_differences
+
+    problems = value_differences(read_claims(workdir / "results/claims.csv"), ROOT / "config" / "values-quick.yaml")
+    assert not problems, "\n".join(problems)
+
+
+def test_value_comparison_sees_a_moved_value(tmp_path):
+    from particle_methods.claims import Claim, value_differences
+
+    reference = tmp_path / "values.yaml"
+    reference.write_text("exempt: {demo.time: wall clock}\nvalues: {demo.order: '3.6', demo.gone: '1.0'}\n")
+    claim = Claim("demo.order", "demo", "paper", "Fig. 1", "1", "order", "3.6", "3.6", "+-0.3", "pass", "3.6000001")
+    timing = Claim("demo.time", "demo", "check", "timing", "1", "time", "1", "1", "+-1", "pass", "7.0")
+    problems = value_differences([claim, timing], reference)
+    assert any(p.startswith("MOVED demo.order") for p in problems) and "MISSING demo.gone" in problems
+    assert not any("demo.time" in p for p in problems)
+
+
 def test_claims_table_and_summary(workdir):
     with (workdir / "results/claims.csv").open(newline="") as handle:
         reader = csv.DictReader(handle)
@@ -191,8 +212,8 @@ def test_a_forced_rerun_gives_an_identical_claims_table(workdir):
     change from run to run; `snakemake verify` on the first run checks their verdicts."""
     def table():
         with (workdir / "results/claims.csv").open(newline="") as handle:
-            return [{**row, "measured": "timed", "status": "timed"} if row["id"].startswith(TIMED) else row
-                    for row in csv.DictReader(handle)]
+            timed = {"measured": "timed", "status": "timed", "value": "timed"}
+            return [{**row, **timed} if row["id"].startswith(TIMED) else row for row in csv.DictReader(handle)]
 
     before = table()
     result = snakemake(workdir, "--forceall")

@@ -29,7 +29,7 @@ import yaml
 
 from .rates import merge_rates
 
-COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status")
+COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status", "value")
 KINDS = ("paper", "derived", "check")
 KIND_NAMES = {"paper": "paper claims", "derived": "derived claims", "check": "checks"}
 
@@ -48,6 +48,8 @@ class Claim:
     measured: str
     tolerance: str
     status: str
+    #: The measured value to full precision (``repr``), for comparisons between builds.
+    value: str = ""
 
     def __post_init__(self):
         if self.status not in ("pass", "fail"):
@@ -73,7 +75,7 @@ def close_to(id, paper, figure, claim, published: float, measured: float, tolera
     """Pass when |measured - published| <= tolerance."""
     ok = abs(measured - published) <= tolerance
     return Claim(id, paper, kind, source, figure, claim, _number(published), _number(measured),
-                 f"+-{_number(tolerance)}", _verdict(ok, measured))
+                 f"+-{_number(tolerance)}", _verdict(ok, measured), repr(float(measured)))
 
 
 def relatively_close_to(id, paper, figure, claim, published: float, measured: float, tolerance: float, *,
@@ -81,21 +83,21 @@ def relatively_close_to(id, paper, figure, claim, published: float, measured: fl
     """Pass when |measured - published| <= tolerance * |published|."""
     ok = abs(measured - published) <= tolerance * abs(published)
     return Claim(id, paper, kind, source, figure, claim, _number(published), _number(measured),
-                 f"rel {_number(tolerance)}", _verdict(ok, measured))
+                 f"rel {_number(tolerance)}", _verdict(ok, measured), repr(float(measured)))
 
 
 def at_most(id, paper, figure, claim, bound: float, measured: float, published: str | None = None, *, kind: str,
             source: str) -> Claim:
     """Pass when measured <= bound."""
     return Claim(id, paper, kind, source, figure, claim, published or f"<= {_number(bound)}", _number(measured),
-                 f"<= {_number(bound)}", _verdict(measured <= bound, measured))
+                 f"<= {_number(bound)}", _verdict(measured <= bound, measured), repr(float(measured)))
 
 
 def at_least(id, paper, figure, claim, bound: float, measured: float, published: str | None = None, *, kind: str,
              source: str) -> Claim:
     """Pass when measured >= bound."""
     return Claim(id, paper, kind, source, figure, claim, published or f">= {_number(bound)}", _number(measured),
-                 f">= {_number(bound)}", _verdict(measured >= bound, measured))
+                 f">= {_number(bound)}", _verdict(measured >= bound, measured), repr(float(measured)))
 
 
 def between(id, paper, figure, claim, lower: float, upper: float, measured: float, published: str | None = None, *,
@@ -105,7 +107,7 @@ def between(id, paper, figure, claim, lower: float, upper: float, measured: floa
         raise ValueError(f"between: lower {lower} must not exceed upper {upper}")
     band = f"[{_number(lower)}, {_number(upper)}]"
     return Claim(id, paper, kind, source, figure, claim, published or f"in {band}", _number(measured),
-                 f"in {band}", _verdict(lower <= measured <= upper, measured))
+                 f"in {band}", _verdict(lower <= measured <= upper, measured), repr(float(measured)))
 
 
 class Catalogue:
@@ -258,6 +260,51 @@ def verify(claims_path, verdicts_path) -> int:
     return 1 if problems else 0
 
 
+def read_values(path) -> tuple[dict[str, float], dict[str, str]]:
+    """A reference of measured values: (claim id -> value, claim id -> reason it is exempt).
+
+    The YAML file has ``values`` (id: full-precision value, written by :func:`write_values`) and
+    ``exempt`` (id: one-line reason its value may change between builds: a wall-clock time, or a
+    quantity at the level of rounding or of the integrator's tolerance).
+    """
+    data = yaml.safe_load(Path(path).read_text()) or {}
+    if not isinstance(data, dict) or set(data) != {"values", "exempt"}:
+        raise ValueError(f"{path}: a reference of values needs the keys 'values' and 'exempt'")
+    values, exempt = data["values"] or {}, data["exempt"] or {}
+    missing_reason = sorted(i for i, reason in exempt.items() if not isinstance(reason, str) or not reason.strip())
+    if missing_reason:
+        raise ValueError(f"{path}: every exempt claim needs a one-line reason: {missing_reason}")
+    return {i: float(v) for i, v in values.items()}, dict(exempt)
+
+
+def write_values(claims_path, path) -> None:
+    """Record the measured values of a claims table as the reference, keeping the file's exemptions."""
+    exempt = read_values(path)[1] if Path(path).exists() else {}
+    values = {claim.id: claim.value for claim in read_claims(claims_path)}
+    Path(path).write_text(yaml.safe_dump({"exempt": exempt, "values": values}, sort_keys=False, width=120))
+
+
+def value_differences(claims, reference_path, relative: float = 1e-9) -> list[str]:
+    """Every claim whose measured value moved by more than ``relative`` (relative to the reference), or
+    that is new or missing; exempt claims are skipped."""
+    values, exempt = read_values(reference_path)
+    problems = []
+    present = set()
+    for claim in claims:
+        present.add(claim.id)
+        if claim.id in exempt:
+            continue
+        if claim.id not in values:
+            problems.append(f"NEW {claim.id}: no reference value in {reference_path}")
+            continue
+        new, old = float(claim.value), values[claim.id]
+        same = new == old or (math.isfinite(new) and abs(new - old) <= relative * abs(old))
+        if not same:
+            problems.append(f"MOVED {claim.id}: {old!r} -> {new!r}")
+    problems += [f"MISSING {i}" for i in values if i not in present and i not in exempt]
+    return problems
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m particle_methods.claims", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -270,7 +317,13 @@ def main(argv=None) -> int:
     verify_parser = sub.add_parser("verify", help="exit 1 when a verdict differs from the expected ones")
     verify_parser.add_argument("path")
     verify_parser.add_argument("--expected", required=True, help="YAML file of expected verdicts")
+    values_parser = sub.add_parser("values", help="record a claims table's measured values as the reference")
+    values_parser.add_argument("path")
+    values_parser.add_argument("--reference", required=True, help="YAML file of reference values")
     args = parser.parse_args(argv)
+    if args.command == "values":
+        write_values(args.path, args.reference)
+        return 0
     if args.command == "merge":
         merge(args.sources, args.csv, args.markdown)
         if args.rates_output:

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from particle_methods.blob.kernels import POWER, Kernel, kernel_1d, pair_energy, pair_sums
+from particle_methods.blob.kernels import POWER, Kernel, kernel_1d, kernel_2d, pair_energy, pair_sums
 from particle_methods.blob.mollifiers import mollifier
 
 
@@ -130,6 +130,55 @@ def test_newtonian_2d_fast_path_matches_the_generic_sums(rng):
     small_generic = generic_sums(few, m[:40], arrays)
     for ours, reference in zip(small, small_generic):
         assert np.abs(ours - reference).max() <= 1e-13 * np.abs(reference).max()
+
+
+@pytest.mark.parametrize("name", ["newtonian_attractive", "newtonian_repulsive", "cubic"])
+@pytest.mark.parametrize("order", [None, 4, 6])
+def test_sorted_1d_sums_match_the_generic_sums(rng, name, order):
+    """The 1D path (far field by sorted moments, near field by windows, erfc in plain arithmetic)
+    against the generic loop, with coincident particles, partners exactly one window apart and
+    unsorted input; on one thread and several, bit for bit."""
+    from particle_methods.blob import kernels, sums_1d
+
+    delta = 0.03
+    kernel = kernel_1d(name) if order is None else kernel_1d(name, mollifier(order, 1), delta)
+    arrays = kernel.arrays()
+    assert sums_1d.supported(arrays[0], arrays[2])
+    for n in (9, kernels.PARALLEL_MIN_PARTICLES + 77):
+        x = rng.uniform(-1, 1, n)
+        x[1] = x[2] = x[0]
+        if order is not None:
+            x[3] = x[4] + sums_1d.CUTOFF * arrays[2].max()
+        m = rng.uniform(0.1, 1, n) / n
+        fast = pair_sums(x[:, None], m, *arrays)
+        generic = generic_sums(x[:, None], m, arrays)
+        for ours, reference in zip(fast, generic):
+            assert np.all(np.isfinite(ours))
+            assert np.abs(ours - reference).max() <= 2e-14 * max(np.abs(reference).max(), 1e-300)
+        one_thread = on_one_thread(pair_sums, x[:, None], m, *arrays)
+        assert all(np.array_equal(a, b) for a, b in zip(one_thread, fast))
+
+
+def test_sorted_1d_sums_see_a_wrong_far_field():
+    """The check above can fail: dropping the polynomial part of a mollified kernel (a plausible slip in
+    the far-field moments) is far outside its tolerance."""
+    from particle_methods.blob import sums_1d
+
+    x = np.linspace(-1, 1, 200)
+    m = np.full(200, 0.01)
+    arrays = kernel_1d("cubic", mollifier(4, 1), 0.03).arrays()
+    v, _ = sums_1d.sorted_sums(x, m, arrays[0], arrays[1], arrays[2], (0.0, 0.0, 0.0),
+                               sums_1d.CUTOFF * arrays[2].max())
+    generic = generic_sums(x[:, None], m, arrays)[0][:, 0]
+    assert np.abs(v - generic).max() > 1e-3
+
+
+def test_2d_newtonian_sums_refuse_positions_beyond_the_exponential_range():
+    from particle_methods.blob.mollifiers import mollifier as make
+
+    arrays = kernel_2d("newtonian", make(4, 2), 1e-9).arrays()
+    with pytest.raises(ValueError, match="widths"):
+        pair_sums(np.array([[0.0, 0.0], [1e9, 0.0]]), np.ones(2), *arrays)
 
 
 def test_pair_sums_do_not_depend_on_the_number_of_threads(rng):

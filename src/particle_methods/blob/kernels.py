@@ -43,9 +43,10 @@ from numba import prange
 
 from ..jit import njit
 from ..validation import finite_number, one_of
+from . import sums_1d
 from .mollifiers import Mollifier
 from .special import EULER_GAMMA, dawson_and_slope, exp1
-from .vector_exp import exp_minus_and_complement
+from .vector_exp import Z_LIMIT, exp_minus_and_complement
 
 GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG, GAUSS_LOG_2D, TABLE, EXP, GAUSS_LOG_1D = 0, 1, 2, 3, 4, 5, 6, 7
 _SQRT_PI = math.sqrt(math.pi)
@@ -359,6 +360,10 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths):
         constants = (0.0, coefficients[0] / (2 * math.pi), 0.0, 0.0, 0.0, 0.0, 0.0)
     else:
         inverse = 1.0 / widths**2
+        span2 = np.ptp(positions[:, 0]) ** 2 + np.ptp(positions[:, 1]) ** 2
+        if span2 * inverse.max() > Z_LIMIT:
+            raise ValueError(f"positions spread over {np.sqrt(span2):.3g}, more than {np.sqrt(Z_LIMIT):.3g} "
+                             f"widths {widths.min():.3g} of the mollifier: beyond the vectorised exponential's range")
         constants = (1.0, coefficients[0] / (2 * math.pi), coefficients[1] / (2 * math.pi), inverse[0],
                      inverse[1], coefficients[0] * inverse[0] / math.pi, coefficients[1] * inverse[1] / math.pi)
     x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
@@ -387,6 +392,9 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps)
     if positions.shape[1] == 2 and ((kinds.size == 2 and np.all(kinds == GAUSS_LOG_2D))
                                     or (kinds.size == 1 and kinds[0] == LOG)):
         return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters)
+    if positions.shape[1] == 1 and sums_1d.supported(kinds, parameters):
+        with _threads_for(positions.shape[0]):
+            return sums_1d.pair_sums_1d(positions, masses, kinds, coefficients, parameters)
     with _threads_for(positions.shape[0]):
         return _reduce(*_accumulators_parallel(positions, masses, kinds, coefficients, parameters, tables, steps))
 
