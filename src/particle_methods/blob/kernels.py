@@ -287,6 +287,59 @@ def _newtonian_2d_forces(xi, yi, x, y, start, stop, constants, wx, wy, lap):
 
 
 @njit
+def _terms_2d_forces(xi, yi, x, y, start, stop, kinds, coefficients, parameters, tables, steps, wx, wy, lap, buffer):
+    """Row i of a 2D kernel made of even powers below the mollifier's order (polynomials, Remark 3.4),
+    Gaussian log terms and tabulated terms (:func:`tiled_2d_supported`): grad K and Delta K for
+    start <= j < stop, term by term, each in a loop without branches (the table lookups, gathers
+    from an argument array, stay scalar; the clamps of :func:`_table_forces` are written exactly:
+    a - (a - b + |a - b|)/2 is a itself for a <= b)."""
+    count = stop - start
+    for j in range(start, stop):
+        dx = xi - x[j]
+        dy = yi - y[j]
+        buffer[j - start] = dx * dx + dy * dy
+    for j in range(count):
+        wx[j] = 0.0   # g(r) until the end
+        lap[j] = 0.0
+    for t in range(kinds.size):
+        c = coefficients[t]
+        if kinds[t] == POWER:
+            a = parameters[t]
+            if a == 2.0:
+                for j in range(count):
+                    wx[j] += c
+                    lap[j] += 2.0 * c
+            else:  # a = 4: g = r^2, Delta = 4 r^2
+                for j in range(count):
+                    wx[j] += c * buffer[j]
+                    lap[j] += 4.0 * c * buffer[j]
+        elif kinds[t] == GAUSS_LOG_2D:
+            s = parameters[t]
+            inverse, g0, l0 = 1.0 / (s * s), c / (2 * math.pi), c / (math.pi * s * s)
+            for j in range(count):
+                e, f = exp_minus_and_complement(buffer[j] * inverse)
+                wx[j] += g0 * f / (buffer[j] + 1e-300)
+                lap[j] += l0 * e
+        else:  # TABLE
+            row = int(parameters[t])
+            inverse, last = 1.0 / steps[row], tables.shape[2] - 2.0
+            for j in range(count):
+                u = math.sqrt(buffer[j]) * inverse
+                wy[j] = u - 0.5 * ((u - last) + abs(u - last))   # min(u, last)
+            for j in range(count):
+                u = math.sqrt(buffer[j]) * inverse
+                k = int(wy[j])
+                w = u - k
+                w = w - 0.5 * ((w - 1.0) + abs(w - 1.0))          # min(w, 1)
+                wx[j] += c * (tables[row, 0, k] * (1.0 - w) + tables[row, 0, k + 1] * w)
+                lap[j] += c * (tables[row, 1, k] * (1.0 - w) + tables[row, 1, k + 1] * w)
+    for j in range(start, stop):
+        g = wx[j - start]
+        wx[j - start] = g * (xi - x[j])
+        wy[j - start] = g * (yi - y[j])
+
+
+@njit
 def _partners_share(start, stop, mi, wx, wy, lap, vx, vy, divergence):
     """The partners' share of row i: for start <= j < stop, v_j += m_i grad K, div_j -= m_i Delta K."""
     for j in range(start, stop):
@@ -319,19 +372,26 @@ def _row_share(start, stop, masses, wx, wy, lap):
 
 
 @njit
-def _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence):
-    """Accumulator c of the 2D Newtonian fast path: rows i = c mod 16 and their partners j > i, tile by tile."""
+def _tiled_2d_accumulate(c, x, y, masses, constants, terms, self_lap, vx, vy, divergence):
+    """Accumulator c of a tiled 2D path: rows i = c mod 16 and their partners j > i, tile by tile. The
+    Newtonian kernel (:func:`_newtonian_2d_forces`, ``constants``) when ``terms`` has no kind, else the
+    terms (kinds, coefficients, parameters, tables, steps) of :func:`_terms_2d_forces`."""
     n = x.size
-    self_lap = constants[5] + constants[6]
+    kinds, coefficients, parameters, tables, steps = terms
     wx = np.empty(_TILE)
     wy = np.empty(_TILE)
     lap = np.empty(_TILE)
+    buffer = np.empty(_TILE)
     for i in range(c, n, _ACCUMULATORS):
         mi = masses[i]
         sx = sy = sd = 0.0
         for start in range(i + 1, n, _TILE):
             stop = min(start + _TILE, n)
-            _newtonian_2d_forces(x[i], y[i], x, y, start, stop, constants, wx, wy, lap)
+            if kinds.size == 0:
+                _newtonian_2d_forces(x[i], y[i], x, y, start, stop, constants, wx, wy, lap)
+            else:
+                _terms_2d_forces(x[i], y[i], x, y, start, stop, kinds, coefficients, parameters, tables, steps,
+                                 wx, wy, lap, buffer)
             _partners_share(start, stop, mi, wx, wy, lap, vx[c], vy[c], divergence[c])
             tx, ty, td = _row_share(start, stop, masses, wx, wy, lap)
             sx += tx
@@ -343,13 +403,38 @@ def _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence):
 
 
 @njit(parallel=True)
-def _newtonian_2d_parallel(x, y, masses, constants):
+def _tiled_2d_parallel(x, y, masses, constants, terms, self_lap):
     vx = np.zeros((_ACCUMULATORS, x.size))
     vy = np.zeros((_ACCUMULATORS, x.size))
     divergence = np.zeros((_ACCUMULATORS, x.size))
     for c in prange(_ACCUMULATORS):
-        _newtonian_2d_accumulate(c, x, y, masses, constants, vx, vy, divergence)
+        _tiled_2d_accumulate(c, x, y, masses, constants, terms, self_lap, vx, vy, divergence)
     return vx, vy, divergence
+
+
+def _tiled_2d_sums(positions, masses, constants, terms, self_lap):
+    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
+    with _threads_for(x.size):
+        vx, vy, divergence = _tiled_2d_parallel(x, y, masses, constants, terms, self_lap)
+    return _reduce(np.stack([vx, vy], axis=-1), divergence)
+
+
+def tiled_2d_supported(kinds, parameters) -> bool:
+    """Whether a 2D kernel's terms are all even powers 2 and 4, Gaussian log terms or tables (the
+    mollified kernels of section 4.4 other than the Newtonian one)."""
+    return all(kind in (TABLE, GAUSS_LOG_2D) or (kind == POWER and parameter in (2.0, 4.0))
+               for kind, parameter in zip(kinds, parameters))
+
+
+def _check_span(positions, widths):
+    """The vectorised exponential takes |X_i - X_j|^2 / s^2 up to :data:`Z_LIMIT`."""
+    span2 = np.ptp(positions[:, 0]) ** 2 + np.ptp(positions[:, 1]) ** 2
+    if widths.size and span2 / widths.min() ** 2 > Z_LIMIT:
+        raise ValueError(f"positions spread over {np.sqrt(span2):.3g}, more than {np.sqrt(Z_LIMIT):.3g} "
+                         f"widths {widths.min():.3g} of the mollifier: beyond the vectorised exponential's range")
+
+
+_NO_TERMS = (np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros((1, 2, 2)), np.ones(1))
 
 
 def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths):
@@ -358,18 +443,14 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths):
     the partners' share and the row's share (summed in a fixed order)."""
     if kinds[0] == LOG:
         constants = (0.0, coefficients[0] / (2 * math.pi), 0.0, 0.0, 0.0, 0.0, 0.0)
+        self_lap = 0.0
     else:
+        _check_span(positions, widths)
         inverse = 1.0 / widths**2
-        span2 = np.ptp(positions[:, 0]) ** 2 + np.ptp(positions[:, 1]) ** 2
-        if span2 * inverse.max() > Z_LIMIT:
-            raise ValueError(f"positions spread over {np.sqrt(span2):.3g}, more than {np.sqrt(Z_LIMIT):.3g} "
-                             f"widths {widths.min():.3g} of the mollifier: beyond the vectorised exponential's range")
         constants = (1.0, coefficients[0] / (2 * math.pi), coefficients[1] / (2 * math.pi), inverse[0],
                      inverse[1], coefficients[0] * inverse[0] / math.pi, coefficients[1] * inverse[1] / math.pi)
-    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
-    with _threads_for(x.size):
-        vx, vy, divergence = _newtonian_2d_parallel(x, y, masses, constants)
-    return _reduce(np.stack([vx, vy], axis=-1), divergence)
+        self_lap = constants[5] + constants[6]
+    return _tiled_2d_sums(positions, masses, constants, _NO_TERMS, self_lap)
 
 
 def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps):
@@ -392,6 +473,13 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps)
     if positions.shape[1] == 2 and ((kinds.size == 2 and np.all(kinds == GAUSS_LOG_2D))
                                     or (kinds.size == 1 and kinds[0] == LOG)):
         return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters)
+    if positions.shape[1] == 2 and tiled_2d_supported(kinds, parameters):
+        _check_span(positions, parameters[kinds == GAUSS_LOG_2D])
+        if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > 2.0**40 * steps.min():
+            raise ValueError("positions spread over more than 2^40 steps of the kernel's radial table")
+        _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, 2, tables, steps)
+        return _tiled_2d_sums(positions, masses, (0.0,) * 7, (kinds, coefficients, parameters, tables, steps),
+                              self_lap)
     if positions.shape[1] == 1 and sums_1d.supported(kinds, parameters):
         with _threads_for(positions.shape[0]):
             return sums_1d.pair_sums_1d(positions, masses, kinds, coefficients, parameters)
