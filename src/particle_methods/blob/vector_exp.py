@@ -57,12 +57,18 @@ def exp_minus_and_complement(z):
     return t + t * q, (1.0 - t) - t * q
 
 
+def checked_argument(z, limit):
+    """z as a finite float array within [0, limit], or a ValueError naming z (the array wrappers of the
+    vectorised functions)."""
+    z = finite_array("z", z)
+    if np.any(z < 0) or np.any(z > limit):
+        raise ValueError(f"z must lie in [0, {limit:g}]")
+    return z
+
+
 def exp_minus_and_complement_array(z):
     """The same, elementwise over a 1D array of z >= 0 (for tests and benchmarks)."""
-    z = finite_array("z", z)
-    if np.any(z < 0) or np.any(z > Z_LIMIT):
-        raise ValueError(f"z must lie in [0, {Z_LIMIT:g}]")
-    return _elementwise(z)
+    return _elementwise(checked_argument(z, Z_LIMIT))
 
 
 @njit
