@@ -3,8 +3,17 @@
 Each size is timed ``repeats`` times and the best time kept (the least disturbed by the machine);
 the rule runs alone on the cores it asks for. The kernels are called directly, past the input
 checks of the public functions, so that the time measured is the algorithm's.
+
+The iterated TSPD allocates NumPy temporaries of up to 32 n bytes per step. glibc serves large
+blocks by mmap, whose pages fault on first touch, and raises its mmap threshold (up to 32 MB) each
+time such a block is freed, so whether a size pays the page faults depended on what ran before it:
+a window of 1e5..1e6 measured 1.27 in one run (1e6 was page-faulting, the smaller sizes were not)
+and about 0.07 us per particle and step at every size when run alone (measured 2026-11-23). Fixing
+the thresholds at the start serves every block from the heap, so that all sizes are timed alike.
 """
 
+import ctypes
+import ctypes.util
 import time
 
 import numpy as np
@@ -14,6 +23,17 @@ from particle_methods.sticky.mspd import _ranks, mspd_positions
 from particle_methods.sticky.psystem import PSystem
 from particle_methods.sticky.spd import _hull_positions
 from particle_methods.workflow import logged, progress, save_results
+
+
+def fixed_allocator():
+    """Serve every allocation from the heap and never trim it (glibc's mallopt); False elsewhere."""
+    name = ctypes.util.find_library("c")
+    libc = ctypes.CDLL(name) if name else None
+    if libc is None or not hasattr(libc, "mallopt"):
+        return False
+    m_trim_threshold, m_mmap_threshold = -1, -3
+    large = 2**30
+    return bool(libc.mallopt(m_mmap_threshold, large)) and bool(libc.mallopt(m_trim_threshold, large))
 
 
 def best_time(function, args, repeats):
@@ -27,6 +47,7 @@ def best_time(function, args, repeats):
 
 
 def run(p, output):
+    progress("heap-only allocator: " + ("yes" if fixed_allocator() else "no (not glibc): timings include page faults"))
     rng = np.random.default_rng(0)
     repeats = p["repeats"]
     hull, free = [], []
