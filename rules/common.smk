@@ -5,6 +5,7 @@ from pathlib import Path
 
 from snakemake.utils import validate
 
+from particle_methods.configuration import check_configuration
 from particle_methods.workflow import module_dependencies
 
 ROOT = Path(workflow.basedir)
@@ -13,11 +14,23 @@ PACKAGE = ROOT / "src" / "particle_methods"
 # Software of every rule under `--software-deployment-method conda`. Its post-deploy script
 # installs the package from this clone, which it finds through PARTICLE_METHODS_SOURCE: set
 # here for the processes Snakemake starts (never read by the workflow, so no envvars entry).
-ENVIRONMENT = str(ROOT / "envs" / "particle-methods.yaml")
+ENVIRONMENT = "../envs/particle-methods.yaml"
 os.environ.update(PARTICLE_METHODS_SOURCE=str(ROOT))
 
 
 validate(config, str(ROOT / "config" / "schema.yaml"))
+check_configuration(config)
+
+
+# Every configuration writes under its own root (relative to the directory snakemake runs in, or
+# to --directory, which takes precedence), so the quick run never touches the full run's files.
+workdir: config["output_root"]
+
+
+def source(path):
+    """A file of the repository as a rule input: relative to the working directory, so that a
+    run moved or copied together with its repository has nothing to do."""
+    return os.path.relpath(path)
 
 
 def imports(script):
@@ -27,7 +40,7 @@ def imports(script):
     results computed with it; the list is read from the import statements, so it
     cannot drift from the code.
     """
-    return module_dependencies(ROOT / "scripts" / script, PACKAGE)
+    return [source(path) for path in module_dependencies(ROOT / "scripts" / script, PACKAGE)]
 
 
 CAPTION = str(ROOT / "report" / "caption.rst")

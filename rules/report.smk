@@ -4,10 +4,13 @@ the software versions and the LaTeX report."""
 import os
 import shutil
 
+from particle_methods.environment import commit
+
 PAPERS = ["sticky", "ltp", "blob"]
 CLAIM_SOURCES = expand("results/{paper}/claims.csv", paper=PAPERS)
 RATE_SOURCES = expand("results/{paper}/rates.json", paper=PAPERS)
-VERDICTS = str(ROOT / config["verdicts"])
+VERDICTS = source(ROOT / config["verdicts"])
+COMMIT = commit()
 
 
 rule claims_table:
@@ -16,7 +19,7 @@ rule claims_table:
     input:
         sources=CLAIM_SOURCES,
         rates=RATE_SOURCES,
-        code=[str(PACKAGE / "claims.py"), str(PACKAGE / "rates.py")],
+        code=[source(PACKAGE / "claims.py"), source(PACKAGE / "rates.py")],
     output:
         csv="results/claims.csv",
         markdown="results/claims.md",
@@ -68,12 +71,13 @@ NOTEBOOKS = expand("notebooks/executed/{paper}.ipynb", paper=NOTEBOOK_INPUTS)
 rule notebook:
     """Execute a paper's jupytext notebook on the cached results and keep the .ipynb copy."""
     input:
-        source=str(ROOT / "notebooks" / "{paper}.py"),
+        source=source(ROOT / "notebooks" / "{paper}.py"),
         data=lambda wildcards: NOTEBOOK_INPUTS[wildcards.paper],
         figures=lambda wildcards: NOTEBOOK_FIGURES[wildcards.paper],
-        code=lambda wildcards: module_dependencies(
-            ROOT / "notebooks" / f"{wildcards.paper}.py", PACKAGE
-        ),
+        code=lambda wildcards: [
+            source(path)
+            for path in module_dependencies(ROOT / "notebooks" / f"{wildcards.paper}.py", PACKAGE)
+        ],
     output:
         "notebooks/executed/{paper}.ipynb",
     log:
@@ -87,15 +91,18 @@ rule notebook:
 
 
 rule versions:
-    """Record the versions of Python and of every dependency used by this run."""
+    """Record the commit, and the versions of Python and of every dependency used by this run
+    (rerun when the commit changes)."""
     input:
-        code=[str(PACKAGE / "environment.py")],
+        code=[source(PACKAGE / "environment.py")],
     output:
         "results/versions.md",
     log:
         "logs/versions.log",
     conda:
         ENVIRONMENT
+    params:
+        commit=COMMIT["hash"],
     shell:
         "python -m particle_methods.environment {output} > {log} 2>&1"
 
@@ -106,6 +113,7 @@ SNIPPETS = expand(
         "claims_sticky",
         "claims_ltp",
         "claims_blob",
+        "commit",
         "measured",
         "parameters",
         "configuration",
@@ -147,7 +155,7 @@ rule report_snippets:
 rule manuscript:
     """Build paper/ms.pdf with latexmk from the article and the generated snippets."""
     input:
-        source=str(ROOT / "paper" / "ms.tex"),
+        source=source(ROOT / "paper" / "ms.tex"),
         snippets=SNIPPETS,
         figures=[*STICKY_FIGURES, *LTP_FIGURES, *BLOB_FIGURES],
     output:
@@ -156,7 +164,12 @@ rule manuscript:
         "logs/manuscript.log",
     conda:
         ENVIRONMENT
+    params:
+        epoch=COMMIT["epoch"],
     shell:
+        # The commit time as SOURCE_DATE_EPOCH: pdfTeX writes it as the creation date and the file
+        # identifier, so two builds from one commit are byte-identical.
+        "export SOURCE_DATE_EPOCH={params.epoch} FORCE_SOURCE_DATE=1 && "
         "cp {input.source} paper/build/ms.tex && cd paper/build && "
         "latexmk -pdf -interaction=nonstopmode -halt-on-error ms.tex > ../../{log} 2>&1 && "
         "cp ms.pdf ../ms.pdf"

@@ -2,6 +2,7 @@
 
 import csv
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -26,8 +27,25 @@ TIMED = "sticky.cost."  # claims whose measured values are timings, different on
 pytestmark = pytest.mark.pipeline
 
 
+# What a clone holds besides the sources: never copied into the scratch repositories.
+GENERATED = shutil.ignore_patterns(".git", ".snakemake", "results", "figures", "logs", "runs", "executed", "build",
+                                   "ms.pdf", "__pycache__", "*.nbi", "*.nbc", ".hypothesis", ".pytest_cache")
+
+
+def copy_repository(destination):
+    """The repository's sources copied to ``destination`` (file times kept), as a fresh clone has them."""
+    shutil.copytree(ROOT, destination, ignore=GENERATED)
+    return destination
+
+
+def snakefile_of(workdir):
+    """The Snakefile of the scratch repository a run directory belongs to (runs/<name> inside it)."""
+    candidate = Path(workdir).parents[1] / "Snakefile"
+    return candidate if candidate.is_file() else ROOT / "Snakefile"
+
+
 def snakemake_command(workdir, *args, configs=()):
-    return [sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory", str(workdir),
+    return [sys.executable, "-m", "snakemake", "-s", str(snakefile_of(workdir)), "--directory", str(workdir),
             "--cores", "2", "--configfile", str(QUICK), *map(str, configs), *args]
 
 
@@ -41,11 +59,45 @@ def planned_rules(result):
 
 
 @pytest.fixture(scope="module")
-def workdir(tmp_path_factory):
-    workdir = tmp_path_factory.mktemp("quick")
-    result = snakemake(workdir)
+def repository(tmp_path_factory):
+    """A scratch copy of the repository where the quick run is made as the README says: from its root."""
+    repository = copy_repository(tmp_path_factory.mktemp("clone") / "particle-methods")
+    result = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "--configfile", "config/quick.yaml"],
+                            cwd=repository, capture_output=True, text=True, timeout=900)
     assert result.returncode == 0, result.stderr[-4000:]
-    return workdir
+    return repository
+
+
+@pytest.fixture(scope="module")
+def workdir(repository):
+    return repository / "runs" / "quick"
+
+
+def test_the_quick_run_writes_under_its_own_root(repository):
+    assert (repository / "runs/quick/results/claims.csv").is_file()
+    for generated in ("results", "figures", "logs", "paper/ms.pdf", "notebooks/executed"):
+        assert not (repository / generated).exists(), f"the quick run wrote {generated} of the full run"
+
+
+def test_a_copied_repository_with_its_run_has_nothing_to_do(repository, tmp_path):
+    """Moving or copying a finished run (with its repository, file times kept) replans nothing."""
+    copy = tmp_path / "elsewhere" / "deeper" / "copy"
+    shutil.copytree(repository, copy)
+    result = subprocess.run([sys.executable, "-m", "snakemake", "--dry-run", "--configfile", "config/quick.yaml"],
+                            cwd=copy, capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr[-2000:]
+    assert "Nothing to be done" in result.stdout + result.stderr, result.stdout[-2000:]
+
+
+@pytest.mark.parametrize("paper", ["sticky", "ltp", "blob"])
+def test_one_paper_at_a_time(workdir, paper):
+    """`snakemake <paper>` plans that paper's figures, claims and notebook and nothing of the others."""
+    result = snakemake(workdir, "--dry-run", "--forceall", paper)
+    assert result.returncode == 0, result.stderr[-2000:]
+    planned = planned_rules(result)
+    others = {"sticky", "ltp", "blob"} - {paper}
+    assert f"{paper}_claims" in planned and "notebook" in planned
+    assert not any(rule.startswith(tuple(f"{other}_" for other in others)) for rule in planned), planned
 
 
 def test_every_figure_is_built(workdir):
@@ -196,6 +248,14 @@ def test_verify_fails_when_a_verdict_changes(workdir, tmp_path):
         ("sticky:\n  fig2:\n    field_particles: -1\n", "field_particles"),
         ("sticky:\n  fig2:\n    tmax: 3\n", "tmax"),
         ("sticky:\n  fig3:\n    case: heat_equation\n", "case"),
+        ("sticky:\n  fig2:\n    t_max: .nan\n", "sticky.fig2.t_max"),
+        ("blob:\n  fig5:\n    inverse_h: [5, 10, 10]\n", "blob.fig5.inverse_h"),
+        ("sticky:\n  cost:\n    window: 9\n", "sticky.cost.window"),
+        ("blob:\n  fig1:\n    zoom: [0.06, -0.06, 0.8, 1.0]\n", "blob.fig1.zoom"),
+        ("ltp:\n  quadratic:\n    eps_scan: {h: 0.05, dt: 0.01, fine_dt: 1.0e-3, eps_min: 0.5, eps_max: 0.2, "
+         "count: 5}\n", "ltp.quadratic.eps_scan.eps_min"),
+        ("blob:\n  fig1:\n    density_times: [0.0, 0.4, 5.0]\n", "blob.fig1.density_times"),
+        ("sticky:\n  cost:\n    hull_n: [100, 1000, 1000000000000]\n", "sticky.cost.hull_n"),
     ],
 )
 def test_bad_configuration_stops_at_start_naming_the_key(tmp_path, override, key):
@@ -205,6 +265,19 @@ def test_bad_configuration_stops_at_start_naming_the_key(tmp_path, override, key
     assert result.returncode != 0
     assert key in result.stdout + result.stderr
     assert not (tmp_path / "results").exists()
+
+
+def test_a_configuration_file_missing_a_section_stops_the_run(tmp_path):
+    """A file given with --configfile replaces config/config.yaml: nothing is filled in from it."""
+    quick = yaml.safe_load(QUICK.read_text())
+    del quick["sticky"]
+    path = tmp_path / "incomplete.yaml"
+    path.write_text(yaml.safe_dump(quick))
+    result = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory",
+                             str(tmp_path), "--dry-run", "--configfile", str(path)], capture_output=True, text=True,
+                            timeout=300)
+    assert result.returncode != 0
+    assert "'sticky' is a required property" in result.stdout + result.stderr
 
 
 def test_a_forced_rerun_gives_an_identical_claims_table(workdir):
@@ -238,6 +311,18 @@ def test_report_pdf_is_built_where_latex_is_installed(workdir):
     assert pdf.read_bytes()[:5] == b"%PDF-" and pdf.stat().st_size > 100_000
     measured = (workdir / "paper" / "build" / "generated" / "measured.tex").read_text()
     assert "measured@sticky.fig2d.order" in measured
+
+
+def test_two_builds_of_the_pdf_are_byte_identical(workdir):
+    import shutil
+
+    if not (shutil.which("latexmk") and shutil.which("pdflatex")):
+        pytest.skip("no LaTeX toolchain")
+    first = (workdir / "paper" / "ms.pdf").read_bytes()
+    result = snakemake(workdir, "--forcerun", "manuscript", "paper/ms.pdf")
+    assert result.returncode == 0, result.stderr[-2000:]
+    assert (workdir / "paper" / "ms.pdf").read_bytes() == first
+    assert b"/Title (Particle methods" in first or b"Particle methods" in first
 
 
 def test_browsable_report_has_every_figure_with_its_caption(workdir):

@@ -51,7 +51,9 @@ def snippets(tmp_path):
     write_claims(tmp_path / "claims.csv", claims)
     rate = order("demo.fig1.order", "h", [0.1, 0.05, 0.025], [1e-2, 2.6e-3, 6.4e-4], window=2, label="t = 1")
     write_rates(tmp_path / "rates.json", [rate])
-    (tmp_path / "versions.md").write_text("| package | version |\n|---|---|\n| python | 3.11.7 |\n| numpy | 2.0 |\n")
+    (tmp_path / "versions.md").write_text("Commit: 0123abc\n\nCommit date: 2026-11-23T17:37:41+00:00\n\n"
+                                          "Modified since the commit: no\n\n"
+                                          "| package | version |\n|---|---|\n| python | 3.11.7 |\n| numpy | 2.0 |\n")
     config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]}}
     write_snippets(tmp_path / "claims.csv", tmp_path / "rates.json", tmp_path / "versions.md", config,
                    tmp_path / "out")
@@ -93,3 +95,17 @@ def test_rate_tables_mark_the_deciding_window(snippets):
     assert "demo.\\allowbreak{}fig1.\\allowbreak{}order} (t = 1)" in table
     assert table.count(r"\textbf{") == 1 and r"\textbf{2.022}" in table  # log2(2.6e-3 / 6.4e-4)
     assert table.count(r" \\") == 2 + 1  # header and two rows of first points
+
+
+def test_the_title_page_names_the_commit(snippets):
+    assert snippets["commit"] == "\\newcommand{\\commithash}{0123abc}\n\\newcommand{\\commitdate}{2026-11-23}\n"
+
+
+def test_versions_name_the_commit_or_say_unknown_outside_a_clone(tmp_path, monkeypatch):
+    from particle_methods import environment
+
+    state = environment.commit()
+    assert len(state["hash"]) == 40 and state["epoch"].isdigit() and state["modified"] in ("yes", "no")
+    monkeypatch.setenv("PARTICLE_METHODS_SOURCE", str(tmp_path))
+    assert environment.commit() == {"hash": "unknown", "date": "unknown", "epoch": "0", "modified": "unknown"}
+    assert "Commit: unknown" in environment.markdown()

@@ -1,11 +1,19 @@
-"""The software a run used: Python and each dependency's version, for the report."""
+"""The software a run used: the repository's commit, Python and each dependency's version.
+
+``python -m particle_methods.environment versions.md`` writes them for the report;
+``python -m particle_methods.environment --epoch`` prints the commit time in seconds since 1970,
+the SOURCE_DATE_EPOCH that makes two builds of the PDF from one commit byte-identical.
+"""
 
 from __future__ import annotations
 
 import argparse
+import os
 import platform
+import subprocess
 import sys
 from importlib import metadata
+from pathlib import Path
 
 PACKAGES = ("particle-methods", "numpy", "scipy", "numba", "llvmlite", "matplotlib", "snakemake", "jupytext",
             "jsonschema", "pyyaml")
@@ -22,16 +30,51 @@ def versions() -> dict[str, str]:
     return found
 
 
+def repository() -> Path:
+    """The clone the run was made from: PARTICLE_METHODS_SOURCE (set by the Snakefile), else this package's."""
+    return Path(os.environ.get("PARTICLE_METHODS_SOURCE", Path(__file__).resolve().parents[2]))
+
+
+def _git(*args) -> str | None:
+    try:
+        result = subprocess.run(["git", "-C", str(repository()), *args], capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return result.stdout.strip() if result.returncode == 0 else None
+
+
+def commit() -> dict[str, str]:
+    """hash, date (ISO 8601), epoch (seconds) of the checked-out commit, and whether files differ from it.
+
+    Outside a git clone every field is "unknown" and the epoch is 0.
+    """
+    found = _git("log", "-1", "--format=%H %cI %ct")
+    if not found:
+        return {"hash": "unknown", "date": "unknown", "epoch": "0", "modified": "unknown"}
+    hash_, date, epoch = found.split()
+    changes = _git("status", "--porcelain", "--untracked-files=no")
+    return {"hash": hash_, "date": date, "epoch": epoch, "modified": "yes" if changes else "no"}
+
+
 def markdown() -> str:
-    lines = ["# Software versions", "", f"Platform: {platform.platform()}", "", "| package | version |", "|---|---|"]
+    state = commit()
+    lines = ["# Software versions", "", f"Commit: {state['hash']}", "", f"Commit date: {state['date']}", "",
+             f"Modified since the commit: {state['modified']}", "", f"Platform: {platform.platform()}", "",
+             "| package | version |", "|---|---|"]
     lines += [f"| {name} | {version} |" for name, version in versions().items()]
     return "\n".join(lines) + "\n"
 
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m particle_methods.environment", description=__doc__)
-    parser.add_argument("output", help="Markdown file to write")
+    parser.add_argument("output", nargs="?", help="Markdown file to write")
+    parser.add_argument("--epoch", action="store_true", help="print the commit time (SOURCE_DATE_EPOCH) and exit")
     args = parser.parse_args(argv)
+    if args.epoch:
+        print(commit()["epoch"])
+        return 0
+    if args.output is None:
+        parser.error("give the Markdown file to write, or --epoch")
     with open(args.output, "w") as handle:
         handle.write(markdown())
     return 0

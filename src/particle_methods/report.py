@@ -12,7 +12,8 @@
   ``\\claimcount{<paper>.<kind>.pass}`` (``.fail``, ``.all``) per kind, with ``all`` for the
   three papers together (``\\claimcount{all.paper.pass}`` is the headline);
 - ``rates.tex``: every fitted rate, its pairwise slopes and the fit over every window (an appendix);
-- ``versions.tex``: the software versions table (a tabular).
+- ``versions.tex``: the software versions table (a tabular);
+- ``commit.tex``: ``\\commithash`` and ``\\commitdate``, the commit the run was made from.
 
 The article (``paper/ms.tex``) types no parameter or measured value of its own: it uses these
 macros.
@@ -167,7 +168,13 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir) -> None:
     (outdir / "parameters.tex").write_text("".join(_define("param", key, cell(text)) for key, text in parameters))
     (outdir / "configuration.tex").write_text("".join(
         f"\\noindent\\texttt{{{_breakable(key)}}} = {cell(text)}\\par\n" for key, text in parameters))
-    rows = [line for line in Path(versions_md).read_text().splitlines() if re.match(r"\| [^-]", line)][1:]
+    lines = Path(versions_md).read_text().splitlines()
+    fields = dict(line.split(": ", 1) for line in lines if line.startswith(("Commit", "Modified")))
+    modified = " (with uncommitted changes)" if fields.get("Modified since the commit") == "yes" else ""
+    (outdir / "commit.tex").write_text(
+        f"\\newcommand{{\\commithash}}{{{tex(fields.get('Commit', 'unknown'))}{modified}}}\n"
+        f"\\newcommand{{\\commitdate}}{{{tex(fields.get('Commit date', 'unknown')[:10])}}}\n")
+    rows = [line for line in lines if re.match(r"\| [^-]", line)][1:]
     table = "".join(f"{tex(cells[1].strip())} & {tex(cells[2].strip())} \\\\\n"
                     for cells in (row.split("|") for row in rows))
     (outdir / "versions.tex").write_text("\\begin{tabular}{ll}\\toprule package & version \\\\ \\midrule\n" + table

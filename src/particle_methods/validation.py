@@ -1,4 +1,11 @@
-"""Input checks shared by every solver: each raises ``ValueError`` naming the parameter."""
+"""Input checks shared by every public function.
+
+Each check names the parameter it rejects. A value of the wrong kind (None, a string, a complex
+number, an object array) raises :class:`ParameterTypeError`, a ``TypeError`` that is also a
+``ValueError`` so that callers catching either see it; a value of the right kind out of range
+raises ``ValueError``. :func:`finite_result` turns a non-finite result of valid inputs (an
+overflow) into a ``ValueError`` naming its cause instead of returning NaN or inf.
+"""
 
 from __future__ import annotations
 
@@ -10,9 +17,26 @@ import numpy as np
 from .jit import njit
 
 
+class ParameterTypeError(TypeError, ValueError):
+    """A parameter of the wrong type: a TypeError, and a ValueError for callers catching that."""
+
+
+def real_array(name: str, values) -> np.ndarray:
+    """``values`` as a float64 array; ParameterTypeError for None, strings, complex or objects."""
+    if values is None or isinstance(values, (str, bytes)):
+        raise ParameterTypeError(f"{name} must be an array of real numbers, got {values!r}")
+    try:
+        array = np.asarray(values)
+    except ValueError as error:  # ragged nested sequences
+        raise ParameterTypeError(f"{name} must be a rectangular array of real numbers ({error})") from None
+    if array.dtype.kind not in "biuf":
+        raise ParameterTypeError(f"{name} must hold real numbers, got dtype {array.dtype}")
+    return array.astype(np.float64, copy=False)
+
+
 def finite_array(name: str, values, ndim: int = 1) -> np.ndarray:
-    """Return ``values`` as a float64 array after checking its rank and finiteness."""
-    array = np.asarray(values, dtype=np.float64)
+    """Return ``values`` as a float64 array after checking its type, rank and finiteness."""
+    array = real_array(name, values)
     if array.ndim != ndim:
         raise ValueError(f"{name} must be a {ndim}-dimensional array, got shape {array.shape}")
     if not np.all(np.isfinite(array)):
@@ -40,7 +64,7 @@ def sorted_array(name: str, values, ndim: int = 1) -> np.ndarray:
     One-dimensional inputs are scanned once by a compiled loop, so the check stays
     cheap next to the O(n) solvers it guards.
     """
-    array = np.asarray(values, dtype=np.float64)
+    array = real_array(name, values)
     if array.ndim != ndim:
         raise ValueError(f"{name} must be a {ndim}-dimensional array, got shape {array.shape}")
     rows = array.reshape(-1, array.shape[-1]) if array.size else array.reshape(0, 0)
@@ -65,8 +89,11 @@ def same_length(**arrays: np.ndarray) -> int:
 def finite_number(name: str, value) -> float:
     """Return ``value`` as a float after checking that it is a finite real number."""
     if isinstance(value, bool) or not isinstance(value, (Real, np.floating, np.integer)):
-        raise ValueError(f"{name} must be a real number, got {value!r}")
-    value = float(value)
+        raise ParameterTypeError(f"{name} must be a real number, got {value!r}")
+    try:
+        value = float(value)
+    except OverflowError:
+        raise ValueError(f"{name} is beyond the double-precision range, got {value!r}") from None
     if not math.isfinite(value):
         raise ValueError(f"{name} must be finite, got {value}")
     return value
@@ -88,18 +115,20 @@ def nonnegative(name: str, value) -> float:
     return value
 
 
-def integer_at_least(name: str, value, minimum: int) -> int:
-    """Integer >= ``minimum``."""
+def integer_at_least(name: str, value, minimum: int, maximum: int | None = None) -> int:
+    """Integer >= ``minimum`` (and <= ``maximum``, a limit on the work a call may ask for)."""
     if isinstance(value, bool) or not isinstance(value, (Integral, np.integer)):
-        raise ValueError(f"{name} must be an integer, got {value!r}")
+        raise ParameterTypeError(f"{name} must be an integer, got {value!r}")
     if value < minimum:
         raise ValueError(f"{name} must be at least {minimum}, got {value}")
+    if maximum is not None and value > maximum:
+        raise ValueError(f"{name} must be at most {maximum} (a limit on the work of one call), got {value}")
     return int(value)
 
 
 def in_interval(name: str, values, low: float, high: float) -> np.ndarray:
     """Finite array with every entry in the closed interval [low, high]."""
-    array = np.asarray(values, dtype=np.float64)
+    array = real_array(name, values)
     if not np.all(np.isfinite(array)):
         raise ValueError(f"{name} contains NaN or infinite values")
     if np.any(array < low) or np.any(array > high):
@@ -113,3 +142,10 @@ def one_of(what: str, name, table: dict):
         return table[name]
     except (KeyError, TypeError):
         raise ValueError(f"unknown {what} {name!r}: expected one of {sorted(table)}") from None
+
+
+def finite_result(what: str, values, cause: str):
+    """``values`` unchanged if every entry is finite; else a ValueError saying what overflowed and why."""
+    if not np.all(np.isfinite(values)):
+        raise ValueError(f"{what} is not finite: {cause}")
+    return values

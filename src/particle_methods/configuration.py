@@ -1,0 +1,136 @@
+"""Checks of the pipeline configuration that a JSON schema cannot state.
+
+``config/schema.yaml`` fixes the keys, types and simple bounds; :func:`check_configuration`,
+called by the Snakefile right after the schema, rejects at start what would otherwise produce a
+meaningless number hours later, with a ValueError naming the dotted key:
+
+- NaN or infinite numbers (YAML's ``.nan`` and ``.inf`` pass the schema's ``type: number``);
+- lists of resolutions, sizes or times that repeat a value or are not monotone (an order fitted
+  on repeated resolutions is meaningless), and ranges given backwards (``zoom``, ``*_band``,
+  fit windows, ``x_min`` above ``x_max``);
+- fit windows longer than the list they are fitted on;
+- times beyond the ``t_max`` of their run;
+- sizes beyond what one run can compute (:data:`MAX_COUNT` particles, steps or cells;
+  :data:`MAX_INVERSE_H` for 1/h).
+"""
+
+from __future__ import annotations
+
+import math
+from numbers import Real
+
+MAX_COUNT = 10**8
+"""Largest integer parameter (particles, cells, steps): 1e8 doubles are 0.8 GB per array."""
+
+MAX_INVERSE_H = 10**5
+"""Largest 1/h: the 1D methods then hold 1e5 particles per unit length, the 2D ones 1e10."""
+
+# Fit windows (integer keys) and the lists they are fitted on (a tuple: lists fitted together).
+FIT_WINDOWS = {
+    "sticky.fig2.order_window": ["sticky.fig2.error_p"],
+    "sticky.fig3.decay_window": [("sticky.fig3.error_p", "sticky.fig3.rate_p")],
+    "sticky.lemma21.rate_window": ["sticky.lemma21.n_values"],
+    "sticky.remark33.window": ["sticky.remark33.cells_per_unit"],
+    "sticky.tspd_convergence.window": ["sticky.tspd_convergence.deltas", "sticky.tspd_convergence.n_values"],
+    "sticky.cost.window": ["sticky.cost.hull_n", "sticky.cost.rank_n", "sticky.cost.tspd_n",
+                           "sticky.cost.steps_values"],
+    "ltp.quadratic.dt_study.fit_points": ["ltp.quadratic.dt_study.dt_values"],
+    "blob.fig1.fit_points": ["blob.fig1.inverse_h"],
+    "blob.fig2.fit_points": ["blob.fig2.inverse_h"],
+    "blob.fig3.fit_points": ["blob.fig3.inverse_h"],
+    "blob.fig4.fit_points": ["blob.fig4.inverse_h"],
+    "blob.fig5.fit_points": ["blob.fig5.inverse_h"],
+}
+
+# Times plotted or measured within a run, and the run's final time.
+TIMES_WITHIN = {
+    "sticky.fig2.profile_times": "sticky.fig2.t_max",
+    "sticky.fig3.profile_times": "sticky.fig3.t_max",
+    "blob.fig1.density_times": "blob.fig1.t_max",
+    "blob.fig2.density_times": "blob.fig2.t_max",
+    "blob.fig3.density_times": "blob.fig3.t_max",
+}
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, Real) and not isinstance(value, bool)
+
+
+def _walk(node, path=()):
+    """(dotted path, value) of every leaf and every list of the configuration."""
+    if isinstance(node, dict):
+        for key, value in node.items():
+            yield from _walk(value, (*path, str(key)))
+    elif isinstance(node, list):
+        yield ".".join(path), node
+        for index, value in enumerate(node):
+            yield from _walk(value, (*path, str(index)))
+    else:
+        yield ".".join(path), node
+
+
+def _get(config, dotted):
+    node = config
+    for key in dotted.split("."):
+        if not isinstance(node, dict) or key not in node:
+            return None
+        node = node[key]
+    return node
+
+
+def _is_range(path: str) -> bool:
+    """Lists that are [low, high] ranges: bands, zoom boxes (x pairs, y pairs) and fit windows."""
+    last = path.split(".")[-1]
+    parent = path.split(".")[-2] if "." in path else ""
+    return last.endswith("band") or last == "zoom" or parent == "windows"
+
+
+def _check_list(path: str, values: list) -> None:
+    if len(values) < 2 or not all(_is_number(value) for value in values):
+        return
+    steps = [b - a for a, b in zip(values, values[1:])]
+    if _is_range(path):
+        pairs = [values[i:i + 2] for i in range(0, len(values), 2)]
+        if any(len(pair) == 2 and pair[0] >= pair[1] for pair in pairs):
+            raise ValueError(f"{path} = {values}: a range must be given as [low, high] with low < high")
+    elif not (all(step > 0 for step in steps) or all(step < 0 for step in steps)):
+        raise ValueError(f"{path} = {values}: the values must be distinct and ordered (increasing or decreasing)")
+
+
+def check_configuration(config: dict) -> None:
+    """Raise ValueError naming the first key whose value no run can use meaningfully."""
+    for path, value in _walk(config):
+        if isinstance(value, list):
+            _check_list(path, value)
+        elif isinstance(value, float) and not math.isfinite(value):
+            raise ValueError(f"{path} = {value}: every number must be finite")
+        elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > MAX_COUNT:
+            raise ValueError(f"{path} = {value}: beyond {MAX_COUNT:.0e}, more than one run can compute")
+        last = path.split(".")[-1]
+        if last in ("inverse_h", "extra_inverse_h") and isinstance(value, list):
+            if any(_is_number(v) and v > MAX_INVERSE_H for v in value):
+                raise ValueError(f"{path} = {value}: 1/h beyond {MAX_INVERSE_H:.0e}")
+        is_h = last == "h" or path.split(".")[-2:-1] == ["h_values"]
+        if is_h and _is_number(value) and 0 < value < 1 / MAX_INVERSE_H:
+            raise ValueError(f"{path} = {value}: h below {1 / MAX_INVERSE_H:g}")
+        if last.endswith("_min") and _is_number(value):
+            upper = _get(config, path[: -len("_min")] + "_max")
+            if _is_number(upper) and value >= upper:
+                raise ValueError(f"{path} = {value} must be below {path[: -len('_min')]}_max = {upper}")
+    _check_times_within(config)
+    for window_path, lists in FIT_WINDOWS.items():
+        window = _get(config, window_path)
+        for paths in lists:
+            paths = (paths,) if isinstance(paths, str) else paths
+            length = sum(len(_get(config, path) or ()) for path in paths)
+            if _is_number(window) and window > length:
+                raise ValueError(f"{window_path} = {window}: longer than {' + '.join(paths)}, {length} values")
+
+
+def _check_times_within(config: dict) -> None:
+    for times_path, t_max_path in TIMES_WITHIN.items():
+        times, t_max = _get(config, times_path), _get(config, t_max_path)
+        if isinstance(times, list) and _is_number(t_max):
+            late = [t for t in times if _is_number(t) and t > t_max]
+            if late:
+                raise ValueError(f"{times_path}: times {late} beyond {t_max_path} = {t_max}")

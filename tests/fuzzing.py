@@ -1,0 +1,71 @@
+"""Property-based fuzzing of the public API: the shared harness (issue: safe API).
+
+Every public entry point is called with values drawn from :data:`BAD` and with well-formed but
+extreme values. A call must return finite results or raise ``ValueError`` or ``TypeError``
+naming the parameter; anything else (another exception, NaN or inf returned, a hang) fails.
+Each call runs under a watchdog: a call that does not return within ``CALL_SECONDS`` ends the
+test process with a traceback (compiled loops cannot be interrupted any other way).
+"""
+
+from __future__ import annotations
+
+import faulthandler
+from contextlib import contextmanager
+
+import numpy as np
+from hypothesis import HealthCheck, settings
+from hypothesis import strategies as st
+
+CALL_SECONDS = 20.0
+
+FUZZ = settings(
+    max_examples=40,
+    deadline=None,  # the watchdog bounds each call; hypothesis' deadline would only report it
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+    derandomize=True,
+)
+
+# Values no public function should accept silently where a number or an array is expected.
+BAD_SCALARS = [None, "1", b"1", 1j, float("nan"), float("inf"), -float("inf"), 10**400, -(10**400), [], [1.0, 2.0],
+               {}, object(), True]
+BAD_ARRAYS = [None, "abc", [], [[1.0], [2.0, 3.0]], np.array([1.0, np.nan]), np.array([1.0, np.inf]),
+              np.array([1 + 1j, 2.0]), np.array(["a", "b"]), np.ones((2, 2, 2)), 3.0]
+
+bad_scalar = st.sampled_from(BAD_SCALARS)
+bad_array = st.sampled_from(BAD_ARRAYS)
+extreme = st.sampled_from([0.0, -0.0, 5e-324, 1e-300, -1e-300, 1e300, -1e300, 1.7e308, -1.7e308, 1e-8, 1e8])
+
+
+@contextmanager
+def watchdog(seconds: float = CALL_SECONDS):
+    """End the process with a traceback if the block runs longer than ``seconds``."""
+    faulthandler.dump_traceback_later(seconds, exit=True)
+    try:
+        yield
+    finally:
+        faulthandler.cancel_dump_traceback_later()
+
+
+def _all_finite(value) -> bool:
+    if isinstance(value, np.ndarray):
+        return value.dtype.kind not in "fc" or bool(np.all(np.isfinite(value)))
+    if isinstance(value, float):
+        return bool(np.isfinite(value))
+    if isinstance(value, (tuple, list)):
+        return all(_all_finite(item) for item in value)
+    return True
+
+
+def safe_call(function, *args, **kwargs):
+    """Call under the watchdog; return the result if finite, None if rejected by ValueError/TypeError.
+
+    Any other exception propagates (the test fails on it), as does a non-finite result.
+    """
+    with watchdog():
+        try:
+            result = function(*args, **kwargs)
+        except (ValueError, TypeError) as error:
+            assert str(error), f"{function.__name__} raised {type(error).__name__} without a message"
+            return None
+    assert _all_finite(result), f"{function.__name__}{args} returned non-finite values silently"
+    return result
