@@ -11,7 +11,6 @@ missing section stops the run naming it). Each configuration writes under its ow
 
 from pathlib import Path
 
-
 if not workflow.overwrite_configfiles:
     workflow.configfile(str(Path(workflow.basedir) / "config" / "config.yaml"))
 
@@ -20,6 +19,13 @@ report: "report/workflow.rst"
 
 
 include: "rules/common.smk"
+
+
+# Every configuration writes under its own root (relative to the directory snakemake runs in, or
+# to --directory, which takes precedence), so the quick run never touches the full run's files.
+workdir: config["output_root"]
+
+
 include: "rules/sticky.smk"
 include: "rules/ltp.smk"
 include: "rules/blob.smk"

@@ -22,13 +22,8 @@ validate(config, str(ROOT / "config" / "schema.yaml"))
 check_configuration(config)
 
 
-# Every configuration writes under its own root (relative to the directory snakemake runs in, or
-# to --directory, which takes precedence), so the quick run never touches the full run's files.
-workdir: config["output_root"]
-
-
 def source(path):
-    """A file of the repository as a rule input: relative to the working directory, so that a
+    """A repository file as an input, relative to the working directory, so that a
     run moved or copied together with its repository has nothing to do."""
     return os.path.relpath(path)
 
