@@ -98,7 +98,7 @@ def test_rate_tables_mark_the_deciding_window(snippets):
 
 
 def test_the_title_page_names_the_commit(snippets):
-    assert snippets["commit"] == "\\newcommand{\\commithash}{0123abc}\n\\newcommand{\\commitdate}{2026-11-23}\n"
+    assert snippets["commit"] == "\\newcommand{\\builtfrom}{Built from commit \\texttt{0123abc} of 2026-11-23}\n"
 
 
 def test_versions_name_the_commit_or_say_unknown_outside_a_clone(tmp_path, monkeypatch):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .validation import finite_array
+from .validation import ParameterTypeError, finite_array, finite_result
 
 
 def _log_pairs(steps, errors):
@@ -24,17 +24,24 @@ def fit_order(steps, errors) -> float:
     error ~ C h^p; with steps = n (a number of particles) it is -p.
     """
     log_steps, log_errors = _log_pairs(steps, errors)
-    return float(np.polyfit(log_steps, log_errors, 1)[0])
+    if np.ptp(log_steps) == 0:
+        raise ValueError("steps must not all be equal: a slope needs two different steps")
+    return finite_result("the fitted order", float(np.polyfit(log_steps, log_errors, 1)[0]),
+                         "steps too close together")
 
 
 def pairwise_orders(steps, errors) -> np.ndarray:
     """Slopes between consecutive points: log(e_{i+1}/e_i) / log(s_{i+1}/s_i)."""
     log_steps, log_errors = _log_pairs(steps, errors)
+    if np.any(np.diff(log_steps) == 0):
+        raise ValueError("consecutive steps must differ")
     return np.diff(log_errors) / np.diff(log_steps)
 
 
 def order_table(steps, errors, step_name: str = "h") -> str:
     """Plain-text table step | error | pairwise order, for logs and failing tests."""
+    if not isinstance(step_name, str):
+        raise ParameterTypeError(f"step_name must be a string, got {step_name!r}")
     orders = pairwise_orders(steps, errors)
     lines = [f"{step_name:>12} | {'error':>12} | order"]
     for i, (step, error) in enumerate(zip(np.asarray(steps, float), np.asarray(errors, float))):

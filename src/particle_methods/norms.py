@@ -14,7 +14,31 @@ from __future__ import annotations
 
 import numpy as np
 
-from .validation import sorted_array
+from .validation import (
+    ParameterTypeError,
+    finite_array,
+    finite_result,
+    in_interval,
+    integer_at_least,
+    positive,
+    real_array,
+    sorted_array,
+)
+
+
+def _points(name: str, points) -> np.ndarray:
+    x = sorted_array(name, points)
+    if x.size == 0:
+        raise ValueError(f"{name} must contain at least one position")
+    return x
+
+
+def _measure_values(name: str, values, n: int) -> np.ndarray:
+    """Values a measure returned for n arguments, checked: real, one per argument, finite."""
+    values = real_array(name, values)
+    if values.shape != (n,):
+        raise ValueError(f"{name} must return one value per point, shape ({n},), got {values.shape}")
+    return finite_result(name, values, "the measure returned NaN or infinite values")
 
 
 def w1_to_measure(measure, points) -> float:
@@ -27,18 +51,19 @@ def w1_to_measure(measure, points) -> float:
     x_k (s - a) - (G(s) - G(a)) + (G(b) - G(s)) - x_k (b - s) with G the
     antiderivative: exact, with no quadrature.
     """
-    x = sorted_array("points", points)
+    methods = ("cdf", "quantile_integral")
+    if isinstance(measure, type) or not all(callable(getattr(measure, name, None)) for name in methods):
+        raise ParameterTypeError(f"measure must provide methods cdf(x) and quantile_integral(w), got {measure!r}")
+    x = _points("points", points)
     n = x.size
-    if n == 0:
-        raise ValueError("points must contain at least one position")
     lower = np.arange(n) / n
     upper = np.arange(1, n + 1) / n
-    split = np.clip(measure.cdf(x), lower, upper)
-    primitive = measure.quantile_integral
-    g_lower, g_split, g_upper = primitive(lower), primitive(split), primitive(upper)
+    split = np.clip(_measure_values("measure.cdf(points)", measure.cdf(x), n), lower, upper)
+    g_lower, g_split, g_upper = (_measure_values("measure.quantile_integral(w)", measure.quantile_integral(w), n)
+                                 for w in (lower, split, upper))
     below = x * (split - lower) - (g_split - g_lower)
     above = (g_upper - g_split) - x * (upper - split)
-    return float(np.sum(below + above))
+    return finite_result("W1", float(np.sum(below + above)), "the points or the measure's values are too large")
 
 
 def w1_between_samples(x, y) -> float:
@@ -47,16 +72,15 @@ def w1_between_samples(x, y) -> float:
     Both quantile functions are step functions; on each piece of the common
     refinement of the grids k/n and j/m they are constant, so the sum is exact.
     """
-    x = sorted_array("x", x)
-    y = sorted_array("y", y)
-    if x.size == 0 or y.size == 0:
-        raise ValueError("x and y must contain at least one position")
+    x = _points("x", x)
+    y = _points("y", y)
     n, m = x.size, y.size
     breaks = np.union1d(np.arange(n + 1) / n, np.arange(m + 1) / m)
     middles = 0.5 * (breaks[1:] + breaks[:-1])
     ix = np.minimum((middles * n).astype(np.int64), n - 1)
     iy = np.minimum((middles * m).astype(np.int64), m - 1)
-    return float(np.sum(np.abs(x[ix] - y[iy]) * np.diff(breaks)))
+    return finite_result("W1", float(np.sum(np.abs(x[ix] - y[iy]) * np.diff(breaks))),
+                         "x and y are too far apart: their differences overflow")
 
 
 def grid_errors(values, reference, x) -> tuple[float, float]:
@@ -66,10 +90,16 @@ def grid_errors(values, reference, x) -> tuple[float, float]:
     refining it does not move the errors measured in the figures.
     """
     x = sorted_array("x", x)
-    difference = np.abs(np.asarray(values, dtype=np.float64) - np.asarray(reference, dtype=np.float64))
-    if difference.shape != x.shape:
-        raise ValueError("values, reference and x must have the same shape")
-    return float(np.trapezoid(difference, x)), float(difference.max())
+    if x.size < 2:
+        raise ValueError(f"x must contain at least 2 points for the trapezoidal rule, got {x.size}")
+    values = finite_array("values", values)
+    reference = finite_array("reference", reference)
+    if values.shape != x.shape or reference.shape != x.shape:
+        raise ValueError(f"values, reference and x must have the same shape, got {values.shape}, {reference.shape} "
+                         f"and {x.shape}")
+    difference = np.abs(values - reference)
+    errors = float(np.trapezoid(difference, x)), float(difference.max())
+    return finite_result("the L1 or L-infinity error", errors, "values, reference or x are too large")
 
 
 def discrete_l1(values, reference, h: float, dimension: int = 1) -> float:
@@ -78,7 +108,21 @@ def discrete_l1(values, reference, h: float, dimension: int = 1) -> float:
     For vector quantities (trajectories in 2D) the last axis is the vector and |.| is
     its Euclidean length.
     """
-    difference = np.asarray(values, dtype=np.float64) - np.asarray(reference, dtype=np.float64)
+    values = in_interval("values", values, -np.inf, np.inf)  # any finite real array
+    reference = in_interval("reference", reference, -np.inf, np.inf)
+    try:
+        np.broadcast_shapes(values.shape, reference.shape)
+    except ValueError:
+        raise ValueError(f"values and reference must have broadcastable shapes, got {values.shape} and "
+                         f"{reference.shape}") from None
+    h = positive("h", h)
+    dimension = integer_at_least("dimension", dimension, 1)
+    try:
+        volume = h**dimension
+    except OverflowError:
+        raise ValueError(f"h**dimension overflows, h = {h}, dimension = {dimension}") from None
+    difference = values - reference
     if difference.ndim > 1 and dimension > 1:
         difference = np.linalg.norm(difference, axis=-1)
-    return float(h**dimension * np.abs(difference).sum())
+    return finite_result("the discrete L1 norm", float(volume * np.abs(difference).sum()),
+                         "values, reference or h are too large: the sum overflows")

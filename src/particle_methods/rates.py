@@ -15,12 +15,38 @@ x = log n, whose slope tends to a positive constant for log(n)/n and to 0 for 1/
 from __future__ import annotations
 
 import json
+import os
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
 
-from .validation import finite_array, integer_at_least
+from .validation import ParameterTypeError, finite_array, finite_number, finite_result, integer_at_least
+
+MAX_POINTS = 100
+"""Most resolutions one fit accepts: :func:`window_slopes` fits all n^2/2 windows, a second for 100."""
+
+
+def _text(name: str, value) -> str:
+    if not isinstance(value, str):
+        raise ParameterTypeError(f"{name} must be a string, got {value!r}")
+    return value
+
+
+def _path(name: str, value) -> Path:
+    if not isinstance(value, (str, os.PathLike)):
+        raise ParameterTypeError(f"{name} must be a path, got {value!r}")
+    return Path(value)
+
+
+def _listed(name: str, values, kind, what: str) -> list:
+    """``values`` as a list whose items are all of type ``kind`` (``what`` in messages)."""
+    if isinstance(values, (str, bytes, os.PathLike)) or not hasattr(values, "__iter__"):
+        raise ParameterTypeError(f"{name} must be a list of {what}, got {values!r}")
+    values = list(values)
+    if not all(isinstance(value, kind) for value in values):
+        raise ParameterTypeError(f"{name} must hold {what} only")
+    return values
 
 
 @dataclass(frozen=True)
@@ -35,6 +61,27 @@ class RateFit:
     window: int
     label: str = ""
     """What distinguishes fits recorded for the same claim (a time, a case)."""
+
+    def __post_init__(self):
+        for name in ("claim", "quantity", "resolution", "label"):
+            _text(name, getattr(self, name))
+        if not isinstance(self.values, tuple) or not 2 <= len(self.values) <= MAX_POINTS:
+            raise ValueError(f"values must be a tuple of 2 to {MAX_POINTS} resolutions, got {self.values!r}")
+        for value in self.values:
+            finite_number("values", value)
+        count = len(self.values)
+        if isinstance(self.window, bool) or not isinstance(self.window, int) or not 2 <= self.window <= count:
+            raise ValueError(f"window must be an integer from 2 to {count} (the number of values), got "
+                             f"{self.window!r}")
+        if not (isinstance(self.slopes, tuple) and len(self.slopes) == count
+                and all(isinstance(row, tuple) and len(row) == count for row in self.slopes)):
+            raise ValueError(f"slopes must be a {count} x {count} tuple of tuples (one row per first point)")
+        for i, row in enumerate(self.slopes):
+            for j, value in enumerate(row):
+                if j <= i and value is not None:
+                    raise ValueError(f"slopes[{i}][{j}] must be None (no window ends before it starts)")
+                if j > i:
+                    finite_number(f"slopes[{i}][{j}]", value)
 
     @property
     def slope(self) -> float:
@@ -67,8 +114,11 @@ def window_slopes(x, y) -> list[list[float | None]]:
     """slopes[i][j]: least-squares slope of y against x over points i..j (None unless j > i)."""
     x = finite_array("x", x)
     y = finite_array("y", y)
-    if x.ndim != 1 or x.shape != y.shape or x.size < 2:
+    if x.shape != y.shape or x.size < 2:
         raise ValueError("x and y must be 1D arrays of the same length, at least 2")
+    if x.size > MAX_POINTS:
+        raise ValueError(f"x and y must have at most MAX_POINTS = {MAX_POINTS} points (every window is fitted), "
+                         f"got {x.size}")
     count = x.size
     slopes: list[list[float | None]] = [[None] * count for _ in range(count)]
     for i in range(count):
@@ -76,14 +126,15 @@ def window_slopes(x, y) -> list[list[float | None]]:
             xs, ys = x[i:j + 1], y[i:j + 1]
             if np.ptp(xs) == 0:
                 raise ValueError("x must not repeat inside a window")
-            slopes[i][j] = float(np.polyfit(xs, ys, 1)[0])
+            slopes[i][j] = finite_result(f"the slope over points {i}..{j}", float(np.polyfit(xs, ys, 1)[0]),
+                                         "x or y too large")
     return slopes
 
 
 def fit(claim: str, quantity: str, resolution: str, values, x, y, window: int, label: str = "") -> RateFit:
     """Slopes of y against x (arrays over the resolutions ``values``, coarse to fine); the
     verdict uses the ``window`` finest points."""
-    values = finite_array(resolution, values)
+    values = finite_array(_text("resolution", resolution), values)
     window = integer_at_least("window", window, 2)
     if window > values.size:
         raise ValueError(f"window must not exceed the number of resolutions ({values.size}), got {window}")
@@ -96,7 +147,7 @@ def fit(claim: str, quantity: str, resolution: str, values, x, y, window: int, l
 
 def order(claim: str, resolution: str, values, errors, window: int, label: str = "") -> RateFit:
     """Order of convergence: slope of log(error) against log(resolution)."""
-    values = finite_array(resolution, values)
+    values = finite_array(_text("resolution", resolution), values)
     errors = finite_array("errors", errors)
     if np.any(values <= 0) or np.any(errors <= 0):
         raise ValueError("resolutions and errors must be positive to take logarithms")
@@ -108,11 +159,15 @@ class Recorder:
     """Collects the fits of one claims script, logs each table, writes them as JSON."""
 
     def __init__(self, log=print):
+        if not callable(log):
+            raise ParameterTypeError(f"log must be callable, got {log!r}")
         self.fits: list[RateFit] = []
         self._log = log
 
     def add(self, rate: RateFit) -> float:
         """Keep and log ``rate``; return its deciding slope."""
+        if not isinstance(rate, RateFit):
+            raise ParameterTypeError(f"rate must be a RateFit, got {type(rate).__name__}")
         self.fits.append(rate)
         self._log(rate.table())
         return rate.slope
@@ -122,7 +177,8 @@ class Recorder:
 
 
 def write_rates(path, fits) -> None:
-    path = Path(path)
+    path = _path("path", path)
+    fits = _listed("fits", fits, RateFit, "RateFit objects")
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_suffix(path.suffix + ".tmp")
     temporary.write_text(json.dumps([asdict(rate) for rate in fits], indent=1))
@@ -130,12 +186,24 @@ def write_rates(path, fits) -> None:
 
 
 def read_rates(path) -> list[RateFit]:
-    rows = json.loads(Path(path).read_text())
-    return [RateFit(**{**row, "values": tuple(row["values"]), "slopes": tuple(tuple(r) for r in row["slopes"])})
-            for row in rows]
+    path = _path("path", path)
+    try:
+        rows = json.loads(path.read_text())
+    except json.JSONDecodeError as error:
+        raise ValueError(f"{path} is not JSON: {error}") from None
+    if not isinstance(rows, list):
+        raise ValueError(f"{path} must hold a JSON list of rate fits")
+    fits = []
+    for index, row in enumerate(rows):
+        try:
+            fits.append(RateFit(**{**row, "values": tuple(row["values"]),
+                                   "slopes": tuple(tuple(r) for r in row["slopes"])}))
+        except (KeyError, TypeError) as error:
+            raise ValueError(f"{path}: entry {index} is not a rate fit ({error})") from None
+    return fits
 
 
 def merge_rates(sources, path) -> list[RateFit]:
-    fits = [rate for source in sources for rate in read_rates(source)]
+    fits = [rate for source in _listed("sources", sources, str | os.PathLike, "paths") for rate in read_rates(source)]
     write_rates(path, fits)
     return fits

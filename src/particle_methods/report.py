@@ -13,7 +13,7 @@
   three papers together (``\\claimcount{all.paper.pass}`` is the headline);
 - ``rates.tex``: every fitted rate, its pairwise slopes and the fit over every window (an appendix);
 - ``versions.tex``: the software versions table (a tabular);
-- ``commit.tex``: ``\\commithash`` and ``\\commitdate``, the commit the run was made from.
+- ``commit.tex``: ``\\builtfrom``, the commit the run was made from and its date.
 
 The article (``paper/ms.tex``) types no parameter or measured value of its own: it uses these
 macros.
@@ -171,9 +171,10 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir) -> None:
     lines = Path(versions_md).read_text().splitlines()
     fields = dict(line.split(": ", 1) for line in lines if line.startswith(("Commit", "Modified")))
     modified = " (with uncommitted changes)" if fields.get("Modified since the commit") == "yes" else ""
-    (outdir / "commit.tex").write_text(
-        f"\\newcommand{{\\commithash}}{{{tex(fields.get('Commit', 'unknown'))}{modified}}}\n"
-        f"\\newcommand{{\\commitdate}}{{{tex(fields.get('Commit date', 'unknown')[:10])}}}\n")
+    hash_, date = fields.get("Commit", "unknown"), fields.get("Commit date", "unknown")[:10]
+    built = (f"Built from commit \\texttt{{{tex(hash_)}}}{modified} of {tex(date)}" if hash_ != "unknown"
+             else "Built outside a git clone (commit unknown)")
+    (outdir / "commit.tex").write_text(f"\\newcommand{{\\builtfrom}}{{{built}}}\n")
     rows = [line for line in lines if re.match(r"\| [^-]", line)][1:]
     table = "".join(f"{tex(cells[1].strip())} & {tex(cells[2].strip())} \\\\\n"
                     for cells in (row.split("|") for row in rows))

@@ -34,6 +34,22 @@ def real_array(name: str, values) -> np.ndarray:
     return array.astype(np.float64, copy=False)
 
 
+def instance(name: str, value, kind):
+    """``value`` if it is an instance of ``kind`` (a type or a tuple of types), else a ParameterTypeError."""
+    if not isinstance(value, kind):
+        expected = kind.__name__ if isinstance(kind, type) else " or ".join(k.__name__ for k in kind)
+        raise ParameterTypeError(f"{name} must be of type {expected}, got {value!r}")
+    return value
+
+
+def finite_values(name: str, values) -> np.ndarray:
+    """``values`` of any shape (a number too) as float64, after checking type and finiteness."""
+    array = real_array(name, values)
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{name} contains NaN or infinite values")
+    return array
+
+
 def finite_array(name: str, values, ndim: int = 1) -> np.ndarray:
     """Return ``values`` as a float64 array after checking its type, rank and finiteness."""
     array = real_array(name, values)

@@ -77,7 +77,7 @@ def test_symmetric_data_stay_symmetric():
 
 
 def test_collapse_is_reported_with_its_step():
-    with pytest.raises(ValueError, match=r"collapsed or became non-finite at step \d+"):
+    with pytest.raises(ValueError, match=r"exceeds the stability bound .* at step \d+ .*: the particles collapse"):
         simulate("rho2", potential("power", a=1.5), 0.05, 0.05, 5.0)
 
 

@@ -12,6 +12,12 @@ Public entry points:
 - :func:`run_2d`, :func:`kernel_2d`: the 2D method and kernels of section 4.4 (closed forms or
   tabulated radial convolution); :func:`uniform_ring_radius`: stationary rings;
 - :func:`mass_defect`: mass conservation along trajectories with massless tracers.
+
+Every entry point checks its inputs (ValueError or TypeError naming the parameter) and its results
+(no NaN or inf: :func:`blowup_time`'s inf for a repulsive kernel, "never", is the one exception), and
+refuses work beyond the limits of :mod:`particle_methods.blob.checks` (particles, final time,
+right-hand sides of a solve, radial tables); the 1D particle method with |x|/2 stops at the first
+collision of two particles, where its ODE stops being defined.
 """
 
 from .exact import blowup_time, newtonian_exact, newtonian_exact_2d

@@ -7,42 +7,52 @@ attractive kernel |x|/2 (blow-up at t = 1/max rho0) and s = -1 for the repulsive
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from ..validation import finite_array, nonnegative
-from .initial import Data1D
+from ..validation import finite_array, finite_result, nonnegative, one_of
+from .initial import Data1D, as_data_1d, as_data_2d
 
 SIGNS = {"newtonian_attractive": 1.0, "newtonian_repulsive": -1.0}
 
 
 def blowup_time(data: Data1D, kernel: str) -> float:
-    """First time at which the exact solution stops being classical (inf when repulsive)."""
-    return 1.0 / data.maximum if SIGNS[kernel] > 0 else np.inf
+    """First time at which the exact solution stops being classical, 1/max rho0; ``math.inf`` (never)
+    for the repulsive kernel, the one non-finite value the package returns on purpose. ``data`` is a
+    :class:`~particle_methods.blob.initial.Data1D` or its name."""
+    data = as_data_1d(data)
+    return 1.0 / data.maximum if one_of("Newtonian kernel", kernel, SIGNS) > 0 else math.inf
 
 
 def newtonian_exact(data: Data1D, kernel: str, alpha, t: float):
-    """(X(alpha, t), rho(X(alpha, t), t)) for the Newtonian kernel ``kernel``."""
-    if kernel not in SIGNS:
-        raise ValueError(f"exact solutions exist for {sorted(SIGNS)}, not {kernel!r}")
+    """(X(alpha, t), rho(X(alpha, t), t)) for the Newtonian kernel ``kernel``, before the blow-up time."""
+    data = as_data_1d(data)
+    sign = one_of("Newtonian kernel", kernel, SIGNS)
     t = nonnegative("t", t)
     if t >= blowup_time(data, kernel):
         raise ValueError(f"t = {t} is past the blow-up time {blowup_time(data, kernel)} of the exact solution")
     alpha = finite_array("alpha", alpha)
-    sign = SIGNS[kernel]
     rho0 = data(alpha)
     positive = rho0 > 0
     density = np.zeros_like(alpha)
     density[positive] = 1.0 / (1.0 / rho0[positive] - sign * t)
-    return alpha - sign * t * data.mass_from_origin(alpha), density
+    position = alpha - sign * t * data.mass_from_origin(alpha)
+    cause = f"t = {t} is too large for these alpha"
+    return finite_result("X(alpha, t)", position, cause), finite_result("rho(X(alpha, t), t)", density, cause)
 
 
 def newtonian_exact_2d(data, points, t: float):
-    """Attractive 2D Newtonian kernel log|x|/(2 pi), radial data: |X|^2 = r0^2 - 2 t m(r0) (mass
-    coordinates, section 4.1) along rays, rho = (1/rho0 - t)^{-1}; blow-up at t = 1/max rho0."""
+    """Attractive 2D Newtonian kernel log|x|/(2 pi), radial data ('regular' or 'disk', or their names):
+    |X|^2 = r0^2 - 2 t m(r0) (mass coordinates, section 4.1) along rays, rho = (1/rho0 - t)^{-1};
+    blow-up at t = 1/max rho0 over ``points`` (N, 2)."""
+    data = as_data_2d(data)
     t = nonnegative("t", t)
     points = finite_array("points", points, ndim=2)
+    if points.shape[0] == 0 or points.shape[1] != 2:
+        raise ValueError(f"points must have shape (N, 2) with N >= 1, got {points.shape}")
     rho0 = data(points)
-    if t >= 1.0 / rho0.max():
+    if t * rho0.max() >= 1.0:
         raise ValueError(f"t = {t} is past the blow-up time {1.0 / rho0.max()} of the exact solution")
     r0 = np.linalg.norm(points, axis=1)
     r = np.sqrt(np.maximum(r0**2 - 2.0 * t * data.mass_from_origin(r0), 0.0))
@@ -50,4 +60,5 @@ def newtonian_exact_2d(data, points, t: float):
     density = np.zeros_like(r0)
     inside = rho0 > 0
     density[inside] = 1.0 / (1.0 / rho0[inside] - t)
-    return points * scale[:, None], density
+    cause = f"t = {t} or the points are too large"
+    return finite_result("X(r0, t)", points * scale[:, None], cause), finite_result("rho", density, cause)

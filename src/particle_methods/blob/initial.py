@@ -1,7 +1,9 @@
 """Initial data of section 4.2-4.3 on [-1, 1] and the particles of Definition 2.2.
 
 (4.3) (1 - x^2)^20, (4.4) the indicator of [-1, 1], (4.5) (1 - x^2)^10, none normalised,
-as in the paper. Particles sit at the grid points jh of [-1, 1] with masses rho0(jh) h^d.
+as in the paper. Particles sit at the grid points jh of [-1, 1] with masses rho0(jh) h^d; the
+grids hold at most :data:`~particle_methods.blob.checks.MAX_PARTICLES` points (1D) or nodes
+around the data (2D, four times as many).
 """
 
 from __future__ import annotations
@@ -11,7 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import polynomial as P
 
-from ..validation import one_of, positive
+from ..validation import finite_values, instance, integer_at_least, one_of, positive
+from .checks import MAX_DATA_POWER, MAX_PARTICLES
 
 
 @dataclass(frozen=True)
@@ -21,8 +24,13 @@ class Data1D:
     name: str
     power: int
 
+    def __post_init__(self):
+        instance("name", self.name, str)
+        integer_at_least("power", self.power, 0, MAX_DATA_POWER)
+
     def __call__(self, x):
-        x = np.asarray(x, dtype=np.float64)
+        """rho0 at the points ``x`` (any shape)."""
+        x = finite_values("x", x)
         return np.where(np.abs(x) <= 1.0, np.clip(1.0 - x * x, 0.0, None) ** self.power, 0.0)
 
     @property
@@ -31,7 +39,7 @@ class Data1D:
 
     def mass_from_origin(self, x):
         """m(x) = int_0^x rho0 (odd in x), exactly: the antiderivative of the polynomial."""
-        x = np.clip(np.asarray(x, dtype=np.float64), -1.0, 1.0)
+        x = np.clip(finite_values("x", x), -1.0, 1.0)
         coefficients = P.polypow([1.0, 0.0, -1.0], self.power)
         return P.polyval(x, P.polyint(coefficients))
 
@@ -45,13 +53,24 @@ def data_1d(name: str) -> Data1D:
     return one_of("initial data", name, DATA_1D)
 
 
+def as_data_1d(data) -> Data1D:
+    """``data`` itself or the data named by it (see :func:`data_1d`)."""
+    return data_1d(data) if isinstance(data, str) else instance("data", data, Data1D)
+
+
 def grid_1d(h: float) -> np.ndarray:
     """Grid points jh of [-1, 1], as a column (N, 1); h must divide 1 for the ends to be nodes."""
     h = positive("h", h)
+    if 2.0 / h + 1.0 > MAX_PARTICLES:
+        raise ValueError(f"h = {h} puts {2.0 / h + 1.0:.4g} particles on [-1, 1], more than MAX_PARTICLES = "
+                         f"{MAX_PARTICLES} (a limit on the work of one run)")
     half = int(round(1.0 / h))
     if abs(half * h - 1.0) > 1e-9:
         raise ValueError(f"h = {h} must divide 1 so that the grid hZ contains the ends of [-1, 1]")
     return (h * np.arange(-half, half + 1))[:, None]
+
+
+_NAMES_2D = ("regular", "disk", "quartic", "bump", "star")
 
 
 @dataclass(frozen=True)
@@ -61,8 +80,15 @@ class Data2D:
     name: str
     radius: float
 
+    def __post_init__(self):
+        one_of("2D data", self.name, dict.fromkeys(_NAMES_2D))
+        positive("radius", self.radius)
+
     def __call__(self, points):
-        points = np.asarray(points, dtype=np.float64)
+        """rho0 at ``points`` (..., 2)."""
+        points = finite_values("points", points)
+        if points.ndim == 0 or points.shape[-1] != 2:
+            raise ValueError(f"points must have shape (..., 2), got {points.shape}")
         r2 = (points**2).sum(axis=-1)
         if self.name == "regular":          # (1 - |x|^2)_+^2
             return np.clip(1.0 - r2, 0.0, None) ** 2
@@ -73,14 +99,13 @@ class Data2D:
         if self.name == "bump":             # exp(1/(|x|^2 - 1)) with unit mass
             inside = r2 < 1.0
             return np.where(inside, np.exp(1.0 / np.where(inside, r2 - 1.0, -1.0)), 0.0) / _BUMP_MASS
-        if self.name == "star":             # (4.6): 1 for r < (sin^2(5 theta/2) + 1/2)/4
-            theta = np.arctan2(points[..., 1], points[..., 0])
-            return np.where(np.sqrt(r2) < (np.sin(2.5 * theta) ** 2 + 0.5) / 4.0, 1.0, 0.0)
-        raise ValueError(f"unknown 2D data {self.name!r}")
+        # star, (4.6): 1 for r < (sin^2(5 theta/2) + 1/2)/4
+        theta = np.arctan2(points[..., 1], points[..., 0])
+        return np.where(np.sqrt(r2) < (np.sin(2.5 * theta) ** 2 + 0.5) / 4.0, 1.0, 0.0)
 
     def mass_from_origin(self, r):
         """m(r) = int_0^r s rho0(s) ds for the radial data with exact solutions (regular, disk)."""
-        r = np.clip(np.asarray(r, dtype=np.float64), 0.0, 1.0)
+        r = np.clip(finite_values("r", r), 0.0, 1.0)
         if self.name == "regular":
             return (1.0 - (1.0 - r**2) ** 3) / 6.0
         if self.name == "disk":
@@ -95,8 +120,7 @@ def _bump_mass() -> float:
 
 
 _BUMP_MASS = _bump_mass()
-DATA_2D = {name: Data2D(name, 0.375 if name == "star" else 1.0) for name in ("regular", "disk", "quartic", "bump",
-                                                                             "star")}
+DATA_2D = {name: Data2D(name, 0.375 if name == "star" else 1.0) for name in _NAMES_2D}
 
 
 def data_2d(name: str) -> Data2D:
@@ -105,9 +129,21 @@ def data_2d(name: str) -> Data2D:
     return one_of("2D data", name, DATA_2D)
 
 
+def as_data_2d(data) -> Data2D:
+    """``data`` itself or the data named by it (see :func:`data_2d`)."""
+    return data_2d(data) if isinstance(data, str) else instance("data", data, Data2D)
+
+
 def grid_2d(h: float, data: Data2D) -> np.ndarray:
-    """Points of hZ^2 where rho0 > 0, shape (N, 2)."""
+    """Points of hZ^2 where rho0 > 0, shape (N, 2); ``data`` or its name, 0 < h <= its radius."""
+    data = as_data_2d(data)
     h = positive("h", h)
+    if h > data.radius:
+        raise ValueError(f"h = {h} must not exceed the radius {data.radius} of the data {data.name!r}")
+    side = 2.0 * np.ceil(data.radius / h) + 3.0  # nodes on a side of the grid's box
+    if side > 2.0 * np.sqrt(MAX_PARTICLES):
+        raise ValueError(f"h = {h} gives {side:.4g}^2 grid nodes around the data, more than 4 MAX_PARTICLES = "
+                         f"{4 * MAX_PARTICLES} (a limit on the work of one run)")
     half = int(np.ceil(data.radius / h)) + 1
     axis = h * np.arange(-half, half + 1)
     points = np.stack(np.meshgrid(axis, axis, indexing="ij"), axis=-1).reshape(-1, 2)

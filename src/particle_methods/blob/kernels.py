@@ -42,13 +42,30 @@ import numpy as np
 from numba import prange
 
 from ..jit import njit
-from ..validation import finite_number, one_of
+from ..validation import (
+    finite_array,
+    finite_result,
+    in_interval,
+    instance,
+    integer_at_least,
+    one_of,
+    positive,
+    real_array,
+    same_length,
+)
 from . import sums_1d
+from .checks import MAX_TABLE_WORK
 from .mollifiers import Mollifier
+from .radial import RadialTable, tabulate
 from .special import EULER_GAMMA, dawson_and_slope, exp1
 from .vector_exp import Z_LIMIT, exp_minus_and_complement
 
 GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG, GAUSS_LOG_2D, TABLE, EXP, GAUSS_LOG_1D = 0, 1, 2, 3, 4, 5, 6, 7
+#: The dimensions each kind of term is written for (its Laplacian, or its Gaussian convolution, depends on d).
+KIND_DIMENSIONS = {GAUSS_ABS_1D: (1,), GAUSS_CUBIC_1D: (1,), GAUSS_LOG_1D: (1,), POWER: (1, 2, 3), LOG: (1, 2, 3),
+                   GAUSS_LOG_2D: (2,), TABLE: (2,), EXP: (2,)}
+#: Distances beyond this many steps of a radial table would overflow its integer index.
+_TABLE_REACH = 2.0**40
 _SQRT_PI = math.sqrt(math.pi)
 #: Beyond this many widths erfc and the Gaussian are below 1e-17 relative: erf = 1, e = 0 exactly
 #: in double precision, and the mollified kernel equals the raw one.
@@ -473,10 +490,10 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps)
     if positions.shape[1] == 2 and ((kinds.size == 2 and np.all(kinds == GAUSS_LOG_2D))
                                     or (kinds.size == 1 and kinds[0] == LOG)):
         return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters)
+    if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > _TABLE_REACH * steps.min():
+        raise ValueError("positions spread over more than 2^40 steps of the kernel's radial table")
     if positions.shape[1] == 2 and tiled_2d_supported(kinds, parameters):
         _check_span(positions, parameters[kinds == GAUSS_LOG_2D])
-        if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > 2.0**40 * steps.min():
-            raise ValueError("positions spread over more than 2^40 steps of the kernel's radial table")
         _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, 2, tables, steps)
         return _tiled_2d_sums(positions, masses, (0.0,) * 7, (kinds, coefficients, parameters, tables, steps),
                               self_lap)
@@ -517,6 +534,43 @@ class Kernel:
     parameters: tuple[float, ...]
     tables: tuple = ()
 
+    def __post_init__(self):
+        """Check the terms before any compiled sum reads them; store them as tuples of Python numbers."""
+        instance("name", self.name, str)
+        dimension = integer_at_least("dimension", self.dimension, 1, 3)
+        kinds = real_array("kinds", self.kinds)
+        coefficients = finite_array("coefficients", self.coefficients)
+        parameters = finite_array("parameters", self.parameters)
+        tables = tuple(instance("tables", self.tables, (tuple, list)))
+        for table in tables:
+            instance("tables", table, RadialTable)
+        if kinds.ndim != 1 or not np.all(np.isin(kinds, list(KIND_DIMENSIONS))):
+            raise ValueError(f"kinds must be a sequence of term kinds {sorted(KIND_DIMENSIONS)}, got {self.kinds!r}")
+        if same_length(kinds=kinds, coefficients=coefficients, parameters=parameters) == 0:
+            raise ValueError("a kernel needs at least one term")
+        for kind, parameter in zip(kinds.astype(int), parameters):
+            if dimension not in KIND_DIMENSIONS[kind]:
+                raise ValueError(f"terms of kind {kind} are written for dimension {KIND_DIMENSIONS[kind]}, "
+                                 f"not {dimension}")
+            if kind == TABLE and parameter not in range(len(tables)):
+                raise ValueError(f"the parameter of a TABLE term must index one of the {len(tables)} tables, "
+                                 f"got {parameter}")
+            if kind not in (LOG, TABLE) and parameter <= 0:
+                raise ValueError(f"the parameter of a term of kind {kind} (width, power or length) must be positive, "
+                                 f"got {parameter}")
+        if len({table.gradient.size for table in tables}) > 1:
+            raise ValueError("the radial tables of one kernel must have the same number of nodes")
+        object.__setattr__(self, "kinds", tuple(int(kind) for kind in kinds))
+        object.__setattr__(self, "coefficients", tuple(float(c) for c in coefficients))
+        object.__setattr__(self, "parameters", tuple(float(p) for p in parameters))
+        object.__setattr__(self, "tables", tables)
+
+    @property
+    def jumps_at_origin(self) -> bool:
+        """Whether grad K jumps or blows up at 0 (a raw |x|^a/a with a <= 1, log|x| or e^{-|x|/lambda}
+        term): the particle method's ODE then stops being defined where two particles meet."""
+        return any(kind in (LOG, EXP) or (kind == POWER and a <= 1.0) for kind, a in zip(self.kinds, self.parameters))
+
     @property
     def has_potential(self) -> bool:
         """Whether K itself is known (tabulated terms and the mollified 1D log kernel carry only grad
@@ -537,14 +591,20 @@ class Kernel:
                 np.array(self.parameters, dtype=np.float64), tables, steps)
 
     def profile(self, r):
-        """(k, g, l) at the distances r, vectorised (for plots and tests); k is NaN for tabulated kernels."""
+        """(k, g, l) at the distances r >= 0 (any shape), vectorised (for plots and tests): K = k(|x|),
+        grad K = x g(|x|), Delta K = l(|x|); k is None when K itself is not known (:attr:`has_potential`)."""
+        r = in_interval("r", r, 0.0, np.inf)
         kinds, coefficients, parameters, tables, steps = self.arrays()
-        values = []
-        for x in np.ravel(r):
-            g, lap = _profile_forces(kinds, coefficients, parameters, float(x), self.dimension, tables, steps)
-            k = _profile_potential(kinds, coefficients, parameters, float(x)) if self.has_potential else np.nan
-            values.append((k, g, lap))
-        return tuple(np.reshape([v[i] for v in values], np.shape(r)) for i in range(3))
+        if self.tables and r.size and r.max() > _TABLE_REACH * steps.min():
+            raise ValueError(f"r must stay within 2^40 steps of the kernel's radial table, got {r.max()}")
+        cause = "the kernel overflows at these distances"
+        forces = [_profile_forces(kinds, coefficients, parameters, float(x), self.dimension, tables, steps)
+                  for x in r.ravel()]
+        g, lap = np.moveaxis(finite_result("grad K and Delta K", np.reshape(forces, r.shape + (2,)), cause), -1, 0)
+        if not self.has_potential:
+            return None, g, lap
+        k = np.reshape([_profile_potential(kinds, coefficients, parameters, float(x)) for x in r.ravel()], r.shape)
+        return finite_result("K", k, cause), g, lap
 
 
 #: 1D kernels of section 4: name -> (sign, kind of its Gaussian convolution, power a).
@@ -566,10 +626,9 @@ def kernel_1d(name: str, mollifier: Mollifier | None = None, delta: float | None
             return Kernel(name, 1, (LOG,), (sign,), (0.0,))
         # |x|/2 for the Newtonian kernels, |x|^3/3 for the cubic one.
         return Kernel(name, 1, (POWER,), (sign * (0.5 if a == 1.0 else 1.0),), (a,))
-    if mollifier.dimension != 1:
+    if instance("mollifier", mollifier, Mollifier).dimension != 1:
         raise ValueError("a 1D kernel needs a 1D mollifier")
-    if delta is None or finite_number("delta", delta) <= 0:
-        raise ValueError(f"delta must be positive, got {delta}")
+    delta = positive("delta", delta)
     widths = mollifier.scaled_widths(delta)
     # The Gaussian terms carry the kernel's own factor (1/2, 1/3 or 1/(2 pi)): only sign and weights remain.
     return Kernel(f"{name} (m = {mollifier.order}, delta = {delta:.4g})", 1,
@@ -599,12 +658,22 @@ def _radial_laplacian(kind, parameter):
     raise ValueError(f"no radial Laplacian for term kind {kind}")
 
 
+def _check_table(delta, radius, points):
+    """A radial table on [0, radius] with ``points`` nodes must resolve and cover psi_delta (step <= delta <=
+    radius), within :data:`~particle_methods.blob.checks.MAX_TABLE_WORK`."""
+    step = radius / (points - 1)
+    if not step <= delta <= radius:
+        raise ValueError(f"delta = {delta} must lie between the radial table's step {step:.4g} and its radius {radius} "
+                         "(table_radius, table_points)")
+    if points * radius / delta > MAX_TABLE_WORK:
+        raise ValueError(f"table_points x table_radius / delta = {points * radius / delta:.4g} exceeds MAX_TABLE_WORK "
+                         f"= {MAX_TABLE_WORK:g} (a limit on the work of the radial quadrature)")
+
+
 @functools.lru_cache(maxsize=32)
 def _mollified_table(kind, parameter, mollifier, delta, radius, points):
     """The radial table of one unmollified term (without its coefficient), built once per process:
     the two Morse kernels share theirs, and the runs of a figure rebuild the same kernel."""
-    from .radial import tabulate
-
     return tabulate(_radial_laplacian(kind, parameter), mollifier, delta, radius, points)
 
 
@@ -615,18 +684,20 @@ def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None
     Mollification: the log term becomes Gaussian terms in closed form; a power |x|^a/a with
     a even and a - 1 < m is unchanged (its gradient and Laplacian are polynomials of degree
     below m, Remark 3.4); every other term is tabulated by numerical radial convolution
-    (:func:`particle_methods.blob.radial.tabulate`) on [0, table_radius].
+    (:func:`particle_methods.blob.radial.tabulate`) on [0, table_radius] with table_points nodes, which
+    must resolve and cover psi_delta (step <= delta <= table_radius).
     """
     terms = one_of("2D kernel", name, KERNELS_2D)
+    table_radius = positive("table_radius", table_radius)
+    table_points = integer_at_least("table_points", table_points, 3, int(MAX_TABLE_WORK))
     if mollifier is None:
         if delta is not None:
             raise ValueError("delta needs a mollifier")
         kinds, coefficients, parameters = zip(*terms)
         return Kernel(name, 2, kinds, coefficients, parameters)
-    if mollifier.dimension != 2:
+    if instance("mollifier", mollifier, Mollifier).dimension != 2:
         raise ValueError("a 2D kernel needs a 2D mollifier")
-    if delta is None or finite_number("delta", delta) <= 0:
-        raise ValueError(f"delta must be positive, got {delta}")
+    delta = positive("delta", delta)
     kinds, coefficients, parameters, tables = [], [], [], []
     for kind, coefficient, parameter in terms:
         if kind == LOG:
@@ -639,8 +710,8 @@ def kernel_2d(name: str, mollifier: Mollifier | None = None, delta: float | None
             coefficients.append(coefficient)
             parameters.append(parameter)
         else:
-            tables.append(_mollified_table(kind, float(parameter), mollifier, float(delta), float(table_radius),
-                                           int(table_points)))
+            _check_table(delta, table_radius, table_points)
+            tables.append(_mollified_table(kind, float(parameter), mollifier, delta, table_radius, table_points))
             kinds.append(TABLE)
             coefficients.append(coefficient)
             parameters.append(float(len(tables) - 1))

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import integer_at_least, positive
+from ..validation import finite_array, finite_result, finite_values, integer_at_least, positive, same_length
 
 
 @dataclass(frozen=True)
@@ -31,17 +31,28 @@ class Mollifier:
     weights: tuple[float, ...]
     widths: tuple[float, ...]
 
+    def __post_init__(self):
+        integer_at_least("order", self.order, 1)
+        integer_at_least("dimension", self.dimension, 1, 3)
+        weights, widths = finite_array("weights", self.weights), finite_array("widths", self.widths)
+        if same_length(weights=weights, widths=widths) == 0 or np.any(widths <= 0):
+            raise ValueError(f"a mollifier needs at least one Gaussian and positive widths, got {self.widths}")
+        # Tuples of floats: the mollifier is a key of the radial tables' cache.
+        object.__setattr__(self, "weights", tuple(float(w) for w in weights))
+        object.__setattr__(self, "widths", tuple(float(s) for s in widths))
+
     def scaled_widths(self, delta: float) -> np.ndarray:
         """Widths of the Gaussians of psi_delta."""
-        return np.asarray(self.widths) * positive("delta", delta)
+        widths = np.asarray(self.widths) * positive("delta", delta)
+        return finite_result("the widths of psi_delta", widths, f"delta = {delta} is too large")
 
     def __call__(self, r, delta: float = 1.0):
-        """psi_delta at distance r from the origin."""
-        r = np.asarray(r, dtype=np.float64)
+        """psi_delta at distance r from the origin (any shape)."""
+        r = finite_values("r", r)
         total = np.zeros_like(r)
         for weight, width in zip(self.weights, self.scaled_widths(delta)):
             total += weight * np.exp(-(r / width) ** 2) / (np.sqrt(np.pi) * width) ** self.dimension
-        return total
+        return finite_result("psi_delta", total, f"delta = {delta} is too small for double precision")
 
 
 MOLLIFIERS = {
@@ -54,6 +65,7 @@ MOLLIFIERS = {
 def mollifier(order: int, dimension: int = 1) -> Mollifier:
     """The paper's mollifier of ``order`` m in ``dimension`` d: (4.1) for d = 1, (4.2) for d = 2."""
     integer_at_least("mollifier order m", order, 1)
+    integer_at_least("dimension d", dimension, 1)
     try:
         return MOLLIFIERS[(dimension, order)]
     except KeyError:

@@ -21,7 +21,16 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import integrate, special
 
-from ..validation import integer_at_least, positive
+from ..validation import (
+    ParameterTypeError,
+    finite_array,
+    finite_result,
+    instance,
+    integer_at_least,
+    positive,
+    same_length,
+)
+from .checks import MAX_TABLE_WORK
 from .mollifiers import Mollifier
 
 
@@ -32,6 +41,12 @@ class RadialTable:
     radius: float
     gradient: np.ndarray
     laplacian: np.ndarray
+
+    def __post_init__(self):
+        positive("radius", self.radius)
+        for name in ("gradient", "laplacian"):
+            object.__setattr__(self, name, finite_array(name, getattr(self, name)))
+        integer_at_least("the number of table nodes", same_length(gradient=self.gradient, laplacian=self.laplacian), 2)
 
     @property
     def step(self) -> float:
@@ -55,18 +70,27 @@ def mollified_laplacian(laplacian, mollifier: Mollifier, delta: float, r) -> np.
 
 
 def tabulate(laplacian, mollifier: Mollifier, delta: float, radius: float = 5.0, points: int = 2001) -> RadialTable:
-    """Tables of g and L_delta for a radial 2D kernel given by its Laplacian (read-only arrays)."""
-    if mollifier.dimension != 2:
+    """Tables of g and L_delta for a radial 2D kernel given by its Laplacian (read-only arrays); a
+    ValueError if they overflow (see :func:`~particle_methods.blob.kernels.kernel_2d` for the ranges
+    of delta, radius and points that are accepted there)."""
+    if not callable(laplacian):
+        raise ParameterTypeError(f"laplacian must be a function of r, got {laplacian!r}")
+    if instance("mollifier", mollifier, Mollifier).dimension != 2:
         raise ValueError("radial tables are built for 2D mollifiers")
     positive("delta", delta)
     radius = positive("radius", radius)
-    points = integer_at_least("points", points, 3)
+    points = integer_at_least("points", points, 3, int(MAX_TABLE_WORK))
     r = np.linspace(0.0, radius, points)
-    lap = mollified_laplacian(laplacian, mollifier, delta, r)
+    cause = f"the mollified kernel overflows for delta = {delta} on a table of radius {radius}"
+    try:
+        lap = mollified_laplacian(laplacian, mollifier, delta, r)
+    except OverflowError:
+        raise ValueError(f"the radial table is not finite: {cause}") from None
     flux = integrate.cumulative_simpson(r * lap, x=r, initial=0.0)
     gradient = np.empty_like(r)
     gradient[1:] = flux[1:] / r[1:] ** 2
     gradient[0] = lap[0] / 2.0
+    finite_result("the radial table", [gradient, lap], cause)
     gradient.flags.writeable = False
     lap.flags.writeable = False
     return RadialTable(radius, gradient, lap)

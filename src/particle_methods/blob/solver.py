@@ -8,7 +8,12 @@ grad K(0) := 0 (its density exists only where Delta K is a function).
 
 The ODE system is solved by scipy's DOP853 (explicit Runge-Kutta of order 8 with
 step control) at tolerances far below the method's error: the claims check that
-tightening them does not change the measured errors.
+tightening them does not change the measured errors. A run holds at most
+:data:`~particle_methods.blob.checks.MAX_PARTICLES` particles, ends by
+:data:`~particle_methods.blob.checks.MAX_TIME` and is refused past
+:data:`~particle_methods.blob.checks.MAX_EVALUATIONS` right-hand sides. In 1D, the particle
+method with a kernel whose gradient jumps at 0 (|x|/2) is defined only up to the first
+collision of two particles: the solve stops there with a ValueError.
 """
 
 from __future__ import annotations
@@ -18,80 +23,177 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ..validation import finite_array, positive
-from .initial import Data1D, data_1d, data_2d, grid_1d, grid_2d
+from ..validation import (
+    finite_array,
+    finite_number,
+    finite_result,
+    instance,
+    integer_at_least,
+    nonnegative,
+    one_of,
+    positive,
+    same_length,
+)
+from .checks import MAX_EVALUATIONS, MAX_PARTICLES, MAX_STORED, MIN_DELTA_OVER_H, output_times
+from .initial import as_data_1d, as_data_2d, grid_1d, grid_2d
 from .kernels import Kernel, kernel_1d, kernel_2d, pair_energy, pair_sums
 from .mollifiers import mollifier
+
+#: The two methods of :func:`run_1d` and :func:`run_2d`.
+METHODS = {"blob": "K_delta = K * psi_delta, delta = h^q (Definition 2.2)", "particle": "K with grad K(0) := 0"}
+#: Relative tolerances scipy's DOP853 accepts without raising them (100 machine epsilons) up to 1.
+RTOL_RANGE = (100 * np.finfo(float).eps, 1.0)
 
 
 @dataclass(frozen=True)
 class BlobRun:
-    """Trajectories (times, N, d), densities (times, N) or None, masses and initial points."""
+    """Trajectories (times, N, d), densities (times, N) or None, masses (N,), the grid step h (None
+    when the particles are not on a grid) and the number of right-hand sides evaluated."""
 
     kernel: Kernel
-    h: float
+    h: float | None
     times: np.ndarray
     positions: np.ndarray
     densities: np.ndarray | None
     masses: np.ndarray
     evaluations: int
 
+    def __post_init__(self):
+        """Check types, shapes and finiteness (a run never holds NaN or inf); store float arrays."""
+        kernel = instance("kernel", self.kernel, Kernel)
+        if self.h is not None:
+            positive("h", self.h)
+        integer_at_least("evaluations", self.evaluations, 0)
+        times = output_times(self.times)
+        positions = finite_array("positions", self.positions, ndim=3)
+        masses = finite_array("masses", self.masses)
+        expected = (times.size, masses.size, kernel.dimension)
+        if positions.shape != expected:
+            raise ValueError(f"positions must have shape (times, N, d) = {expected}, got {positions.shape}")
+        if self.densities is not None:
+            densities = finite_array("densities", self.densities, ndim=2)
+            if densities.shape != positions.shape[:2]:
+                raise ValueError(f"densities must have shape (times, N) = {positions.shape[:2]}, got {densities.shape}")
+            object.__setattr__(self, "densities", densities)
+        for name, value in (("times", times), ("positions", positions), ("masses", masses)):
+            object.__setattr__(self, name, value)
+
     def energies(self) -> np.ndarray:
         """E_delta of (2.4) along the run (the blob kernel's own K_delta)."""
         if not self.kernel.has_potential:
             raise ValueError(f"the energy needs K_delta itself, which {self.kernel.name} does not tabulate")
         arrays = self.kernel.arrays()
-        return np.array([pair_energy(x, self.masses, *arrays) for x in self.positions])
+        energies = np.array([pair_energy(x, self.masses, *arrays) for x in self.positions])
+        return finite_result("the energy E_delta", energies, "K_delta overflows at these positions")
+
+
+def _collision_event(points, kernel: Kernel):
+    """For the 1D particle method with a kernel whose gradient jumps at 0: the smallest gap between
+    particles that are distinct neighbours at t = 0, a terminal event of solve_ivp when it reaches 0.
+    Two particles then meet, and the velocities of Definition 2.2 with K for K_delta jump as they
+    cross: the ODE has no classical solution past that time (the solver would chatter). None otherwise."""
+    if kernel.dimension != 1 or not kernel.jumps_at_origin:
+        return None
+    order = np.argsort(points[:, 0], kind="stable")
+    distinct = np.diff(points[order, 0]) > 0
+    left, right = order[:-1][distinct], order[1:][distinct]
+    if left.size == 0:
+        return None
+
+    def gap(_, state):
+        return np.min(state[right] - state[left])
+
+    gap.terminal, gap.direction = True, -1
+    return gap
 
 
 def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, with_density: bool = True,
                         rtol: float = 1e-12, atol: float = 1e-14, h: float | None = None) -> BlobRun:
-    """Integrate Definition 2.2 for ``kernel`` from particles at ``points`` (N, d)."""
+    """Integrate Definition 2.2 for ``kernel`` from particles at ``points`` (N, d) with densities0 and
+    masses (N,): dX_i/dt = -sum_j m_j grad K(X_i - X_j) and, ``with_density``,
+    d rho_i/dt = -div v_i rho_i, at the output ``times`` (strictly increasing from t >= 0; a single
+    time 0 returns the initial state). Raises ValueError beyond the limits of
+    :mod:`~particle_methods.blob.checks` and at the first collision of a 1D particle method whose
+    kernel's gradient jumps at 0."""
+    kernel = instance("kernel", kernel, Kernel)
     points = finite_array("points", points, ndim=2)
-    masses = finite_array("masses", masses)
-    times = finite_array("times", times)
-    if np.any(np.diff(times) < 0) or times[0] < 0:
-        raise ValueError("times must be non-negative and sorted")
-    rtol, atol = positive("rtol", rtol), positive("atol", atol)
     n, dimension = points.shape
-    arrays = kernel.arrays()
-    count = [0]
+    if dimension != kernel.dimension:
+        raise ValueError(f"points must have shape (N, {kernel.dimension}) for the kernel {kernel.name}, "
+                         f"got {points.shape}")
+    if not 1 <= n <= MAX_PARTICLES:
+        raise ValueError(f"a run takes 1 to MAX_PARTICLES = {MAX_PARTICLES} particles (a limit on its work), got {n}")
+    densities0, masses = finite_array("densities0", densities0), finite_array("masses", masses)
+    same_length(points=points[:, 0], densities0=densities0, masses=masses)
+    if np.any(masses < 0):
+        raise ValueError("masses must be non-negative")
+    times = output_times(times)
+    if times.size * n * (dimension + 1) > MAX_STORED:
+        raise ValueError(f"a run of {n} particles at {times.size} times stores more than MAX_STORED = {MAX_STORED} "
+                         "values (a limit on the memory of one run)")
+    instance("with_density", with_density, (bool, np.bool_))
+    rtol = finite_number("rtol", rtol)
+    if not RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]:
+        raise ValueError(f"rtol must lie in [{RTOL_RANGE[0]:.3g}, {RTOL_RANGE[1]:g}], got {rtol}")
+    atol = positive("atol", atol)
+    h = None if h is None else positive("h", h)
+    if times[-1] == 0.0:
+        return BlobRun(kernel, h, times, points[None], densities0[None] if with_density else None, masses, 0)
 
-    def rhs(_, state):
-        count[0] += 1
+    arrays = kernel.arrays()
+    evaluations = 0
+
+    def rhs(t, state):
+        nonlocal evaluations
+        evaluations += 1
+        if evaluations > MAX_EVALUATIONS:
+            raise ValueError(f"the ODE solve needs more than MAX_EVALUATIONS = {MAX_EVALUATIONS} right-hand sides "
+                             f"(stopped at t = {t:.6g} of {times[-1]:.6g}): the system is too stiff for these "
+                             "tolerances or the solver stalls")
         x = state[: n * dimension].reshape(n, dimension)
         velocity, divergence = pair_sums(x, masses, *arrays)
         if not with_density:
-            return velocity.ravel()
-        return np.concatenate([velocity.ravel(), -divergence * state[n * dimension:]])
+            derivative = velocity.ravel()
+        else:
+            derivative = np.concatenate([velocity.ravel(), -divergence * state[n * dimension:]])
+        return finite_result(f"the right-hand side at t = {t:.6g}", derivative,
+                             "the velocities or densities overflow (positions, masses or the kernel too large)")
 
     start = points.ravel() if not with_density else np.concatenate([points.ravel(), densities0])
-    solution = solve_ivp(rhs, (0.0, times[-1]), start, method="DOP853", t_eval=times, rtol=rtol, atol=atol)
+    collision = _collision_event(points, kernel)
+    solution = solve_ivp(rhs, (0.0, times[-1]), start, method="DOP853", t_eval=times, rtol=rtol, atol=atol,
+                         events=collision)
+    if solution.status == 1:
+        raise ValueError(f"two particles collide at t = {solution.t_events[0][0]:.6g}: the particle method with the "
+                         f"kernel {kernel.name}, whose gradient jumps at 0, is defined only up to the first collision; "
+                         "ask for times before it")
     if not solution.success:
         raise ValueError(f"the ODE integrator failed: {solution.message}")
     states = solution.y.T
     positions = states[:, : n * dimension].reshape(times.size, n, dimension)
     densities = states[:, n * dimension:] if with_density else None
-    return BlobRun(kernel, h if h is not None else np.nan, times, positions, densities, masses, count[0])
+    return BlobRun(kernel, h, times, positions, densities, masses, evaluations)
+
+
+def _exponent_q(q) -> float:
+    """The exponent of delta = h^q, 1/2 < q < 1 as in Theorem 3.8."""
+    q = finite_number("q", q)
+    if not 0.5 < q < 1.0:
+        raise ValueError(f"q must lie in (1/2, 1), got {q}")
+    return q
 
 
 def setup_1d(data, kernel: str, h: float, *, method: str = "blob", order: int = 4, q: float = 0.9):
     """(points (N, 1), rho0, masses, kernel, with_density) of the 1D blob or particle method."""
-    if isinstance(data, str):
-        data = data_1d(data)
-    if not isinstance(data, Data1D):
-        raise ValueError(f"data must be Data1D or its name, got {data!r}")
+    data = as_data_1d(data)
+    one_of("method", method, METHODS)
+    psi, q = mollifier(order, 1), _exponent_q(q)
     points = grid_1d(h)
     rho0 = data(points[:, 0])
     if method == "blob":
-        q = float(q)
-        if not 0.5 < q < 1.0:
-            raise ValueError(f"q must lie in (1/2, 1), got {q}")
-        return points, rho0, rho0 * h, kernel_1d(kernel, mollifier(order, 1), h**q), True
-    if method == "particle":
-        # Delta K is a Dirac mass for the Newtonian kernels: no density.
-        return points, rho0, rho0 * h, kernel_1d(kernel), kernel == "cubic"
-    raise ValueError(f"unknown method {method!r}: expected 'blob' or 'particle'")
+        return points, rho0, rho0 * h, kernel_1d(kernel, psi, h**q), True
+    # Delta K is a Dirac mass for the Newtonian kernels: no density.
+    return points, rho0, rho0 * h, kernel_1d(kernel), kernel == "cubic"
 
 
 def run_1d(data, kernel: str, h: float, times, *, method: str = "blob", order: int = 4, q: float = 0.9,
@@ -102,9 +204,10 @@ def run_1d(data, kernel: str, h: float, times, *, method: str = "blob", order: i
     ----------
     data : a :class:`~particle_methods.blob.initial.Data1D` or its name ('smooth20', 'indicator', 'smooth10').
     kernel : 'newtonian_attractive' (|x|/2), 'newtonian_repulsive' (-|x|/2) or 'cubic' (|x|^3/3).
-    h : grid step (must divide 1).  times : output times, sorted, from 0.
+    h : grid step (must divide 1).  times : output times, strictly increasing, from t >= 0 (up to MAX_TIME).
     method : 'blob' (mollifier of ``order`` m, delta = h^q with 1/2 < q < 1) or 'particle'
-        (grad K(0) := 0; densities only for kernels whose Laplacian is a function).
+        (grad K(0) := 0; densities only for kernels whose Laplacian is a function; with |x|/2 the
+        run must end before the first collision of two particles).
     """
     points, rho0, masses, k, with_density = setup_1d(data, kernel, h, method=method, order=order, q=q)
     return integrate_particles(points, rho0, masses, k, times, with_density=with_density, rtol=rtol, atol=atol, h=h)
@@ -113,23 +216,23 @@ def run_1d(data, kernel: str, h: float, times, *, method: str = "blob", order: i
 def setup_2d(data, kernel: str, h: float, *, method: str = "blob", q: float = 0.9, delta: float | None = None,
              table_radius: float = 5.0, table_points: int = 8001):
     """(points (N, 2), rho0, masses, kernel, with_density) of the 2D blob (m = 4, (4.2)) or particle method;
-    the radial tables of a tabulated blob kernel cover [0, table_radius] with table_points nodes."""
-    if isinstance(data, str):
-        data = data_2d(data)
+    the radial tables of a tabulated blob kernel cover [0, table_radius] with table_points nodes. A given
+    delta must be at least MIN_DELTA_OVER_H h (the particle method ignores it)."""
+    data = as_data_2d(data)
+    one_of("method", method, METHODS)
+    q = _exponent_q(q)
     points = grid_2d(h, data)
+    h = float(h)
+    if delta is not None and positive("delta", delta) < MIN_DELTA_OVER_H * h:
+        raise ValueError(f"delta = {delta} must be at least MIN_DELTA_OVER_H h = {MIN_DELTA_OVER_H * h:.4g}: smaller "
+                         "blobs barely overlap and the densities blow up")
     rho0 = data(points)
-    masses = rho0 * h * h
+    tables = {"table_radius": table_radius, "table_points": table_points}
     if method == "blob":
-        if delta is None:
-            q = float(q)
-            if not 0.5 < q < 1.0:
-                raise ValueError(f"q must lie in (1/2, 1), got {q}")
-            delta = h**q
-        return points, rho0, masses, kernel_2d(kernel, mollifier(4, 2), delta, table_radius=table_radius,
-                                               table_points=table_points), True
-    if method == "particle":
-        return points, rho0, masses, kernel_2d(kernel), kernel != "newtonian"
-    raise ValueError(f"unknown method {method!r}: expected 'blob' or 'particle'")
+        k = kernel_2d(kernel, mollifier(4, 2), h**q if delta is None else delta, **tables)
+        return points, rho0, rho0 * h * h, k, True
+    # Delta K is a Dirac mass for the Newtonian kernel: no density.
+    return points, rho0, rho0 * h * h, kernel_2d(kernel, **tables), kernel != "newtonian"
 
 
 def run_2d(data, kernel: str, h: float, times, *, method: str = "blob", q: float = 0.9, delta: float | None = None,
@@ -148,10 +251,17 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
 
     J_i = det(dX~/dalpha) at particle i comes from massless tracers at alpha_i +- offset e_k,
     which follow the off-grid trajectory map of Definition 2.3; particles with rho0 below
-    ``threshold`` are skipped (relative errors there say nothing).
+    ``threshold`` are skipped (relative errors there say nothing). The tracers count towards
+    MAX_PARTICLES: (2d + 1) N in all.
     """
     points = finite_array("points", points, ndim=2)
+    rho0, masses = finite_array("rho0", rho0), finite_array("masses", masses)
     n, dimension = points.shape
+    same_length(points=points[:, 0], rho0=rho0, masses=masses)
+    t, offset, threshold = nonnegative("t", t), positive("offset", offset), nonnegative("threshold", threshold)
+    inside = rho0 > threshold
+    if not np.any(inside):
+        raise ValueError(f"no particle has rho0 above threshold = {threshold}")
     tracers = [points]
     for axis in range(dimension):
         for sign in (-1.0, 1.0):
@@ -161,7 +271,7 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
     all_points = np.concatenate(tracers)
     all_masses = np.concatenate([masses, np.zeros(2 * dimension * n)])
     all_rho = np.concatenate([rho0] + [rho0] * (2 * dimension))
-    run = integrate_particles(all_points, all_rho, all_masses, kernel, [0.0, t], rtol=rtol, atol=atol)
+    run = integrate_particles(all_points, all_rho, all_masses, kernel, [t], rtol=rtol, atol=atol)
     final = run.positions[-1]
     jacobian = np.empty((n, dimension, dimension))
     for axis in range(dimension):
@@ -169,5 +279,5 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
         plus = final[(2 + 2 * axis) * n:(3 + 2 * axis) * n]
         jacobian[:, :, axis] = (plus - minus) / (2 * offset)
     determinant = np.linalg.det(jacobian)
-    inside = rho0 > threshold
-    return float(np.abs(run.densities[-1, :n][inside] * determinant[inside] / rho0[inside] - 1).max())
+    defect = np.abs(run.densities[-1, :n][inside] * determinant[inside] / rho0[inside] - 1).max()
+    return float(finite_result("the mass defect", defect, f"offset = {offset} is too small or too large"))

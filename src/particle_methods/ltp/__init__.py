@@ -8,6 +8,11 @@ Campos Pinto, Carrillo, Charles and Choi. Public entry points:
 - :func:`potential`: the potentials of section 6; :func:`density_named`: data (6.1)-(6.3);
 - :data:`HAT`, :data:`B3` (2.12), (2.13) and :func:`hat_biorthogonal_kernel`;
 - :func:`exact_density`: the exact solution (6.4) for quadratic potentials.
+
+Every entry point checks its arguments and results: ValueError or TypeError naming the bad
+parameter, never NaN or inf returned. :func:`simulate` refuses a time step beyond the stability
+bound of explicit Euler (2.31) and work beyond ``solver.MAX_STEPS``, ``checks.MAX_PARTICLES``,
+``solver.MAX_PAIRS`` and ``solver.MAX_RECORDED``.
 """
 
 from .exact import exact_density, exact_support

@@ -6,19 +6,33 @@ for (6.3)), so that cell integrals of rho^0 are exact differences of the CDF.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import integrate, special
 
-from ..validation import one_of, positive
+from ..validation import (
+    ParameterTypeError,
+    finite_number,
+    finite_result,
+    finite_values,
+    instance,
+    one_of,
+    positive,
+    real_array,
+)
+from .checks import MAX_PARTICLES
 from .shapes import Shape
+
+#: Grid indices k = x / h stay below this bound, where the centres x_k = k h are exact integers times h.
+MAX_INDEX = 2.0**53
 
 
 @dataclass(frozen=True)
 class InitialDensity:
-    """A probability density on [lower, upper] with its CDF."""
+    """A probability density on [lower, upper] (finite, lower < upper) with its CDF."""
 
     name: str
     pdf: Callable
@@ -26,11 +40,23 @@ class InitialDensity:
     lower: float
     upper: float
 
+    def __post_init__(self):
+        instance("name", self.name, str)
+        for name in ("pdf", "cdf"):
+            if not callable(getattr(self, name)):
+                raise ParameterTypeError(f"{name} must be callable, got {getattr(self, name)!r}")
+        lower, upper = finite_number("lower", self.lower), finite_number("upper", self.upper)
+        if not lower < upper:
+            raise ValueError(f"lower must be below upper, got [{lower}, {upper}]")
+        object.__setattr__(self, "lower", lower)
+        object.__setattr__(self, "upper", upper)
+
     @property
     def mean(self) -> float:
         """Centre of mass lambda = int x rho^0(x) dx."""
-        return float(integrate.quad(lambda x: x * float(self.pdf(x)), self.lower, self.upper,
+        mean = float(integrate.quad(lambda x: x * float(self.pdf(x)), self.lower, self.upper,
                                     epsabs=1e-14, limit=200)[0])
+        return finite_result("the centre of mass", mean, f"the pdf of {self.name} is not integrable")
 
 
 def _gaussian_bumps():
@@ -38,13 +64,13 @@ def _gaussian_bumps():
     bumps = ((1.0, 30.0, 0.5), (2.0, 50.0, -0.3))
 
     def primitive(x):
-        x = np.clip(np.asarray(x, dtype=np.float64), -1.0, 1.0)
+        x = np.clip(finite_values("x", x), -1.0, 1.0)
         return sum(amp * 0.5 * np.sqrt(np.pi / a) * special.erf(np.sqrt(a) * (x - c)) for amp, a, c in bumps)
 
     total = primitive(1.0) - primitive(-1.0)
 
     def pdf(x):
-        x = np.asarray(x, dtype=np.float64)
+        x = finite_values("x", x)
         inside = (x >= -1.0) & (x <= 1.0)
         return np.where(inside, sum(amp * np.exp(-a * (x - c) ** 2) for amp, a, c in bumps), 0.0) / total
 
@@ -55,8 +81,8 @@ def _indicator():
     """(6.2): the indicator of [-1, 1], normalised."""
     return InitialDensity(
         "rho2",
-        lambda x: np.where(np.abs(np.asarray(x, dtype=np.float64)) <= 1.0, 0.5, 0.0),
-        lambda x: np.clip((np.asarray(x, dtype=np.float64) + 1.0) / 2.0, 0.0, 1.0),
+        lambda x: np.where(np.abs(finite_values("x", x)) <= 1.0, 0.5, 0.0),
+        lambda x: np.clip((finite_values("x", x) + 1.0) / 2.0, 0.0, 1.0),
         -1.0,
         1.0,
     )
@@ -73,12 +99,12 @@ def _bump():
     total = integrate.quad(lambda x: float(raw(x)), -1.0, 1.0, epsabs=1e-15, epsrel=1e-13)[0]
 
     def cdf(x):
-        x = np.clip(np.asarray(x, dtype=np.float64), -1.0, 1.0)
+        x = np.clip(finite_values("x", x), -1.0, 1.0)
         flat = [integrate.quad(lambda y: float(raw(y)), -1.0, float(v), epsabs=1e-15, epsrel=1e-13)[0]
                 for v in np.ravel(x)]
         return np.reshape(flat, np.shape(x)) / total
 
-    return InitialDensity("rho3", lambda x: raw(x) / total, cdf, -1.0, 1.0)
+    return InitialDensity("rho3", lambda x: raw(finite_values("x", x)) / total, cdf, -1.0, 1.0)
 
 
 DENSITIES = {"rho1": _gaussian_bumps(), "rho2": _indicator(), "rho3": _bump()}
@@ -95,22 +121,43 @@ def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str
     ``weights='cell'``: omega_k = int over [x_k - h/2, x_k + h/2] of rho^0 (2.14).
     ``weights='biorthogonal'``: omega_k = int phi~((x - x_k)/h) rho^0(x) dx (2.16) with
     the kernel bi-orthogonal to the hat; only valid for the hat shape.
-    Both are differences of the CDF, hence exact.
+    Both are differences of the CDF, hence exact. At most MAX_PARTICLES particles.
     """
+    instance("density", density, InitialDensity)
     h = positive("h", h)
-    first = int(np.floor(density.lower / h)) - 1
-    last = int(np.ceil(density.upper / h)) + 1
-    centres = h * np.arange(first, last + 1)
-    cdf = density.cdf
-    if weights == "cell":
-        values = cdf(centres + 0.5 * h) - cdf(centres - 0.5 * h)
-    elif weights == "biorthogonal":
-        if shape.name != "hat":
-            raise ValueError("biorthogonal weights (2.16) are defined here for the hat shape only")
-        middle = cdf(centres + 0.5 * h) - cdf(centres - 0.5 * h)
-        sides = (cdf(centres + h) - cdf(centres + 0.5 * h)) + (cdf(centres - 0.5 * h) - cdf(centres - h))
-        values = 1.5 * middle - 0.5 * sides
-    else:
-        raise ValueError(f"unknown weights {weights!r}: expected 'cell' or 'biorthogonal'")
+    instance("shape", shape, Shape)
+    rule = one_of("weights", weights, WEIGHTS)
+    with np.errstate(over="ignore", invalid="ignore"):  # tiny h: infinite indices, refused just below
+        low, high = np.floor(density.lower / h) - 1, np.ceil(density.upper / h) + 1  # first and last k
+        if not high - low + 1 <= MAX_PARTICLES:
+            raise ValueError(f"h = {h:g} gives about {(density.upper - density.lower) / h:.3g} particles on "
+                             f"[{density.lower:g}, {density.upper:g}], beyond the limit MAX_PARTICLES = "
+                             f"{MAX_PARTICLES} of one call")
+    if max(abs(low), abs(high)) >= MAX_INDEX:
+        raise ValueError(f"h = {h:g} puts [{density.lower:g}, {density.upper:g}] at grid indices beyond 2^53")
+    if not math.isfinite(h * (float(max(abs(low), abs(high))) + 1.0)):  # Python floats: inf, no warning
+        raise ValueError(f"h = {h:g} is too large: the cells around [{density.lower:g}, {density.upper:g}] overflow")
+    centres = h * np.arange(int(low), int(high) + 1)
+    values = real_array("the weights", rule(density.cdf, centres, h, shape))
+    if values.shape != centres.shape:
+        raise ValueError(f"the CDF of {density.name} must return one value per point, got shape {values.shape}")
+    finite_result("the weights", values, f"the CDF of {density.name} is not finite")
     keep = values != 0.0
     return centres[keep], values[keep]
+
+
+def _cell_weights(cdf, centres, h, shape):
+    """(2.14): omega_k = int over [x_k - h/2, x_k + h/2] of rho^0."""
+    return cdf(centres + 0.5 * h) - cdf(centres - 0.5 * h)
+
+
+def _biorthogonal_weights(cdf, centres, h, shape):
+    """(2.16) with the kernel (2.17) bi-orthogonal to the hat."""
+    if shape.name != "hat":
+        raise ValueError("biorthogonal weights (2.16) are defined here for the hat shape only")
+    middle = cdf(centres + 0.5 * h) - cdf(centres - 0.5 * h)
+    sides = (cdf(centres + h) - cdf(centres + 0.5 * h)) + (cdf(centres - 0.5 * h) - cdf(centres - h))
+    return 1.5 * middle - 0.5 * sides
+
+
+WEIGHTS = {"cell": _cell_weights, "biorthogonal": _biorthogonal_weights}

@@ -15,6 +15,10 @@ like rho^(-2n) with rho ~ 2 D / L the Bernstein-ellipse parameter (D the distanc
 the piece's middle to the singularity, L its half-length): 6 nodes beyond 4 lengths,
 4 beyond 12 and 3 beyond 40 keep every piece below about 1e-13 relative error.
 Terms with a = 2 need no pair sums: (c z) * rho_h and c * rho_h are moments.
+
+The public :func:`convolutions` and :func:`density_at` check every array before the compiled
+loops read it (unchecked, they would read past mismatched arrays) and check that the results
+are finite.
 """
 
 from __future__ import annotations
@@ -23,6 +27,8 @@ import numpy as np
 from numba import prange
 
 from ..jit import njit
+from ..validation import finite_array, finite_result
+from .checks import particle_arrays, piece_arrays, power_arrays
 
 NEAR = 4.0
 #: (distance in piece lengths, number of Gauss-Legendre nodes), farthest first.
@@ -98,7 +104,7 @@ def _piece_gauss(d, width, lo, hi, coefficients, a, nodes, weights):
 
 
 @njit(parallel=True)
-def convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
+def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
     """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i."""
     first = np.zeros(targets.size)
     second = np.zeros(targets.size)
@@ -153,7 +159,7 @@ def convolutions(targets, centres, weights, widths, coefficients, exponents, bre
 
 
 @njit(parallel=True)
-def density_at(points, centres, weights, widths, breaks, pieces):
+def _density_at(points, centres, weights, widths, breaks, pieces):
     """rho_h(points) = sum_k omega_k phi((x - x_k)/h_k)/h_k."""
     values = np.zeros(points.size)
     radius = breaks[-1]
@@ -171,3 +177,24 @@ def density_at(points, centres, weights, widths, breaks, pieces):
             total += weights[k] * (c[0] + s * (c[1] + s * (c[2] + s * c[3]))) / widths[k]
         values[i] = total
     return values
+
+
+OVERFLOW = "overflow: the particles are too narrow or too far from the points for double precision"
+
+
+def convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
+    """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i, the velocity and Jacobian of (2.31)."""
+    targets = np.ascontiguousarray(finite_array("targets", targets))
+    centres, weights, widths = particle_arrays(centres, weights, widths)
+    coefficients, exponents = power_arrays(coefficients, exponents)
+    breaks, pieces = piece_arrays(breaks, pieces)
+    first, second = _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces)
+    return finite_result("W' * rho_h", first, OVERFLOW), finite_result("W'' * rho_h", second, OVERFLOW)
+
+
+def density_at(points, centres, weights, widths, breaks, pieces):
+    """rho_h(points) of (2.27) = sum_k omega_k phi((x - x_k)/h_k)/h_k."""
+    points = np.ascontiguousarray(finite_array("points", points))
+    centres, weights, widths = particle_arrays(centres, weights, widths)
+    breaks, pieces = piece_arrays(breaks, pieces)
+    return finite_result("rho_h", _density_at(points, centres, weights, widths, breaks, pieces), OVERFLOW)

@@ -20,7 +20,8 @@ import math
 import numpy as np
 from scipy.signal import find_peaks
 
-from ..validation import finite_array, in_interval, positive, same_length
+from ..validation import finite_array, finite_number, in_interval, instance, positive, same_length
+from .solver import Simulation
 
 #: A shrink rate (per unit time) and a slope of g below these are zero up to rounding.
 RATE_ZERO = 1e-12
@@ -46,10 +47,12 @@ def collapse_times(times, sizes, windows) -> tuple[np.ndarray, np.ndarray]:
     every window, given as fractions (start, end) of the run's duration."""
     times = finite_array("times", times)
     g = shrink_rate_inverse(times, sizes)
+    windows = in_interval("windows", finite_array("windows", windows, ndim=2), 0.0, 1.0)
+    if windows.shape[1] != 2:
+        raise ValueError(f"windows must be pairs (start, end), got shape {windows.shape}")
     span = times[-1] - times[0]
     slopes, collapse = [], []
     for start, end in windows:
-        start, end = in_interval("window", np.array([start, end], float), 0.0, 1.0)
         inside = (times >= times[0] + start * span - 1e-12) & (times <= times[0] + end * span + 1e-12)
         if inside.sum() < 3 or not np.all(np.isfinite(g[inside])):
             raise ValueError(f"window ({start}, {end}) holds too few finite records of g")
@@ -72,9 +75,9 @@ def side_concentration(centres, weights, peak_values, fraction: float, radius: f
     weights = finite_array("weights", weights)
     peak_values = finite_array("peak_values", peak_values)
     same_length(centres=centres, weights=weights, peak_values=peak_values)
-    fraction = float(in_interval("fraction", np.array([fraction], float), 0.0, 1.0)[0])
-    if fraction <= 0:
-        raise ValueError(f"fraction must be positive, got {fraction}")
+    fraction = finite_number("fraction", fraction)
+    if not 0.0 < fraction <= 1.0:
+        raise ValueError(f"fraction must lie in (0, 1], got {fraction}")
     radius = positive("radius", radius)
     total = weights.sum()
     if total <= 0:
@@ -102,7 +105,8 @@ def peak_count(density, prominence: float = 0.05) -> int:
     density = finite_array("density", density)
     prominence = positive("prominence", prominence)
     peaks, properties = find_peaks(density, prominence=0.0)
-    return int(np.sum(properties["prominences"] >= prominence * density[peaks]))
+    with np.errstate(over="ignore"):  # a threshold beyond the double range is inf: no peak counts
+        return int(np.sum(properties["prominences"] >= prominence * density[peaks]))
 
 
 def excess_variation(x, density) -> float:
@@ -128,6 +132,7 @@ def shrink_factor(times, sizes, window: float, since: float) -> float:
     sizes = finite_array("sizes", sizes)
     same_length(times=times, sizes=sizes)
     window = positive("window", window)
+    since = finite_number("since", since)
     if np.any(sizes <= 0):
         raise ValueError("sizes must be positive")
     earlier = np.searchsorted(times, times - window + 1e-9 * window, side="right") - 1  # latest <= t - window
@@ -140,6 +145,7 @@ def shrink_factor(times, sizes, window: float, since: float) -> float:
 def concentration_series(simulation, fraction: float, radius: float) -> tuple[np.ndarray, np.ndarray]:
     """:func:`side_concentration` at every recorded step of a :class:`~.solver.Simulation`, the
     densest particle found from the density at the centres: arrays of shape (records, 2)."""
+    instance("simulation", simulation, Simulation)
     widths, masses = [], []
     for index in range(simulation.steps.size):
         particles = simulation.at(index)

@@ -11,7 +11,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import finite_number
+from ..validation import finite_number, finite_result, finite_values, instance, one_of
+from .checks import power_arrays
+
+#: The exponents each kind of potential takes.
+KINDS = {"quadratic": (), "half_quadratic": (), "power": ("a",), "attractive_repulsive": ("a", "b")}
+OVERFLOW = "overflow: |x| too large (or too close to 0 for W'') for double precision"
 
 
 @dataclass(frozen=True)
@@ -23,28 +28,33 @@ class Potential:
     exponents: tuple[float, ...]
 
     def __post_init__(self):
-        if len(self.coefficients) != len(self.exponents) or not self.exponents:
-            raise ValueError("a potential needs one coefficient per exponent")
-        for a in self.exponents:
-            if finite_number("exponent", a) <= 1.0:
-                raise ValueError(f"exponent must exceed 1 (W' continuous, W'' integrable), got {a}")
-        for c in self.coefficients:
-            finite_number("coefficient", c)
+        instance("name", self.name, str)
+        coefficients, exponents = power_arrays(self.coefficients, self.exponents)
+        object.__setattr__(self, "coefficients", tuple(float(c) for c in coefficients))
+        object.__setattr__(self, "exponents", tuple(float(a) for a in exponents))
 
     def __call__(self, x):
-        x = np.abs(np.asarray(x, dtype=np.float64))
-        return sum(c * x**a / a for c, a in zip(self.coefficients, self.exponents))
+        """W(x), for finite x of any shape."""
+        x = np.abs(finite_values("x", x))
+        with np.errstate(over="ignore", invalid="ignore"):
+            values = sum(c * x**a / a for c, a in zip(self.coefficients, self.exponents))
+        return finite_result("W(x)", values, OVERFLOW)
 
     def derivative(self, x):
         """W'(x)."""
-        x = np.asarray(x, dtype=np.float64)
-        return sum(c * np.sign(x) * np.abs(x) ** (a - 1) for c, a in zip(self.coefficients, self.exponents))
+        x = finite_values("x", x)
+        with np.errstate(over="ignore", invalid="ignore"):
+            values = sum(c * np.sign(x) * np.abs(x) ** (a - 1) for c, a in zip(self.coefficients, self.exponents))
+        return finite_result("W'(x)", values, OVERFLOW)
 
     def second_derivative(self, x):
-        """W''(x) (infinite at 0 for exponents below 2)."""
-        x = np.abs(np.asarray(x, dtype=np.float64))
-        with np.errstate(divide="ignore"):
-            return sum(c * (a - 1) * x ** (a - 2) for c, a in zip(self.coefficients, self.exponents))
+        """W''(x); ValueError at x = 0 for exponents below 2, where W'' is infinite."""
+        x = np.abs(finite_values("x", x))
+        if min(self.exponents) < 2.0 and np.any(x == 0.0):
+            raise ValueError(f"x must not contain 0: W'' of {self.name} is infinite there")
+        with np.errstate(over="ignore", invalid="ignore"):
+            values = sum(c * (a - 1) * x ** (a - 2) for c, a in zip(self.coefficients, self.exponents))
+        return finite_result("W''(x)", values, OVERFLOW)
 
     def as_arrays(self):
         """(coefficients, exponents) as float arrays for the compiled kernels."""
@@ -53,18 +63,19 @@ class Potential:
 
 def potential(kind: str, a: float | None = None, b: float | None = None) -> Potential:
     """Potentials of section 6: 'quadratic' x^2, 'half_quadratic' x^2/2, 'power' |x|^a/a,
-    'attractive_repulsive' |x|^a/a - |x|^b/b."""
+    'attractive_repulsive' |x|^a/a - |x|^b/b (a, b > 1; an exponent the kind does not take is refused)."""
+    needed = one_of("potential", kind, KINDS)
+    for name, value in (("a", a), ("b", b)):
+        if name in needed and value is None:
+            raise ValueError(f"the {kind} potential needs the exponent{'s' * (len(needed) - 1)} {' and '.join(needed)}")
+        if name not in needed and value is not None:
+            raise ValueError(f"the {kind} potential takes no exponent {name}, got {value!r}")
     if kind == "quadratic":
         return Potential("x^2", (2.0,), (2.0,))
     if kind == "half_quadratic":
         return Potential("x^2/2", (1.0,), (2.0,))
+    a = finite_number("a", a)
     if kind == "power":
-        if a is None:
-            raise ValueError("the power potential needs the exponent a")
-        return Potential(f"|x|^{a:g}/{a:g}", (1.0,), (float(a),))
-    if kind == "attractive_repulsive":
-        if a is None or b is None:
-            raise ValueError("the attractive-repulsive potential needs the exponents a and b")
-        return Potential(f"|x|^{a:g}/{a:g} - |x|^{b:g}/{b:g}", (1.0, -1.0), (float(a), float(b)))
-    raise ValueError(f"unknown potential {kind!r}: expected quadratic, half_quadratic, power or "
-                     "attractive_repulsive")
+        return Potential(f"|x|^{a:g}/{a:g}", (1.0,), (a,))
+    b = finite_number("b", b)
+    return Potential(f"|x|^{a:g}/{a:g} - |x|^{b:g}/{b:g}", (1.0, -1.0), (a, b))

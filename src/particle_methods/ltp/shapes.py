@@ -12,16 +12,33 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import one_of
+from ..validation import finite_values, instance, one_of
+from .checks import piece_arrays
+
+#: Largest rounding error accepted on the unit mass and zero mean of a shape.
+MOMENT_TOLERANCE = 1e-12
 
 
 @dataclass(frozen=True)
 class Shape:
-    """Piecewise cubic reference shape with unit mass and the partition of unity."""
+    """Piecewise cubic reference shape with unit mass and the partition of unity.
+
+    The breaks must increase from -r to r and the coefficients hold one cubic per piece; the
+    shape must have unit mass and mean 0, as the kernels assume for quadratic terms.
+    """
 
     name: str
     breaks: np.ndarray
     coefficients: np.ndarray
+
+    def __post_init__(self):
+        instance("name", self.name, str)
+        breaks, coefficients = piece_arrays(self.breaks, self.coefficients)
+        object.__setattr__(self, "breaks", breaks)
+        object.__setattr__(self, "coefficients", coefficients)
+        mass, mean = self._moment(0), self._moment(1)
+        if not (abs(mass - 1.0) <= MOMENT_TOLERANCE and abs(mean) <= MOMENT_TOLERANCE):
+            raise ValueError(f"shape {self.name!r} must have unit mass and mean 0, got mass {mass} and mean {mean}")
 
     @property
     def radius(self) -> float:
@@ -31,18 +48,26 @@ class Shape:
     @property
     def second_moment(self) -> float:
         """int s^2 phi(s) ds."""
+        return self._moment(2)
+
+    def _moment(self, order: int) -> float:
+        """int s^order phi(s) ds, piece by piece."""
+        power = order + 1
         total = 0.0
-        for (lo, hi), c in zip(zip(self.breaks[:-1], self.breaks[1:]), self.coefficients):
-            total += sum(c[m] * (hi ** (m + 3) - lo ** (m + 3)) / (m + 3) for m in range(4))
+        with np.errstate(over="ignore", invalid="ignore"):  # huge breaks: a non-finite moment, refused
+            for (lo, hi), c in zip(zip(self.breaks[:-1], self.breaks[1:]), self.coefficients):
+                total += sum(c[m] * (hi ** (m + power) - lo ** (m + power)) / (m + power) for m in range(4))
         return float(total)
 
     def __call__(self, s):
-        """phi(s), vectorised."""
-        s = np.asarray(s, dtype=np.float64)
+        """phi(s), vectorised, for finite s of any shape."""
+        s = finite_values("s", s)
+        inside = (s >= self.breaks[0]) & (s <= self.breaks[-1])
+        s = np.clip(s, self.breaks[0], self.breaks[-1])  # outside the support phi = 0: no overflow
         piece = np.clip(np.searchsorted(self.breaks, s, side="right") - 1, 0, len(self.coefficients) - 1)
         c = self.coefficients[piece]
         value = c[..., 0] + s * (c[..., 1] + s * (c[..., 2] + s * c[..., 3]))
-        return np.where((s >= self.breaks[0]) & (s <= self.breaks[-1]), value, 0.0)
+        return np.where(inside, value, 0.0)
 
 
 #: Hat function (2.12) in 1D: max(1 - |s|, 0).
@@ -65,5 +90,5 @@ def shape_named(name: str) -> Shape:
 
 def hat_biorthogonal_kernel(s):
     """Kernel bi-orthogonal to the hat (2.17): 3/2 on [-1/2, 1/2], -1/2 on the rest of [-1, 1]."""
-    s = np.abs(np.asarray(s, dtype=np.float64))
+    s = np.abs(finite_values("s", s))
     return np.where(s <= 0.5, 1.5, np.where(s <= 1.0, -0.5, 0.0))

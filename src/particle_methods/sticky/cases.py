@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..norms import w1_to_measure
-from ..validation import integer_at_least, sorted_array
+from ..validation import finite_array, finite_number, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux, concave_flux
 from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
 from .spd import spd_positions, velocities_from_flux
@@ -61,6 +61,7 @@ def psystem_initial_measures(case: str, x0: float) -> tuple[QuantileMeasure, Qua
     ``rarefaction``: m^{+-}(dx) = exp(-|x +- x0|)/2, so w_0^+ >= w_0^- (Figures 4, 5).
     ``shocks``: m^-(dx) = exp(-|x - x0|)/2 and w_0^+ = 1{x >= 0} (Figures 6, 7).
     """
+    x0 = finite_number("x0", x0)
     if case == "rarefaction":
         return Laplace(x0), Laplace(-x0)
     if case == "shocks":
@@ -77,5 +78,7 @@ def psystem_initial_configuration(case: str, x0: float, n: int) -> np.ndarray:
 def empirical_cdf(points, x) -> np.ndarray:
     """CDF (1/n) #{k : points_k <= x} of the empirical measure of sorted ``points``."""
     points = sorted_array("points", points)
-    return np.searchsorted(points, np.asarray(x, dtype=np.float64), side="right") / points.size
+    if points.size == 0:
+        raise ValueError("points must contain at least one position")
+    return np.searchsorted(points, finite_array("x", x), side="right") / points.size
 

@@ -7,7 +7,8 @@ moves at the Rankine-Hugoniot speed of the jump of u from a/n to b/n, so for a
 concave flux (every upward jump is then an admissible shock) this is also front
 tracking of the entropy solution with the discretised data (Remark 3.3).
 
-O(n) work per collision and up to n - 1 collisions: O(n^2), meant for checks.
+O(n) work per collision and up to n - 1 collisions: O(n^2), meant for checks, hence at most
+:data:`MAX_PARTICLES` particles.
 """
 
 from __future__ import annotations
@@ -15,13 +16,20 @@ from __future__ import annotations
 import numpy as np
 
 from ..validation import nonnegative
-from .spd import _checked_state
+from .spd import _check_reach, _checked_state
+
+#: Most particles :func:`sticky_collisions` accepts: its O(n^2) work then takes about a second.
+MAX_PARTICLES = 10**4
 
 
 def sticky_collisions(x, v, t: float) -> np.ndarray:
     """Positions at time ``t`` by explicit simulation of every collision."""
     x, v = _checked_state(x, v)
+    if x.size > MAX_PARTICLES:
+        raise ValueError(f"sticky_collisions takes at most MAX_PARTICLES = {MAX_PARTICLES} particles (O(n^2) work), "
+                         f"got {x.size}: use spd_positions")
     t = nonnegative("t", t)
+    _check_reach(x, np.abs(v).max(), t)
     position = x.copy()
     velocity = v.copy()
     size = np.ones(x.size, dtype=np.int64)

@@ -10,19 +10,31 @@ from __future__ import annotations
 import numpy as np
 from scipy import special
 
-from ..validation import nonnegative
-from .measures import Laplace, QuantileMeasure
+from ..validation import finite_result, in_interval, nonnegative
+from .measures import Laplace, QuantileMeasure, checked_measure
+
+
+def _burgers_formula(u):
+    """u^2/2 without checks, for compiled kernels given finite states."""
+    return 0.5 * np.asarray(u, dtype=np.float64) ** 2
+
+
+def _concave_formula(u):
+    """u(1 - u)/2 without checks, for compiled kernels given finite states."""
+    u = np.asarray(u, dtype=np.float64)
+    return 0.5 * u * (1.0 - u)
 
 
 def burgers_flux(u):
     """Flux of the Burgers equation (5.1), Lambda(u) = u^2/2."""
-    return 0.5 * np.asarray(u, dtype=np.float64) ** 2
+    u = in_interval("u", u, -np.inf, np.inf)  # any finite real array
+    return finite_result("the Burgers flux u^2/2", _burgers_formula(u), "u is too large")
 
 
 def concave_flux(u):
     """Concave flux of (5.3), Lambda(u) = u(1 - u)/2."""
-    u = np.asarray(u, dtype=np.float64)
-    return 0.5 * u * (1.0 - u)
+    u = in_interval("u", u, -np.inf, np.inf)
+    return finite_result("the concave flux u(1 - u)/2", _concave_formula(u), "u is too large")
 
 
 class BurgersSolution(QuantileMeasure):
@@ -36,14 +48,14 @@ class BurgersSolution(QuantileMeasure):
     """
 
     def __init__(self, initial: QuantileMeasure, t: float):
-        self.initial = initial
+        self.initial = checked_measure("initial", initial)
         self.t = nonnegative("t", t)
 
-    def quantile(self, w):
-        return self.initial.quantile(w) + self.t * np.asarray(w, dtype=np.float64)
+    def _quantile(self, w):
+        return self.initial._quantile(w) + self.t * w
 
-    def quantile_integral(self, w):
-        return self.initial.quantile_integral(w) + 0.5 * self.t * np.asarray(w, dtype=np.float64) ** 2
+    def _quantile_integral(self, w):
+        return self.initial._quantile_integral(w) + 0.5 * self.t * w**2
 
 
 class ConcaveLaplaceSolution(QuantileMeasure):
@@ -59,6 +71,9 @@ class ConcaveLaplaceSolution(QuantileMeasure):
 
     def __init__(self, t: float):
         self.t = nonnegative("t", t)
+        if 0.0 < self.t < np.finfo(np.float64).tiny:
+            # (t/2) e^{x - t/2} would keep only the few bits of a subnormal t: F_t off by up to 1/2.
+            raise ValueError(f"t must be 0 or at least {np.finfo(np.float64).tiny:.3g} (a normal double), got {self.t}")
         self._laplace = Laplace(0.0)
         if self.t <= 2.0:
             self.shock_level = 0.5
@@ -73,26 +88,23 @@ class ConcaveLaplaceSolution(QuantileMeasure):
             return 0.5 * np.exp(x)
         return -special.lambertw(-0.5 * self.t * np.exp(x - 0.5 * self.t), 0).real / self.t
 
-    def cdf(self, x):
+    def _cdf(self, x):
         """F_t(x): characteristics on each side, the atom of mass 1 - 2 w_0(t) at 0."""
-        x = np.asarray(x, dtype=np.float64)
         left = self._left_cdf(-np.abs(x))
         return np.where(x < 0, left, np.where(x > 0, 1.0 - left, 1.0 - self.shock_level))
 
     def _left_quantile(self, w):
-        return self._laplace.quantile(w) + self.t * (0.5 - w)
+        return self._laplace._quantile(w) + self.t * (0.5 - w)
 
     def _left_integral(self, w):
-        return self._laplace.quantile_integral(w) + 0.5 * self.t * (w - w**2)
+        return self._laplace._quantile_integral(w) + 0.5 * self.t * (w - w**2)
 
-    def quantile(self, w):
-        w = np.asarray(w, dtype=np.float64)
+    def _quantile(self, w):
         lower = np.minimum(w, 1.0 - w)
         value = np.where(lower < self.shock_level, self._left_quantile(np.maximum(lower, 1e-300)), 0.0)
         return np.where(w < 0.5, value, -value)
 
-    def quantile_integral(self, w):
-        w = np.asarray(w, dtype=np.float64)
+    def _quantile_integral(self, w):
         # By the symmetry X_t(w) = -X_t(1 - w), int_0^w X_t = int_0^{1-w} X_t for w > 1/2.
         lower = np.minimum(w, 1.0 - w)
         return self._left_integral(np.minimum(lower, self.shock_level))

@@ -12,7 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .spd import _checked_state
+from ..validation import ParameterTypeError, finite_array, nonnegative
+from .spd import _check_reach, _checked_state
 
 
 @dataclass(frozen=True)
@@ -28,6 +29,8 @@ class HullIteration:
 def cumulative_free_positions(x, v, t: float) -> np.ndarray:
     """Q(k) = sum_{k' <= k} (x_{k'} + t v_{k'}), k = 0..n, with Q(0) = 0."""
     x, v = _checked_state(x, v)
+    t = nonnegative("t", t)
+    _check_reach(x, np.abs(v).max(), t)  # then the n partial sums are finite too
     return np.concatenate(([0.0], np.cumsum(x + t * v)))
 
 
@@ -39,7 +42,11 @@ def hull_vertices(q, trace: list | None = None) -> list[int]:
     inserting at the front cost O(1), as the paper's complexity count assumes.
     When ``trace`` is a list, one :class:`HullIteration` per pass is appended to it.
     """
-    q = [float(value) for value in q]
+    q = finite_array("q", q).tolist()
+    if len(q) < 2:
+        raise ValueError(f"q must hold Q(0..n) for n >= 1, at least 2 values, got {len(q)}")
+    if trace is not None and not isinstance(trace, list):
+        raise ParameterTypeError(f"trace must be a list or None, got {type(trace).__name__}")
     stack = [0, 1]
     for k in range(2, len(q)):
         before = tuple(reversed(stack)) if trace is not None else ()

@@ -11,15 +11,30 @@ A diagonal system is any object with an integer attribute ``d`` and a method
 variable levels[..., gamma], of the characteristic speed lambda^gamma evaluated
 at ``levels`` (an array whose last axis has length d). With it the integral in
 (1.8) is exact: n (P(k/n) - P((k-1)/n)).
+
+One call may ask for at most :data:`MAX_STEPS` steps and :data:`MAX_WORK` rank entries
+(n d^2 per step, the cost of section 5.2.1); a trajectory holds at most
+:data:`~particle_methods.sticky.spd.MAX_POSITIONS` positions.
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..jit import njit
-from ..validation import integer_at_least, positive, sorted_array
-from .spd import _hull_positions
+from ..validation import ParameterTypeError, integer_at_least, positive, real_array, sorted_array
+from .spd import MAX_POSITIONS, _check_reach, _hull_positions
+
+#: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms
+#: (Python calls of the system), so 10**6 steps take one to two minutes. The figures take at most 10**4.
+MAX_STEPS = 10**6
+
+#: Largest n d^2 L (rank entries over L steps, the O(n d^2) cost per step of section 5.2.1) one
+#: call accepts: one to two minutes at the 0.02 to 0.035 us per entry measured (0.04 to 0.07 us
+#: per particle and step for d = 2). The figures take at most 8 * 10**7 (config ``sticky.cost``).
+MAX_WORK = 4 * 10**9
 
 
 @njit
@@ -47,21 +62,53 @@ def _ranks(x):
     return counts
 
 
-def _checked_configuration(x, system) -> np.ndarray:
-    x = sorted_array("x", x, ndim=2)
-    if x.shape[0] != system.d:
-        raise ValueError(f"x must have one row per type: expected {system.d} rows, got {x.shape[0]}")
-    integer_at_least("number of particles per type n", x.shape[1], 1)
+def _checked_system(system) -> int:
+    """Number of types d of a diagonal system (an integer d and a method speed_primitive)."""
+    if not callable(getattr(system, "speed_primitive", None)):
+        raise ParameterTypeError(
+            f"system must be a diagonal system with a method speed_primitive(gamma, levels), got {system!r}"
+        )
+    return integer_at_least("system.d (the number of types)", getattr(system, "d", None), 1)
+
+
+def _checked_configuration(name: str, x, system) -> np.ndarray:
+    d = _checked_system(system)
+    x = sorted_array(name, x, ndim=2)
+    if x.shape[0] != d:
+        raise ValueError(f"{name} must have one row per type: expected {d} rows, got {x.shape[0]}")
+    n = integer_at_least("number of particles per type n", x.shape[1], 1)
+    if d * d * n > MAX_POSITIONS:
+        raise ValueError(f"{name} has d = {d} types of n = {n} particles: the ranks need d^2 n = {d * d * n:.3g} "
+                         f"entries, more than MAX_POSITIONS = {MAX_POSITIONS:.0e}")
     return x
+
+
+def _checked_steps(steps, x0: np.ndarray) -> int:
+    steps = integer_at_least("steps", steps, 0, MAX_STEPS)
+    d, n = x0.shape
+    if steps * d * d * n > MAX_WORK:
+        raise ValueError(f"{steps} steps of d = {d} types of n = {n} particles ask for n d^2 steps = "
+                         f"{steps * d * d * n:.3g} rank entries, more than MAX_WORK = {MAX_WORK:.0e} (about two "
+                         "minutes): take fewer steps or particles")
+    return steps
 
 
 def rank_velocities(x, system) -> np.ndarray:
     """Velocities (1.8) of every particle of the configuration ``x`` (shape (d, n))."""
-    x = _checked_configuration(x, system)
-    return _rank_velocities(x, system)
+    x = _checked_configuration("x", x, system)
+    return _checked_velocities(x, system)[0]
 
 
-def _rank_velocities(x, system) -> np.ndarray:
+def _primitive(system, gamma: int, levels: np.ndarray) -> np.ndarray:
+    name = f"system.speed_primitive({gamma}, levels)"
+    values = real_array(name, system.speed_primitive(gamma, levels))
+    if values.shape != levels.shape[:1]:
+        raise ValueError(f"{name} must return one value per particle, shape {levels.shape[:1]}, got {values.shape}")
+    return values
+
+
+def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
+    """Velocities (1.8) and their largest magnitude, after checking that they are finite."""
     d, n = x.shape
     levels = _ranks(x) / n
     velocities = np.empty((d, n))
@@ -69,21 +116,29 @@ def _rank_velocities(x, system) -> np.ndarray:
         upper = levels[gamma]
         lower = upper.copy()
         lower[:, gamma] -= 1.0 / n
-        velocities[gamma] = n * (system.speed_primitive(gamma, upper) - system.speed_primitive(gamma, lower))
-    return velocities
+        velocities[gamma] = n * (_primitive(system, gamma, upper) - _primitive(system, gamma, lower))
+    speed = float(np.abs(velocities).max())  # one pass: NaN or inf if any velocity is
+    if not math.isfinite(speed):
+        raise ValueError("the velocities (1.8) are not finite: system.speed_primitive returned non-finite values, "
+                         "or values whose differences overflow")
+    return velocities, speed
 
 
 def _tspd_step(x, system, delta, out):
-    velocities = _rank_velocities(x, system)
+    velocities, speed = _checked_velocities(x, system)
+    _check_reach(x, speed, delta, "Delta", "velocities")
     for gamma in range(x.shape[0]):
         _hull_positions(x[gamma], velocities[gamma], delta, out[gamma])
 
 
 def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
     """Iterated TSPD: configurations at times 0, Delta, ..., steps*Delta, shape (steps+1, d, n)."""
-    x0 = _checked_configuration(x0, system)
+    x0 = _checked_configuration("x0", x0, system)
     delta = positive("Delta", delta)
-    steps = integer_at_least("steps", steps, 0)
+    steps = _checked_steps(steps, x0)
+    if (steps + 1) * x0.size > MAX_POSITIONS:
+        raise ValueError(f"a trajectory of {steps} steps of {x0.size} particles holds {(steps + 1) * x0.size:.3g} "
+                         f"positions, more than MAX_POSITIONS = {MAX_POSITIONS:.0e}: use mspd_positions or fewer steps")
     path = np.empty((steps + 1, *x0.shape))
     path[0] = x0
     for step in range(steps):
@@ -93,9 +148,9 @@ def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
 
 def mspd_positions(x0, system, delta: float, steps: int) -> np.ndarray:
     """Iterated TSPD after ``steps`` steps of length Delta, keeping only the current state."""
-    x0 = _checked_configuration(x0, system)
+    x0 = _checked_configuration("x0", x0, system)
     delta = positive("Delta", delta)
-    steps = integer_at_least("steps", steps, 0)
+    steps = _checked_steps(steps, x0)
     current, following = x0.copy(), np.empty_like(x0)
     for _ in range(steps):
         _tspd_step(current, system, delta, following)

@@ -26,6 +26,16 @@ from ..validation import in_interval, integer_at_least, positive
 
 MINUS, PLUS = 0, 1
 
+_LARGEST_SCALE = 1e300
+"""Bound on the speed constants of a :class:`PSystem`, so that pressures and primitives stay finite."""
+
+
+def _same_shape(name_a: str, a: np.ndarray, name_b: str, b: np.ndarray) -> None:
+    try:
+        np.broadcast_shapes(a.shape, b.shape)
+    except ValueError:
+        raise ValueError(f"{name_a} and {name_b} must have broadcastable shapes, got {a.shape} and {b.shape}") from None
+
 
 @dataclass(frozen=True)
 class PSystem:
@@ -35,8 +45,14 @@ class PSystem:
     kappa: float = 5.0
 
     def __post_init__(self):
-        positive("nu", self.nu)
-        positive("kappa", self.kappa)
+        object.__setattr__(self, "nu", positive("nu", self.nu))
+        object.__setattr__(self, "kappa", positive("kappa", self.kappa))
+        # The primitive's scale kappa / (2 nu a^2) and L_LC = kappa / (4 nu) bound every speed constant.
+        with np.errstate(over="ignore", divide="ignore"):
+            scales = self.kappa / (np.array([2.0 * self.a**2, 4.0]) * self.nu)
+        if not np.all(scales <= _LARGEST_SCALE):
+            raise ValueError(f"nu = {self.nu} and kappa = {self.kappa} give speeds beyond {_LARGEST_SCALE:.0e}: "
+                             "kappa / (2 nu asinh(kappa/2)^2) and kappa / (4 nu) must stay below it")
 
     d = 2
 
@@ -75,22 +91,27 @@ class PSystem:
         return np.arcsinh(self.kappa * (u / self.nu - 0.5)) / (2.0 * self.a)
 
     def riemann_invariants(self, u, v):
-        """(w^-, w^+) = (v - g(u), v + g(u))."""
+        """(w^-, w^+) = (v - g(u), v + g(u)); |g| <= 1/2, so both are finite for finite v."""
         g = self.g(u)
-        v = np.asarray(v, dtype=np.float64)
+        v = in_interval("v", v, -np.inf, np.inf)  # any finite real array
+        _same_shape("u", g, "v", v)
         return v - g, v + g
+
+    def _levels(self, w_minus, w_plus):
+        w_minus = in_interval("w_minus", w_minus, 0.0, 1.0)
+        w_plus = in_interval("w_plus", w_plus, 0.0, 1.0)
+        _same_shape("w_minus", w_minus, "w_plus", w_plus)
+        return w_minus, w_plus
 
     def physical_variables(self, w_minus, w_plus):
         """(u, v) from the Riemann invariants, relation (5.6)."""
-        w_minus = in_interval("w_minus", w_minus, 0.0, 1.0)
-        w_plus = in_interval("w_plus", w_plus, 0.0, 1.0)
+        w_minus, w_plus = self._levels(w_minus, w_plus)
         u = self.nu * (0.5 + np.sinh((w_plus - w_minus) * self.a) / self.kappa)
         return u, 0.5 * (w_plus + w_minus)
 
     def speeds(self, w_minus, w_plus):
         """(lambda^-, lambda^+) of (5.7)."""
-        w_minus = in_interval("w_minus", w_minus, 0.0, 1.0)
-        w_plus = in_interval("w_plus", w_plus, 0.0, 1.0)
+        w_minus, w_plus = self._levels(w_minus, w_plus)
         magnitude = self.speed_scale / np.cosh((w_plus - w_minus) * self.a)
         return magnitude, -magnitude
 
@@ -105,5 +126,8 @@ class PSystem:
         if gamma >= self.d:
             raise ValueError(f"gamma must be 0 (w^-) or 1 (w^+), got {gamma}")
         levels = in_interval("levels", levels, 0.0, 1.0)
+        if levels.ndim == 0 or levels.shape[-1] != self.d:
+            raise ValueError(f"levels must have a last axis of length d = {self.d} (w^-, w^+), got shape "
+                             f"{levels.shape}")
         spread = levels[..., PLUS] - levels[..., MINUS]
         return -(self.speed_scale / self.a) * np.arctan(np.sinh(self.a * spread))

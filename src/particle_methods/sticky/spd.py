@@ -19,9 +19,22 @@ from __future__ import annotations
 import numpy as np
 
 from ..jit import njit
-from ..validation import finite_array, integer_at_least, nonnegative, same_length, sorted_array
+from ..validation import (
+    ParameterTypeError,
+    finite_array,
+    finite_result,
+    integer_at_least,
+    nonnegative,
+    same_length,
+    sorted_array,
+)
 
-_MAX_PARTICLES = 2**31 - 1
+#: Largest number of positions one call takes or returns: 0.8 GB of float64, and seconds for an
+#: O(n) pass. The figures use at most 3 * 10**6 particles (config ``sticky.cost.hull_n``). It also
+#: keeps the particle counts of the kernel within its int32 array.
+MAX_POSITIONS = 10**8
+
+_LARGEST = float(np.finfo(np.float64).max)
 
 
 @njit
@@ -62,10 +75,27 @@ def _checked_state(x, v):
     x = sorted_array("x", x)
     v = finite_array("v", v)
     n = same_length(x=x, v=v)
-    integer_at_least("number of particles n", n, 1)
-    if n > _MAX_PARTICLES:
-        raise ValueError(f"number of particles n must be below 2**31, got {n}")
+    integer_at_least("number of particles n", n, 1, MAX_POSITIONS)
     return x, v
+
+
+def _check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: str = "v") -> None:
+    """Refuse free positions x + t v that could overflow the sums of the hull.
+
+    The kernel adds up to n free positions and multiplies such sums by particle counts, so
+    n^2 (|x| + t |v|) must stay below the largest double; then every sum, and every position
+    (an average of free positions), is finite. ``x`` is sorted along its last axis (one row per
+    type) and ``speed`` is max |v|.
+    """
+    n = x.shape[-1]
+    with np.errstate(over="ignore"):
+        reach = max(np.abs(x[..., 0]).max(), np.abs(x[..., -1]).max()) + t * speed
+    limit = _LARGEST / n**2
+    if not reach <= limit:
+        raise ValueError(
+            f"x + {time_name} {velocity_name} may overflow: |x| + {time_name} |{velocity_name}| reaches {reach:.3g}, "
+            f"above {limit:.3g} (the largest double / n^2, n = {n}); reduce {time_name} or {velocity_name}"
+        )
 
 
 def spd_positions(x, v, t: float) -> np.ndarray:
@@ -79,6 +109,7 @@ def spd_positions(x, v, t: float) -> np.ndarray:
     """
     x, v = _checked_state(x, v)
     t = nonnegative("t", t)
+    _check_reach(x, np.abs(v).max(), t)
     out = np.empty_like(x)
     _hull_positions(x, v, t, out)
     return out
@@ -93,6 +124,11 @@ def spd_trajectories(x, v, times) -> np.ndarray:
     times = finite_array("times", times)
     if np.any(times < 0):
         raise ValueError("times must be non-negative")
+    if times.size * x.size > MAX_POSITIONS:
+        raise ValueError(f"{times.size} times of {x.size} particles give {times.size * x.size:.3g} positions, more "
+                         f"than MAX_POSITIONS = {MAX_POSITIONS:.0e} in one call: split the times")
+    if times.size:
+        _check_reach(x, np.abs(v).max(), times.max(), "times")
     out = np.empty((times.size, x.size))
     for row, t in enumerate(times):
         _hull_positions(x, v, t, out[row])
@@ -114,6 +150,11 @@ def velocities_from_flux(flux, n: int) -> np.ndarray:
     The integral of lambda = Lambda' is a difference of the flux itself, so the
     velocities are exact: n (Lambda(k/n) - Lambda((k-1)/n)).
     """
-    n = integer_at_least("n", n, 1)
+    if not callable(flux):
+        raise ParameterTypeError(f"flux must be callable (the flux Lambda of (1.1)), got {flux!r}")
+    n = integer_at_least("n", n, 1, MAX_POSITIONS)
     values = finite_array("flux values", flux(np.arange(n + 1) / n))
-    return n * np.diff(values)
+    if values.size != n + 1:
+        raise ValueError(f"flux must return one value per level k/n, k = 0..n ({n + 1}), got {values.size}")
+    return finite_result("a velocity n (flux(k/n) - flux((k-1)/n))", n * np.diff(values),
+                         "the flux values are too large: their differences overflow")

@@ -1,0 +1,51 @@
+"""Checks of the LTP inputs: the arrays a compiled kernel reads, values of any shape, object types.
+
+The compiled loops of :mod:`.kernels` index their arrays without bounds checks, so every array
+reaches them through these checks: particles (2.23) with one centre, weight and width h_k > 0
+each, a piecewise cubic shape (2.12), (2.13) with one row of four coefficients per piece, and
+the power terms of a potential with exponents above 1.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..validation import finite_array, integer_at_least, same_length, sorted_array
+
+#: Most particles one call may use: the pair sums cost (particles)^2 per time step, and the
+#: repository's finest grid (h = 0.0025 on [-1, 1]) has 803 particles.
+MAX_PARTICLES = 10_000
+
+
+def particle_arrays(centres, weights, widths) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Centres x_k, weights omega_k and widths h_k > 0 of 1 to MAX_PARTICLES particles (2.23)."""
+    centres, weights, widths = (np.ascontiguousarray(finite_array(name, values)) for name, values in
+                                (("centres", centres), ("weights", weights), ("widths", widths)))
+    count = same_length(centres=centres, weights=weights, widths=widths)
+    integer_at_least("the number of particles", count, 1, MAX_PARTICLES)
+    if np.any(widths <= 0):
+        raise ValueError("widths must be positive")
+    return centres, weights, widths
+
+
+def piece_arrays(breaks, coefficients) -> tuple[np.ndarray, np.ndarray]:
+    """Breaks -r = s_0 < ... < s_J = r of a shape and its (J, 4) cubic coefficients."""
+    breaks = np.ascontiguousarray(sorted_array("breaks", breaks))
+    if breaks.size < 2 or np.any(np.diff(breaks) <= 0) or breaks[0] != -breaks[-1]:
+        raise ValueError(f"breaks must increase strictly from -r to r, got {breaks}")
+    coefficients = np.ascontiguousarray(finite_array("coefficients", coefficients, ndim=2))
+    if coefficients.shape != (breaks.size - 1, 4):
+        raise ValueError(f"coefficients must have shape ({breaks.size - 1}, 4), one cubic per piece, "
+                         f"got {coefficients.shape}")
+    return breaks, coefficients
+
+
+def power_arrays(coefficients, exponents) -> tuple[np.ndarray, np.ndarray]:
+    """Coefficients c_j and exponents a_j > 1 of W = sum_j c_j |x|^a_j / a_j, at least one term."""
+    coefficients = np.ascontiguousarray(finite_array("coefficients", coefficients))
+    exponents = np.ascontiguousarray(finite_array("exponents", exponents))
+    if same_length(coefficients=coefficients, exponents=exponents) < 1:
+        raise ValueError("a potential needs at least one term")
+    if np.any(exponents <= 1.0):
+        raise ValueError(f"every exponent must exceed 1 (W' continuous, W'' integrable), got {exponents}")
+    return coefficients, exponents
