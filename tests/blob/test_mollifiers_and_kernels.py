@@ -85,6 +85,17 @@ def on_one_thread(function, *args):
         numba.set_num_threads(threads)
 
 
+def assert_matches_generic_on_any_thread_count(x, m, arrays):
+    """The tiled sums agree with the generic loop to 1e-13 and are bit-identical on one thread."""
+    fast = pair_sums(x, m, *arrays)
+    generic = generic_sums(x, m, arrays)
+    for ours, reference in zip(fast, generic):
+        assert np.all(np.isfinite(ours))
+        assert np.abs(ours - reference).max() <= 1e-13 * np.abs(reference).max()
+    one_thread = on_one_thread(pair_sums, x, m, *arrays)
+    assert all(np.array_equal(a, b) for a, b in zip(one_thread, fast))
+
+
 def generic_sums(x, m, arrays):
     """The generic loop of every kernel, which the vectorised paths must reproduce."""
     from particle_methods.blob import kernels
@@ -118,13 +129,7 @@ def test_newtonian_2d_fast_path_matches_the_generic_sums(rng):
     x[1] = x[0]
     m = rng.uniform(0.1, 1, n) / n
     arrays = kernels.kernel_2d("newtonian", mollifier(4, 2), 0.05).arrays()
-    fast = pair_sums(x, m, *arrays)
-    generic = generic_sums(x, m, arrays)
-    for ours, reference in zip(fast, generic):
-        assert np.all(np.isfinite(ours))
-        assert np.abs(ours - reference).max() <= 1e-13 * np.abs(reference).max()
-    one_thread = on_one_thread(pair_sums, x, m, *arrays)
-    assert all(np.array_equal(a, b) for a, b in zip(one_thread, fast))
+    assert_matches_generic_on_any_thread_count(x, m, arrays)
     few = x[:40]   # below PARALLEL_MIN_PARTICLES: one thread
     small = pair_sums(few, m[:40], *arrays)
     small_generic = generic_sums(few, m[:40], arrays)
@@ -188,13 +193,7 @@ def test_tiled_2d_path_matches_the_generic_sums(rng, name):
     x[1] = x[0]
     x[2] = (3.0, 0.0)   # beyond the table's radius 2 from most partners
     m = rng.uniform(0.1, 1, n) / n
-    fast = pair_sums(x, m, *arrays)
-    generic = generic_sums(x, m, arrays)
-    for ours, reference in zip(fast, generic):
-        assert np.all(np.isfinite(ours))
-        assert np.abs(ours - reference).max() <= 1e-13 * np.abs(reference).max()
-    one_thread = on_one_thread(pair_sums, x, m, *arrays)
-    assert all(np.array_equal(a, b) for a, b in zip(one_thread, fast))
+    assert_matches_generic_on_any_thread_count(x, m, arrays)
 
 
 def test_2d_newtonian_sums_refuse_positions_beyond_the_exponential_range():
