@@ -1,7 +1,7 @@
 """Rebuild every figure and checked claim of the three papers.
 
 snakemake --cores 2                                     # full resolution
-snakemake --cores 2 sticky                              # one paper: sticky, ltp or blob
+snakemake --cores 2 sticky                              # one part: sticky, ltp, blob or cross
 snakemake --cores 2 --configfile config/quick.yaml      # coarse, for tests and CI (in runs/quick)
 snakemake verify                                        # fails when a claim fails
 
@@ -29,6 +29,7 @@ workdir: config["output_root"]
 include: "rules/sticky.smk"
 include: "rules/ltp.smk"
 include: "rules/blob.smk"
+include: "rules/cross.smk"
 include: "rules/report.smk"
 
 
@@ -39,6 +40,7 @@ rule all:
         STICKY_FIGURES,
         LTP_FIGURES,
         BLOB_FIGURES,
+        CROSS_FIGURES,
         "results/claims.csv",
         "results/claims.md",
         NOTEBOOKS,
@@ -68,6 +70,14 @@ rule blob:
         BLOB_FIGURES,
         "results/blob/claims.csv",
         "notebooks/executed/blob.ipynb",
+
+
+rule cross:
+    """The cross-method comparison alone: its figures, claims and notebook."""
+    input:
+        CROSS_FIGURES,
+        "results/cross/claims.csv",
+        "notebooks/executed/cross.ipynb",
 
 
 onsuccess:

@@ -6,7 +6,7 @@ import shutil
 
 from particle_methods.environment import commit
 
-PAPERS = ["sticky", "ltp", "blob"]
+PAPERS = ["sticky", "ltp", "blob", "cross"]
 CLAIM_SOURCES = expand("results/{paper}/claims.csv", paper=PAPERS)
 RATE_SOURCES = expand("results/{paper}/rates.json", paper=PAPERS)
 VERDICTS = source(ROOT / config["verdicts"])
@@ -59,11 +59,13 @@ NOTEBOOK_INPUTS = {
         "results/blob/fig7.npz",
         "results/blob/claims.csv",
     ],
+    "cross": ["results/cross/study.npz", "results/cross/behaviour.npz", "results/cross/claims.csv"],
 }
 NOTEBOOK_FIGURES = {
     "sticky": STICKY_FIGURES,
     "ltp": LTP_FIGURES,
     "blob": BLOB_FIGURES,
+    "cross": CROSS_FIGURES,
 }
 NOTEBOOKS = expand("notebooks/executed/{paper}.ipynb", paper=NOTEBOOK_INPUTS)
 
@@ -113,6 +115,7 @@ SNIPPETS = expand(
         "claims_sticky",
         "claims_ltp",
         "claims_blob",
+        "claims_cross",
         "commit",
         "measured",
         "parameters",
@@ -157,7 +160,8 @@ rule manuscript:
     input:
         source=source(ROOT / "paper" / "ms.tex"),
         snippets=SNIPPETS,
-        figures=[*STICKY_FIGURES, *LTP_FIGURES, *BLOB_FIGURES],
+        figures=[*STICKY_FIGURES, *LTP_FIGURES, *BLOB_FIGURES, *CROSS_FIGURES],
+        tables=["results/cross/table.tex"],
     output:
         "paper/ms.pdf",
     log:

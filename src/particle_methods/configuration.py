@@ -36,6 +36,8 @@ FIT_WINDOWS = {
                            "sticky.cost.steps_values"],
     "ltp.quadratic.dt_study.fit_points": ["ltp.quadratic.dt_study.dt_values"],
     "blob.fig1.fit_points": ["blob.fig1.inverse_h"],
+    "cross.fit_points": ["cross.spd_n", "cross.grid_inverse_h", "cross.blob.inverse_h", "cross.ltp.inverse_h",
+                         "cross.godunov.cells"],
     "blob.fig2.fit_points": ["blob.fig2.inverse_h"],
     "blob.fig3.fit_points": ["blob.fig3.inverse_h"],
     "blob.fig4.fit_points": ["blob.fig4.inverse_h"],

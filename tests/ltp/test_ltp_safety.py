@@ -42,7 +42,7 @@ from fuzzing import FUZZ, bad_array, bad_scalar, extreme, safe_call, watchdog
 RHO1, RHO2, RHO3 = (density_named(name) for name in ("rho1", "rho2", "rho3"))
 QUADRATIC = potential("quadratic")
 POTENTIALS = [QUADRATIC, potential("power", a=1.5), potential("attractive_repulsive", a=3, b=1.1),
-              Potential("repulsive x^2/2", (-1.0,), (2.0,))]
+              Potential("repulsive x^2/2", (-1.0,), (2.0,)), potential("newtonian")]
 RUN = {"initial": "rho2", "potential": potential("power", a=1.5), "h": 0.25, "dt": 0.05, "t_final": 0.1}
 SIM = simulate(**RUN, record_every=1)
 
@@ -66,6 +66,8 @@ def test_mismatched_particle_arrays_are_refused_before_the_kernels():
     x = np.linspace(-1, 1, 5)
     with pytest.raises(ValueError, match="weights has 3"):
         kernels.density_at(x, centres, weights, widths, B3.breaks, B3.coefficients)
+    with pytest.raises(ValueError, match="weights has 3"):
+        kernels.cumulative_mass_at(x, centres, weights, widths, B3.breaks, B3.coefficients)
     with pytest.raises(ValueError, match="weights has 3"):
         kernels.convolutions(x, centres, weights, widths, *QUADRATIC.as_arrays(), B3.breaks, B3.coefficients)
 
@@ -168,7 +170,7 @@ def test_fuzz_names(value):
 
 
 @FUZZ
-@given(st.sampled_from(["quadratic", "half_quadratic", "power", "attractive_repulsive"]),
+@given(st.sampled_from(["quadratic", "half_quadratic", "newtonian", "power", "attractive_repulsive"]),
        st.sampled_from(["a", "b"]), st.none() | any_value)
 def test_fuzz_potential_parameters(kind, name, value):
     one_bad(potential, {"kind": kind, "a": 3.0, "b": 1.5}, name, value)
@@ -177,7 +179,7 @@ def test_fuzz_potential_parameters(kind, name, value):
 
 
 @FUZZ
-@given(extreme | st.floats(1.01, 5.0), extreme | st.floats(1.01, 5.0), bad_array | short_arrays)
+@given(extreme | st.floats(1.0, 5.0), extreme | st.floats(1.0, 5.0), bad_array | short_arrays)
 def test_fuzz_potential_values(a, b, x):
     for w in (safe_call(potential, "power", a), safe_call(potential, "attractive_repulsive", a, b)):
         if w is not None:
@@ -241,6 +243,7 @@ def test_fuzz_particles(centres, weights, widths, x, w):
     particles = safe_call(Particles, centres, weights, widths, B3)
     if particles is not None:
         safe_call(particles.density, x)
+        safe_call(particles.cumulative_mass, x)
         safe_call(particles.convolutions, w, x)
         safe_call(particles.convolutions, w)
         safe_call(lambda: particles.mass)
@@ -267,6 +270,7 @@ def test_fuzz_kernels(convolution_argument, density_argument, value):
     density_arguments = [particles.centres, *arrays, *shape]
     density_arguments[density_argument] = value
     safe_call(kernels.density_at, *density_arguments)
+    safe_call(kernels.cumulative_mass_at, *density_arguments)
 
 
 @FUZZ

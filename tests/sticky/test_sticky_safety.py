@@ -34,6 +34,7 @@ from particle_methods.sticky import (
     spd_positions,
     spd_trajectories,
     velocities_from_flux,
+    velocities_from_levels,
 )
 from particle_methods.sticky.cases import empirical_cdf, psystem_initial_measures
 from particle_methods.sticky.events import sticky_collisions
@@ -115,15 +116,23 @@ def states(n):
     return st.tuples(row.map(sorted), row).map(lambda pair: tuple(map(np.array, pair)))
 
 
+def weighted_states(n):
+    """Positions, velocities and None (equal masses) or n positive masses, extreme ones included."""
+    masses = st.lists(st.one_of(st.sampled_from([5e-324, 1e-300, 1e300, 1.7e308]), st.floats(1e-3, 1e3)),
+                      min_size=n, max_size=n).map(np.array)
+    return st.tuples(states(n), st.one_of(st.none(), masses)).map(lambda pair: (*pair[0], pair[1]))
+
+
 @FUZZ
-@given(state=st.one_of(st.tuples(array([0.0, 0.5, 1.0], ordered=True), array([1.0, 0.0, -1.0])),
-                       st.integers(1, 5).flatmap(states)),
+@given(state=st.one_of(st.tuples(array([0.0, 0.5, 1.0], ordered=True), array([1.0, 0.0, -1.0]),
+                                 st.one_of(st.none(), array([1.0, 0.5, 2.0]))),
+                       st.integers(1, 5).flatmap(weighted_states)),
        t=scalar(1.0), times=array([0.0, 0.5, 2.0]))
 def test_spd_entry_points(state, t, times):
-    x, v = state
-    safe_call(naming(spd_positions, "x", "v", "t", "particles"), x, v, t)
-    safe_call(naming(spd_trajectories, "x", "v", "times", "particles"), x, v, times)
-    safe_call(naming(sticky_collisions, "x", "v", "t", "particles"), x, v, t)
+    x, v, masses = state
+    safe_call(naming(spd_positions, "x", "v", "t", "particles", "masses"), x, v, t, masses)
+    safe_call(naming(spd_trajectories, "x", "v", "times", "particles", "masses"), x, v, times, masses)
+    safe_call(naming(sticky_collisions, "x", "v", "t", "particles", "masses"), x, v, t, masses)
     safe_call(naming(cumulative_free_positions, "x", "v", "t", "particles"), x, v, t)
     safe_call(naming(hull_vertices, "q"), x)
     safe_call(naming(cluster_sizes, "positions"), x)
@@ -131,9 +140,13 @@ def test_spd_entry_points(state, t, times):
 
 
 @FUZZ
-@given(flux=st.sampled_from(FLUXES), n=count(5), u=array([0.0, 0.5, 1.0]))
-def test_fluxes_and_initial_velocities(flux, n, u):
+@given(flux=st.sampled_from(FLUXES), n=count(5), u=array([0.0, 0.5, 1.0]),
+       levels=st.one_of(array([0.0, 0.25, 1.0], ordered=True),  # and from c_0 = 0, extreme widths included:
+                        st.lists(st.one_of(extreme, st.floats(0, 10)), min_size=1, max_size=5)
+                        .map(lambda c: np.array([0.0, *sorted(c)]))))
+def test_fluxes_and_initial_velocities(flux, n, u, levels):
     safe_call(naming(velocities_from_flux, "flux", "n"), flux, n)
+    safe_call(naming(velocities_from_levels, "flux", "levels"), flux, levels)
     safe_call(naming(burgers_flux, "u"), u)
     safe_call(naming(concave_flux, "u"), u)
 
@@ -219,6 +232,12 @@ class Wild(QuantileMeasure):
 @pytest.mark.parametrize("call, error, message", [
     # Overflow of x + v t: was NaN.
     (lambda: spd_positions([0, 0.5, 1], [1e308, 0, -1e308], 10.0), ValueError, "reduce t or v"),
+    (lambda: spd_positions([0, 0.5, 1], [1e308, 0, -1e308], 10.0, [1.0, 1e-3, 1e3]), ValueError, "reduce t or v"),
+    # Masses: positive, one per particle, at most MAX_MASS_RATIO apart.
+    (lambda: spd_positions([0.0, 1.0], [0.0, 0.0], 1.0, [1.0, 0.0]), ValueError, "masses must be positive"),
+    (lambda: spd_trajectories([0.0, 1.0], [0.0, 0.0], [1.0], [1.0]), ValueError, "masses has 1"),
+    (lambda: sticky_collisions([0.0, 1.0], [0.0, 0.0], 1.0, [5e-324, 1.7e308]), ValueError, "MAX_MASS_RATIO"),
+    (lambda: velocities_from_levels(burgers_flux, [0.25, 1.0]), ValueError, "levels must start at c_0 = 0"),
     (lambda: mspd_trajectory(CONFIGURATION, PSystem(), 1e308, 5), ValueError, "reduce Delta"),
     # Gamma(1 + 1/alpha) overflowed: was NaN.
     (lambda: averaged_quantiles(Weibull(1e-300), 10), ValueError, "alpha must be at least"),

@@ -25,10 +25,11 @@ from .initial import Data1D, Data2D, data_1d, data_2d, grid_1d, grid_2d
 from .kernels import Kernel, kernel_1d, kernel_2d
 from .mollifiers import Mollifier, mollifier
 from .rings import uniform_ring_radius
-from .solver import BlobRun, integrate_particles, mass_defect, run_1d, run_2d
+from .solver import BlobRun, CollisionError, integrate_particles, mass_defect, run_1d, run_2d
 
 __all__ = [
     "BlobRun",
+    "CollisionError",
     "Data1D",
     "Data2D",
     "data_2d",

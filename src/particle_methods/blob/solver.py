@@ -45,6 +45,15 @@ METHODS = {"blob": "K_delta = K * psi_delta, delta = h^q (Definition 2.2)", "par
 RTOL_RANGE = (100 * np.finfo(float).eps, 1.0)
 
 
+class CollisionError(ValueError):
+    """Two particles of the 1D particle method with K = |x|/2 meet at ``time``: past it the method's
+    ODE has no classical solution (see :func:`integrate_particles`)."""
+
+    def __init__(self, message: str, time: float):
+        super().__init__(message)
+        self.time = time
+
+
 @dataclass(frozen=True)
 class BlobRun:
     """Trajectories (times, N, d), densities (times, N) or None, masses (N,), the grid step h (None
@@ -114,7 +123,7 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
     d rho_i/dt = -div v_i rho_i, at the output ``times`` (strictly increasing from t >= 0; a single
     time 0 returns the initial state). Raises ValueError beyond the limits of
     :mod:`~particle_methods.blob.checks` and at the first collision of a 1D particle method whose
-    kernel's gradient jumps at 0."""
+    kernel's gradient jumps at 0 (a :class:`CollisionError`, carrying the time)."""
     kernel = instance("kernel", kernel, Kernel)
     points = finite_array("points", points, ndim=2)
     n, dimension = points.shape
@@ -164,9 +173,10 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
     solution = solve_ivp(rhs, (0.0, times[-1]), start, method="DOP853", t_eval=times, rtol=rtol, atol=atol,
                          events=collision)
     if solution.status == 1:
-        raise ValueError(f"two particles collide at t = {solution.t_events[0][0]:.6g}: the particle method with the "
-                         f"kernel {kernel.name}, whose gradient jumps at 0, is defined only up to the first collision; "
-                         "ask for times before it")
+        time = float(solution.t_events[0][0])
+        raise CollisionError(f"two particles collide at t = {time:.6g}: the particle method with the kernel "
+                             f"{kernel.name}, whose gradient jumps at 0, is defined only up to the first collision; "
+                             "ask for times before it", time)
     if not solution.success:
         raise ValueError(f"the ODE integrator failed: {solution.message}")
     states = solution.y.T

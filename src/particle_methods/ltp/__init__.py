@@ -4,8 +4,8 @@ Campos Pinto, Carrillo, Charles and Choi. Public entry points:
 
 - :func:`simulate`: run the LTP or SP method, get a :class:`Simulation` whose
   :meth:`~Simulation.at` gives :class:`Particles` (centres, weights, widths) with a
-  ``density(x)`` method evaluating the reconstruction (2.27);
-- :func:`potential`: the potentials of section 6; :func:`density_named`: data (6.1)-(6.3);
+  ``density(x)`` method evaluating the reconstruction (2.27) and ``cumulative_mass(x)`` its CDF;
+- :func:`potential`: the potentials of section 6 and the Newtonian |x|/2; :func:`density_named`: data (6.1)-(6.3);
 - :data:`HAT`, :data:`B3` (2.12), (2.13) and :func:`hat_biorthogonal_kernel`;
 - :func:`exact_density`: the exact solution (6.4) for quadratic potentials.
 
@@ -19,7 +19,7 @@ from .exact import exact_density, exact_support
 from .initial import InitialDensity, density_named, grid_particles
 from .potentials import Potential, potential
 from .shapes import B3, HAT, Shape, hat_biorthogonal_kernel, shape_named
-from .solver import Particles, Simulation, simulate
+from .solver import Particles, Simulation, StabilityError, simulate
 
 __all__ = [
     "B3",
@@ -29,6 +29,7 @@ __all__ = [
     "Potential",
     "Shape",
     "Simulation",
+    "StabilityError",
     "density_named",
     "exact_density",
     "exact_support",

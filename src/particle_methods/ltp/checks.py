@@ -3,7 +3,7 @@
 The compiled loops of :mod:`.kernels` index their arrays without bounds checks, so every array
 reaches them through these checks: particles (2.23) with one centre, weight and width h_k > 0
 each, a piecewise cubic shape (2.12), (2.13) with one row of four coefficients per piece, and
-the power terms of a potential with exponents above 1.
+the power terms of a potential with exponents of at least 1.
 """
 
 from __future__ import annotations
@@ -41,11 +41,16 @@ def piece_arrays(breaks, coefficients) -> tuple[np.ndarray, np.ndarray]:
 
 
 def power_arrays(coefficients, exponents) -> tuple[np.ndarray, np.ndarray]:
-    """Coefficients c_j and exponents a_j > 1 of W = sum_j c_j |x|^a_j / a_j, at least one term."""
+    """Coefficients c_j and exponents a_j >= 1 of W = sum_j c_j |x|^a_j / a_j, at least one term.
+
+    a_j > 1 gives W' continuous and W'' locally integrable; a_j = 1 is the Newtonian c|x|, with W' = c sign(x)
+    bounded and W'' = 2c delta a Dirac mass (the kernels convolve it exactly). Below 1, W' is unbounded at 0.
+    """
     coefficients = np.ascontiguousarray(finite_array("coefficients", coefficients))
     exponents = np.ascontiguousarray(finite_array("exponents", exponents))
     if same_length(coefficients=coefficients, exponents=exponents) < 1:
         raise ValueError("a potential needs at least one term")
-    if np.any(exponents <= 1.0):
-        raise ValueError(f"every exponent must exceed 1 (W' continuous, W'' integrable), got {exponents}")
+    if np.any(exponents < 1.0):
+        raise ValueError(f"every exponent must be at least 1 (a = 1 is the Newtonian |x|; below 1 W' is unbounded "
+                         f"at 0), got {exponents}")
     return coefficients, exponents

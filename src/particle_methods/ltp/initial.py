@@ -32,7 +32,11 @@ MAX_INDEX = 2.0**53
 
 @dataclass(frozen=True)
 class InitialDensity:
-    """A probability density on [lower, upper] (finite, lower < upper) with its CDF."""
+    """A density of finite mass on [lower, upper] (finite, lower < upper) with its CDF int_lower^x rho^0.
+
+    The particle methods need no unit mass: the weights (2.14), (2.16) are differences of the CDF and
+    sum to the mass; (6.1)-(6.3) are normalised to unit mass.
+    """
 
     name: str
     pdf: Callable
@@ -53,10 +57,13 @@ class InitialDensity:
 
     @property
     def mean(self) -> float:
-        """Centre of mass lambda = int x rho^0(x) dx."""
-        mean = float(integrate.quad(lambda x: x * float(self.pdf(x)), self.lower, self.upper,
-                                    epsabs=1e-14, limit=200)[0])
-        return finite_result("the centre of mass", mean, f"the pdf of {self.name} is not integrable")
+        """Centre of mass lambda of (6.4): int x rho^0(x) dx divided by the mass cdf(upper) - cdf(lower)."""
+        moment = float(integrate.quad(lambda x: x * float(self.pdf(x)), self.lower, self.upper,
+                                      epsabs=1e-14, limit=200)[0])
+        mass = float(self.cdf(self.upper) - self.cdf(self.lower))
+        if not mass > 0:
+            raise ValueError(f"the density {self.name} must have positive mass, its cdf gives {mass}")
+        return finite_result("the centre of mass", moment / mass, f"the pdf of {self.name} is not integrable")
 
 
 def _gaussian_bumps():

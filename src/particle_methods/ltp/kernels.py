@@ -1,6 +1,6 @@
-"""Compiled kernels of the LTP and SP methods: convolutions W'*rho_h, W''*rho_h and rho_h itself.
+"""Compiled kernels of the LTP and SP methods: convolutions W'*rho_h, W''*rho_h, rho_h and its CDF.
 
-rho_h = sum_k omega_k phi((x - x_k)/h_k)/h_k with phi piecewise cubic, so
+rho_h = sum_k omega_k phi((x - x_k)/h_k)/h_k (2.27) with phi piecewise cubic, so
 
     (K * phi_k)(t) = int K(t - x_k - h_k s) phi(s) ds = sum over pieces j of int_j K(d - h_k s) P_j(s) ds
 
@@ -15,10 +15,14 @@ like rho^(-2n) with rho ~ 2 D / L the Bernstein-ellipse parameter (D the distanc
 the piece's middle to the singularity, L its half-length): 6 nodes beyond 4 lengths,
 4 beyond 12 and 3 beyond 40 keep every piece below about 1e-13 relative error.
 Terms with a = 2 need no pair sums: (c z) * rho_h and c * rho_h are moments.
+Terms with a = 1, W = c|x| (the Newtonian potential in 1D), have W' = c sign(z) and the
+distributional W'' = 2c delta, so both convolutions are exact without piece integrals:
+(W' * rho_h)(t) = c (2 F_h(t) - M) with M = sum_k omega_k and F_h(t) = sum_k omega_k Phi((t - x_k)/h_k)
+the cumulative mass (Phi the CDF of phi, exact on each cubic piece), and (W'' * rho_h)(t) = 2c rho_h(t).
 
-The public :func:`convolutions` and :func:`density_at` check every array before the compiled
-loops read it (unchecked, they would read past mismatched arrays) and check that the results
-are finite.
+The public :func:`convolutions`, :func:`density_at` and :func:`cumulative_mass_at` check every
+array before the compiled loops read it (unchecked, they would read past mismatched arrays) and
+check that the results are finite.
 """
 
 from __future__ import annotations
@@ -103,6 +107,38 @@ def _piece_gauss(d, width, lo, hi, coefficients, a, nodes, weights):
     return first * half, second * half
 
 
+@njit
+def _shape_value(s, breaks, pieces):
+    """phi(s) of the piecewise cubic shape, 0 outside the open support (-r, r)."""
+    if s <= breaks[0] or s >= breaks[-1]:
+        return 0.0
+    j = 0
+    while j < pieces.shape[0] - 1 and s >= breaks[j + 1]:
+        j += 1
+    c = pieces[j]
+    return c[0] + s * (c[1] + s * (c[2] + s * c[3]))
+
+
+@njit
+def _shape_cdf(s, breaks, pieces):
+    """Phi(s) = int_{-r}^s phi: 0 left of the support, 1 right of it, exact antiderivatives of the cubic
+    pieces in between."""
+    if s <= breaks[0]:
+        return 0.0
+    if s >= breaks[-1]:
+        return 1.0
+    total = 0.0
+    for j in range(pieces.shape[0]):
+        lo = breaks[j]
+        if s <= lo:
+            break
+        hi = min(s, breaks[j + 1])
+        c = pieces[j]
+        total += (hi * (c[0] + hi * (c[1] / 2.0 + hi * (c[2] / 3.0 + hi * c[3] / 4.0)))
+                  - lo * (c[0] + lo * (c[1] / 2.0 + lo * (c[2] / 3.0 + lo * c[3] / 4.0))))
+    return total
+
+
 @njit(parallel=True)
 def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
     """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i."""
@@ -124,6 +160,19 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
                 # W' = c z and W'' = c: moments of rho_h (each phi_k has unit mass and mean x_k).
                 f += c * (targets[i] * total_mass - first_moment)
                 s2 += c * total_mass
+                continue
+            if a == 1.0:
+                # W' = c sign(z) and W'' = 2c delta: the cumulative mass F_h and rho_h itself, no piece integrals.
+                cumulative = 0.0
+                density = 0.0
+                for k in range(centres.size):
+                    s = (targets[i] - centres[k]) / widths[k]
+                    cumulative += weights[k] * _shape_cdf(s, breaks, pieces)
+                    value = _shape_value(s, breaks, pieces)
+                    if value != 0.0:
+                        density += weights[k] * value / widths[k]
+                f += c * (2.0 * cumulative - total_mass)
+                s2 += 2.0 * c * density
                 continue
             term_first = 0.0
             term_second = 0.0
@@ -162,19 +211,24 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
 def _density_at(points, centres, weights, widths, breaks, pieces):
     """rho_h(points) = sum_k omega_k phi((x - x_k)/h_k)/h_k."""
     values = np.zeros(points.size)
-    radius = breaks[-1]
     for i in prange(points.size):
         total = 0.0
-        x = points[i]
         for k in range(centres.size):
-            s = (x - centres[k]) / widths[k]
-            if s <= -radius or s >= radius:
-                continue
-            j = 0
-            while j < pieces.shape[0] - 1 and s >= breaks[j + 1]:
-                j += 1
-            c = pieces[j]
-            total += weights[k] * (c[0] + s * (c[1] + s * (c[2] + s * c[3]))) / widths[k]
+            value = _shape_value((points[i] - centres[k]) / widths[k], breaks, pieces)
+            if value != 0.0:  # most particles miss the point: skip their division
+                total += weights[k] * value / widths[k]
+        values[i] = total
+    return values
+
+
+@njit(parallel=True)
+def _cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
+    """F_h(points) = sum_k omega_k Phi((x - x_k)/h_k) = int_{-inf}^x rho_h."""
+    values = np.zeros(points.size)
+    for i in prange(points.size):
+        total = 0.0
+        for k in range(centres.size):
+            total += weights[k] * _shape_cdf((points[i] - centres[k]) / widths[k], breaks, pieces)
         values[i] = total
     return values
 
@@ -183,7 +237,8 @@ OVERFLOW = "overflow: the particles are too narrow or too far from the points fo
 
 
 def convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
-    """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i, the velocity and Jacobian of (2.31)."""
+    """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i, the velocity and Jacobian of (2.31)
+    (for a term c|x|, a = 1, W'' * rho_h is the convolution with the Dirac mass 2c delta)."""
     targets = np.ascontiguousarray(finite_array("targets", targets))
     centres, weights, widths = particle_arrays(centres, weights, widths)
     coefficients, exponents = power_arrays(coefficients, exponents)
@@ -198,3 +253,12 @@ def density_at(points, centres, weights, widths, breaks, pieces):
     centres, weights, widths = particle_arrays(centres, weights, widths)
     breaks, pieces = piece_arrays(breaks, pieces)
     return finite_result("rho_h", _density_at(points, centres, weights, widths, breaks, pieces), OVERFLOW)
+
+
+def cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
+    """F_h(points) = int_{-inf}^x rho_h = sum_k omega_k Phi((x - x_k)/h_k), the cumulative mass of (2.27)
+    (Phi the CDF of the shape): 0 left of every particle, the total mass sum_k omega_k right of them."""
+    points = np.ascontiguousarray(finite_array("points", points))
+    centres, weights, widths = particle_arrays(centres, weights, widths)
+    breaks, pieces = piece_arrays(breaks, pieces)
+    return finite_result("F_h", _cumulative_mass_at(points, centres, weights, widths, breaks, pieces), OVERFLOW)

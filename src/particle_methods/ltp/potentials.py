@@ -1,8 +1,12 @@
 """Interaction potentials of section 6 as sums of power terms W(x) = sum_j c_j |x|^{a_j} / a_j.
 
 x^2 is (c, a) = (2, 2); x^2/2 is (1, 2); |x|^a/a is (1, a); |x|^a/a - |x|^b/b is
-(1, a), (-1, b). With a_j > 1 every term has W' = c sign(x)|x|^{a-1} continuous and
-W'' = c (a - 1)|x|^{a-2} locally integrable, singular at 0 when a < 2.
+(1, a), (-1, b); the attractive Newtonian potential of 1D, |x|/2, is (1/2, 1). With a_j > 1
+every term has W' = c sign(x)|x|^{a-1} continuous and W'' = c (a - 1)|x|^{a-2} locally
+integrable, singular at 0 when a < 2. A term with a = 1, c|x|, has W' = c sign(x) (0 at x = 0)
+and W'' = 2c delta, a Dirac mass at 0, outside the paper's theory (Theorem 1 asks W' Lipschitz and
+the singular potentials (5.1) stop short of the Newtonian singularity). :meth:`Potential.second_derivative`
+returns its regular part, 0 away from 0; the kernels convolve the Dirac mass exactly, W'' * rho = 2c rho.
 """
 
 from __future__ import annotations
@@ -15,7 +19,7 @@ from ..validation import finite_number, finite_result, finite_values, instance, 
 from .checks import power_arrays
 
 #: The exponents each kind of potential takes.
-KINDS = {"quadratic": (), "half_quadratic": (), "power": ("a",), "attractive_repulsive": ("a", "b")}
+KINDS = {"quadratic": (), "half_quadratic": (), "newtonian": (), "power": ("a",), "attractive_repulsive": ("a", "b")}
 OVERFLOW = "overflow: |x| too large (or too close to 0 for W'') for double precision"
 
 
@@ -48,12 +52,15 @@ class Potential:
         return finite_result("W'(x)", values, OVERFLOW)
 
     def second_derivative(self, x):
-        """W''(x); ValueError at x = 0 for exponents below 2, where W'' is infinite."""
+        """W''(x) for x != 0: the regular part, to which a term with a = 1 (W'' = 2c delta) adds 0.
+        ValueError at x = 0 for exponents below 2, where W'' is infinite (a Dirac mass for a = 1)."""
         x = np.abs(finite_values("x", x))
         if min(self.exponents) < 2.0 and np.any(x == 0.0):
-            raise ValueError(f"x must not contain 0: W'' of {self.name} is infinite there")
+            dirac = " (a Dirac mass for the terms with exponent 1)" if 1.0 in self.exponents else ""
+            raise ValueError(f"x must not contain 0: W'' of {self.name} is infinite there{dirac}")
         with np.errstate(over="ignore", invalid="ignore"):
-            values = sum(c * (a - 1) * x ** (a - 2) for c, a in zip(self.coefficients, self.exponents))
+            values = sum((c * (a - 1) * x ** (a - 2) for c, a in zip(self.coefficients, self.exponents) if a != 1.0),
+                         np.zeros_like(x))
         return finite_result("W''(x)", values, OVERFLOW)
 
     def as_arrays(self):
@@ -63,7 +70,8 @@ class Potential:
 
 def potential(kind: str, a: float | None = None, b: float | None = None) -> Potential:
     """Potentials of section 6: 'quadratic' x^2, 'half_quadratic' x^2/2, 'power' |x|^a/a,
-    'attractive_repulsive' |x|^a/a - |x|^b/b (a, b > 1; an exponent the kind does not take is refused)."""
+    'attractive_repulsive' |x|^a/a - |x|^b/b (a, b >= 1), and 'newtonian' |x|/2, the attractive Newtonian
+    potential of 1D (W'' = delta); an exponent the kind does not take is refused."""
     needed = one_of("potential", kind, KINDS)
     for name, value in (("a", a), ("b", b)):
         if name in needed and value is None:
@@ -74,6 +82,8 @@ def potential(kind: str, a: float | None = None, b: float | None = None) -> Pote
         return Potential("x^2", (2.0,), (2.0,))
     if kind == "half_quadratic":
         return Potential("x^2/2", (1.0,), (2.0,))
+    if kind == "newtonian":
+        return Potential("|x|/2", (0.5,), (1.0,))
     a = finite_number("a", a)
     if kind == "power":
         return Potential(f"|x|^{a:g}/{a:g}", (1.0,), (a,))

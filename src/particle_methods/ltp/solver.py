@@ -31,7 +31,7 @@ from ..validation import (
 )
 from .checks import particle_arrays
 from .initial import InitialDensity, density_named, grid_particles
-from .kernels import OVERFLOW, _convolutions, convolutions, density_at
+from .kernels import OVERFLOW, _convolutions, convolutions, cumulative_mass_at, density_at
 from .potentials import Potential
 from .shapes import Shape, shape_named
 
@@ -77,6 +77,12 @@ class Particles:
         """Reconstructed density rho_h(x) = sum_k omega_k phi((x - x_k)/h_k)/h_k, (2.27)."""
         return density_at(_points(x), self.centres, self.weights, self.widths, self.shape.breaks,
                           self.shape.coefficients)
+
+    def cumulative_mass(self, x) -> np.ndarray:
+        """Cumulative mass F_h(x) = int_{-inf}^x rho_h = sum_k omega_k Phi((x - x_k)/h_k) of (2.27), Phi the CDF
+        of the shape: 0 left of every particle, :attr:`mass` right of them."""
+        return cumulative_mass_at(_points(x), self.centres, self.weights, self.widths, self.shape.breaks,
+                                  self.shape.coefficients)
 
     def convolutions(self, potential: Potential, x=None):
         """((W' * rho_h)(x), (W'' * rho_h)(x)), at the centres by default."""
@@ -187,13 +193,22 @@ def _check_work(steps: int, count: int, potential: Potential, records: int):
                          f"MAX_RECORDED = {MAX_RECORDED:.3g} of one run: increase record_every")
 
 
+class StabilityError(ValueError):
+    """Explicit Euler (2.31) is refused at ``step`` (time ``time``): dt max_k (W'' * rho_h)(x_k) >= STABILITY."""
+
+    def __init__(self, message: str, step: int, time: float):
+        super().__init__(message)
+        self.step = step
+        self.time = time
+
+
 def _check_stability(n: int, dt: float, second: np.ndarray):
     """Refuse step n unless dt < STABILITY / max_k (W'' * rho_h^n)(x_k^n) (see :func:`simulate`)."""
     steepest = float(second.max())
     if dt * steepest >= STABILITY:
-        raise ValueError(f"dt = {dt:g} exceeds the stability bound {STABILITY:g} / max_k (W'' * rho_h)(x_k) = "
-                         f"{STABILITY / steepest:.3g} of explicit Euler (2.31) at step {n} (t = {n * dt:.6g})"
-                         + (": the particles collapse; reduce dt or the final time" if n else ""))
+        raise StabilityError(f"dt = {dt:g} exceeds the stability bound {STABILITY:g} / max_k (W'' * rho_h)(x_k) = "
+                             f"{STABILITY / steepest:.3g} of explicit Euler (2.31) at step {n} (t = {n * dt:.6g})"
+                             + (": the particles collapse; reduce dt or the final time" if n else ""), n, n * dt)
 
 
 def simulate(initial, potential: Potential, h: float, dt: float, t_final: float, *, shape: str = "b3",
@@ -218,8 +233,11 @@ def simulate(initial, potential: Potential, h: float, dt: float, t_final: float,
     is computed anyway. For W = c x^2/2, W'' * rho_h = c times the mass at every step: dt c < 1
     (beyond 2/c Euler diverges). Other potentials change W'' * rho_h in time and have no a priori
     bound (W'' is singular for exponents below 2), so the bound is checked at every step: at step
-    0 it refuses dt, later it reports the collapse (finite-time blow-up for |x|^a, a < 2). Every
-    step also checks that the convolutions, centres and widths stay finite and the widths positive.
+    0 it refuses dt, later it reports the collapse (finite-time blow-up for |x|^a, a < 2). For the
+    Newtonian W = c|x| (a = 1), W'' * rho_h = 2c rho_h: the bound is dt 2c max_k rho_h(x_k) < 1, and
+    as the exact density blows up (at t = 1 / (2c max rho^0)) an LTP run is refused; SP particles
+    keep their width eps, so rho_h stays below sum_k |omega_k| max phi / eps. Every step also
+    checks that the convolutions, centres and widths stay finite and the widths positive.
 
     Work limits: at most MAX_STEPS steps, MAX_PARTICLES particles (:func:`grid_particles`),
     MAX_PAIRS pair interactions and MAX_RECORDED recorded values per array.

@@ -2,8 +2,10 @@
 
 Public entry points:
 
-- :func:`spd_positions`, :func:`spd_trajectories`: SPD at given times (section 5.1.1);
-- :func:`velocities_from_flux`: initial velocities of section 1.1.3;
+- :func:`spd_positions`, :func:`spd_trajectories`: SPD at given times (section 5.1.1),
+  with equal masses 1/n or with given ``masses`` (for instance grid weights rho0(x_j) h);
+- :func:`velocities_from_flux`: initial velocities of section 1.1.3; :func:`velocities_from_levels`:
+  the same at cumulative masses 0 = c_0 < ... < c_n, for unequal masses c_k - c_{k-1};
 - :func:`median_quantiles` (2.1), :func:`averaged_quantiles` (1.9): initial positions;
 - measures with exact quantiles (:class:`Atoms`, :class:`Laplace`, ...) and exact
   entropy solutions (:class:`BurgersSolution`, :class:`ConcaveLaplaceSolution`);
@@ -27,7 +29,7 @@ from .measures import (
 )
 from .mspd import mspd_positions, mspd_trajectory, rank_velocities
 from .psystem import PSystem
-from .spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux
+from .spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux, velocities_from_levels
 
 __all__ = [
     "Atoms",
@@ -52,4 +54,5 @@ __all__ = [
     "spd_positions",
     "spd_trajectories",
     "velocities_from_flux",
+    "velocities_from_levels",
 ]

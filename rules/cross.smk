@@ -1,0 +1,91 @@
+"""One equation, every method: the 1D aggregation equation with K = |x|/2 solved by the sticky
+particles, the particle and blob methods, LTP, SP and Godunov's scheme, against its exact solution.
+"""
+
+CROSS = config["cross"]
+CROSS_CAPTIONS = {
+    "error_size": (
+        f"K = |x|/2 from (4.3) and (4.4): W1 distance to the exact solution against the number of particles or cells, at t = {listing(CROSS['times'])} (blow-up at t = 1). Dotted: W1 = {CROSS['target_error']:g}."
+    ),
+    "error_time": (
+        f"K = |x|/2 from (4.3) and (4.4): W1 distance to the exact solution against wall time after JIT warm-up (the same runs, timed on 2 cores with no other rule running), at t = {listing(CROSS['times'])}."
+    ),
+}
+CROSS_FIGURES = expand(
+    "figures/cross/{figure}.{ext}", figure=["error_size", "error_time"], ext=["pdf", "png"]
+)
+
+
+rule cross_study:
+    """Every method at every size on both data and times: W1 errors and wall times. It takes every
+    core, so that no other rule runs while it times."""
+    input:
+        code=imports("cross/study_data.py"),
+    output:
+        "results/cross/study.npz",
+    log:
+        "logs/cross/study.log",
+    conda:
+        ENVIRONMENT
+    threads: workflow.cores
+    params:
+        cfg=CROSS,
+    script:
+        "../scripts/cross/study_data.py"
+
+
+rule cross_behaviour:
+    """The particle method against the weighted SPD and past its first collision; LTP at the blow-up."""
+    input:
+        code=imports("cross/behaviour_data.py"),
+    output:
+        "results/cross/behaviour.npz",
+    log:
+        "logs/cross/behaviour.log",
+    conda:
+        ENVIRONMENT
+    params:
+        cfg=CROSS,
+    script:
+        "../scripts/cross/behaviour_data.py"
+
+
+rule cross_figure:
+    """Work-precision diagrams: W1 against size, and against wall time."""
+    input:
+        data="results/cross/study.npz",
+        code=imports("cross/plot_study.py"),
+    output:
+        **figure("figures/cross/{figure}"),
+    log:
+        "logs/cross/{figure}.log",
+    wildcard_constraints:
+        figure="error_size|error_time",
+    conda:
+        ENVIRONMENT
+    params:
+        caption=caption(CROSS_CAPTIONS, None),
+        cfg=CROSS,
+    script:
+        "../scripts/cross/plot_study.py"
+
+
+rule cross_claims:
+    """Measure every claim of the comparison from the cached results; record every fitted rate; write
+    the report's table of errors and times."""
+    input:
+        study="results/cross/study.npz",
+        behaviour="results/cross/behaviour.npz",
+        code=imports("cross/claims.py"),
+    output:
+        claims="results/cross/claims.csv",
+        rates="results/cross/rates.json",
+        table="results/cross/table.tex",
+    log:
+        "logs/cross/claims.log",
+    conda:
+        ENVIRONMENT
+    params:
+        cfg=CROSS,
+    script:
+        "../scripts/cross/claims.py"

@@ -1,0 +1,102 @@
+"""What the methods do at the blow-up: the particle method at its first collision and the ODE solver
+past it, the LTP method as the density blows up."""
+
+import numba
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from particle_methods.blob.solver import CollisionError
+from particle_methods.cross import methods
+from particle_methods.cross.exact import AggregationSolution
+from particle_methods.ltp.solver import StabilityError
+from particle_methods.workflow import logged, progress, save_results
+
+
+def first_collision(x, v):
+    """Earliest meeting time of neighbours moving at constant velocities v (before any collision)."""
+    closing = v[:-1] > v[1:]
+    return float(np.min(np.diff(x)[closing] / (v[:-1] - v[1:])[closing]))
+
+
+def stall(data, h, window, evaluations):
+    """Integrate the particle method's ODE past its first collision without stopping there (DOP853
+    at the blob package's tolerances, at most ``evaluations`` right-hand sides): (collision time,
+    right-hand sides before it, right-hand sides after it, time reached)."""
+    x, _, masses = methods.grid_particles(data, h)
+    collision = first_collision(x, methods.weighted_velocities(masses))
+    calls, before, reached = 0, 0, 0.0
+
+    class Stalled(Exception):
+        pass
+
+    def rhs(t, y):
+        nonlocal calls, before, reached
+        if calls >= evaluations:
+            raise Stalled
+        calls += 1
+        before += t < collision
+        reached = max(reached, t)
+        return methods.particle_velocities(y, masses)
+
+    try:
+        solve_ivp(rhs, (0.0, collision + window), x, method="DOP853", rtol=1e-12, atol=1e-14)
+    except Stalled:
+        pass
+    return collision, before, calls - before, reached
+
+
+def densest_particle(data, h, dt, t):
+    """(position, width / h) of the LTP particle where rho_h is largest at time t (a multiple of dt)."""
+    particles = methods.ltp_method(data, h, dt, t)
+    densest = int(np.argmax(particles.density(particles.centres)))
+    return particles.centres[densest], particles.widths[densest] / h
+
+
+def run(p, threads, output):
+    numba.set_num_threads(threads)  # the rule's share of the cores: more threads would wait on each other
+    data_names, ltp = p["data"], p["ltp"]
+    t_after = max(p["times"])
+    predicted, measured = np.empty(len(data_names)), np.empty(len(data_names))
+    stall_start, stall_before, stall_after, stall_reached = (np.empty(len(data_names)) for _ in range(4))
+    peak_position, peak_width = np.empty(len(data_names)), np.empty(len(data_names))
+    refusal = np.full((len(data_names), len(ltp["inverse_h"])), np.nan)
+    b = p["behaviour"]
+    for i, data in enumerate(data_names):
+        h = 1.0 / b["collision_inverse_h"]
+        x, _, masses = methods.grid_particles(data, h)
+        predicted[i] = first_collision(x, methods.weighted_velocities(masses))
+        try:
+            methods.particle_method(data, h, t_after)
+            measured[i] = np.inf
+        except CollisionError as error:
+            measured[i] = error.time
+        stall_start[i], stall_before[i], stall_after[i], stall_reached[i] = stall(
+            data, h, b["stall_window"], b["stall_evaluations"])
+        progress(f"{data}: first collision predicted {predicted[i]:.12g}, solver event {measured[i]:.12g}; "
+                 f"without the event DOP853 spends {stall_before[i]:.0f} right-hand sides before it and "
+                 f"{stall_after[i]:.0f} after it, reaching {stall_reached[i]:.12g}")
+
+        for j, k in enumerate(ltp["inverse_h"]):
+            h = 1.0 / k
+            try:
+                methods.ltp_method(data, h, ltp["dt_over_h"] * h, b["ltp_t_final"])
+            except StabilityError as error:
+                refusal[i, j] = error.time
+        h = 1.0 / ltp["inverse_h"][-1]
+        peak_position[i], peak_width[i] = densest_particle(data, h, ltp["dt_over_h"] * h, refusal[i, -1])
+        solution = AggregationSolution(data, refusal[i, -1])
+        progress(f"{data}: at t = {refusal[i, -1]:g} the densest LTP particle sits at {peak_position[i]:.6g} "
+                 f"(support edge {solution.left_end:.6g}), width {peak_width[i]:.4g} h (exact flow: "
+                 f"{1.0 - refusal[i, -1]:.4g} h at the peak of rho0)")
+        progress(f"{data}: LTP refused at t = {refusal[i]} (dt = {[ltp['dt_over_h'] / k for k in ltp['inverse_h']]})")
+
+    save_results(output[0], data=np.array(data_names),
+                 collision_predicted=predicted, collision_measured=measured, stall_collision=stall_start,
+                 stall_before=stall_before, stall_after=stall_after, stall_reached=stall_reached,
+                 ltp_peak_position=peak_position, ltp_peak_width=peak_width, ltp_inverse_h=np.array(ltp["inverse_h"]),
+                 ltp_dt=ltp["dt_over_h"] / np.array(ltp["inverse_h"]), ltp_refusal=refusal,
+                 stall_window=b["stall_window"])
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(snakemake.params.cfg, snakemake.threads, snakemake.output)  # noqa: F821

@@ -1,0 +1,58 @@
+"""Work-precision diagrams of the cross-method comparison: W1 error against the number of particles
+or cells, or against wall time, for every data (rows) and time (columns)."""
+
+import numpy as np
+
+from particle_methods.cross.verdicts import series
+from particle_methods.plotting import label_panel, new_figure, save_figure
+from particle_methods.workflow import load_results, logged
+
+#: Errors below this (exact to rounding) are drawn on it, with open markers.
+FLOOR = 1e-16
+STYLES = {
+    "SPD, equal masses": ("C0", "o", "-"),
+    "SPD, grid weights": ("C1", "s", "-"),
+    "particle method": ("C2", "^", "--"),
+    "Godunov for F": ("C3", "D", "-"),
+    "blob, m = 4": ("C4", "v", "-"),
+    "blob, m = 6": ("C5", "<", "-"),
+    "LTP": ("C6", ">", "-"),
+    "SP": ("C7", "p", "-"),
+}
+TITLES = {"smooth20": "(4.3) (1 - x^2)^20", "indicator": "(4.4) indicator of [-1, 1]"}
+
+
+def run(d, p, figure, output):
+    data, times = p["data"], p["times"]
+    fig, axes = new_figure(len(data), len(times), width=11, height=8.5, squeeze=False)
+    for i, name in enumerate(data):
+        for j, t in enumerate(times):
+            ax = axes[i, j]
+            for method in d["methods"]:
+                method = str(method)
+                if not np.any((d["method_index"] == list(d["methods"]).index(method))
+                              & (d["time_index"] == list(d["times"]).index(t))):
+                    continue
+                _, counts, errors, seconds = series(d, name, t, method)
+                colour, marker, line = STYLES.get(method, ("k", "x", "-"))
+                x = counts if figure == "error_size" else seconds
+                shown = np.maximum(errors, FLOOR)
+                ax.plot(x, shown, line, color=colour, lw=1, label=method)
+                exact = errors <= FLOOR
+                ax.plot(x[~exact], shown[~exact], marker, color=colour, ms=4, ls="none")
+                ax.plot(x[exact], shown[exact], marker, color=colour, ms=5, ls="none", mfc="none")
+            ax.axhline(p["target_error"], color="k", lw=0.6, ls=":")
+            ax.set(xscale="log", yscale="log", ylim=(FLOOR / 3, 0.3),
+                   xlabel="particles or cells" if figure == "error_size" else "wall time (s), after JIT warm-up",
+                   ylabel="W1 error")
+            label_panel(ax, f"({'abcd'[i * len(times) + j]}) {TITLES.get(name, name)}, t = {t:g}")
+    axes[0, 0].legend(loc="lower left", fontsize=7, ncol=2)
+    fig.suptitle("K = |x|/2: W1 distance to the exact solution "
+                 + ("against size" if figure == "error_size" else "against wall time")
+                 + f" (dotted: {p['target_error']:g}; open markers: exact to rounding)")
+    save_figure(fig, output.pdf, output.png)
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(load_results(snakemake.input.data), snakemake.params.cfg, snakemake.wildcards.figure,  # noqa: F821
+        snakemake.output)  # noqa: F821

@@ -1,0 +1,135 @@
+"""One equation, every method: W1 errors and wall times on the 1D aggregation equation with K = |x|/2.
+
+For each data and time of the config, every method runs at each of its sizes; the W1 distance of
+its output to the exact solution (:mod:`particle_methods.cross.exact`) is computed on the
+method's own output, and its wall time (initial discretisation plus evolution, after a warm-up
+run that compiles every kernel) is the best of ``repeats`` runs when a run is short.
+"""
+
+import time
+
+import numba
+import numpy as np
+
+from particle_methods.cross import distances, methods
+from particle_methods.cross.exact import AggregationSolution
+from particle_methods.workflow import logged, progress, save_results
+
+#: Runs longer than this are timed once (a repeat would not change the verdicts, only the budget).
+REPEAT_BELOW = 0.2
+
+
+def timed(function, repeats):
+    """(seconds, result): the best of ``repeats`` runs for short runs, else a single run."""
+    start = time.perf_counter()
+    result = function()
+    best = time.perf_counter() - start
+    if best < REPEAT_BELOW:
+        for _ in range(repeats - 1):
+            start = time.perf_counter()
+            result = function()
+            best = min(best, time.perf_counter() - start)
+    return best, result
+
+
+def count(output) -> int:
+    """Particles or cells of a method's output."""
+    if isinstance(output, tuple):
+        return output[0].size if output[0].size == output[1].size else output[1].size
+    return output.centres.size
+
+
+def dirac_width(solution, output) -> float:
+    """Largest |x| of the point masses whose levels lie in the exact Dirac mass (NaN without one, or
+    for an output that is not point masses): how far the method is from forming the Dirac mass."""
+    if not isinstance(output, tuple) or output[0].size != output[1].size or solution.dirac_mass == 0:
+        return np.nan
+    positions, masses = output
+    order = np.argsort(positions, kind="stable")
+    levels = np.cumsum(masses[order]) - 0.5 * masses[order]
+    inside = (levels > solution.level) & (levels < solution.mass - solution.level)
+    return float(np.max(np.abs(positions[order][inside]))) if np.any(inside) else np.nan
+
+
+def spd_difference(name, data, size, t, output) -> float:
+    """Largest |x - x_SPD| between the particle method's output and the weighted SPD from the same grid
+    (NaN for the other methods)."""
+    if name != "particle method":
+        return np.nan
+    positions, _ = methods.spd_grid(data, 1.0 / size, t)
+    return float(np.max(np.abs(output[0] - positions)))
+
+
+def method_table(p):
+    """name -> (times at which it runs, sizes (n, 1/h or cells; or a dict time -> sizes), run(data, size, t),
+    W1(solution, output))."""
+    blob, ltp, fv = p["blob"], p["ltp"], p["godunov"]
+    spd_times = [0.0, *p["times"]]  # at t = 0 too, for the contraction claim
+    atoms = distances.w1_atoms
+
+    def w1_particles(solution, particles):
+        reach = particles.widths * 2.0  # the B3 shape is supported in [-2, 2]
+        breaks = np.union1d(particles.centres - reach, particles.centres + reach)
+        return distances.w1_smooth(solution, particles.cumulative_mass, breaks, particles.widths.min())
+
+    table = {
+        "SPD, equal masses": (spd_times, p["spd_n"], lambda d, n, t: methods.spd_equal(d, n, t),
+                              lambda s, out: atoms(s, *out)),
+        "SPD, grid weights": (spd_times, p["grid_inverse_h"], lambda d, k, t: methods.spd_grid(d, 1.0 / k, t),
+                              lambda s, out: atoms(s, *out)),
+        "particle method": (p["particle_times"], p["particle_inverse_h"],
+                            lambda d, k, t: methods.particle_method(d, 1.0 / k, t), lambda s, out: atoms(s, *out)),
+        "Godunov for F": (p["times"], fv["cells"],
+                          lambda d, n, t: methods.godunov_mass(d, n, t, cfl=fv["cfl"]),
+                          lambda s, out: distances.w1_cells(s, *out)),
+    }
+    for order in blob["orders"]:
+        table[f"blob, m = {order}"] = (
+            p["times"], blob["inverse_h"],
+            lambda d, k, t, order=order: methods.blob_method(d, 1.0 / k, t, order=order, q=blob["q"]),
+            lambda s, out: atoms(s, *out))
+    table["LTP"] = (ltp["times"], ltp["inverse_h"],
+                    lambda d, k, t: methods.ltp_method(d, 1.0 / k, ltp["dt_over_h"] / k, t), w1_particles)
+    # After the blow-up SP costs about twice as much per run (more steps): its sizes stop earlier.
+    sp_sizes = {t: ltp["inverse_h"] if t < 1.0 else ltp["sp_after_inverse_h"] for t in ltp["sp_times"]}
+    table["SP"] = (ltp["sp_times"], sp_sizes,
+                   lambda d, k, t: methods.ltp_method(d, 1.0 / k, ltp["dt_over_h"] / k, t, method="sp",
+                                                      eps=ltp["sp_eps_over_h"] / k), w1_particles)
+    return table
+
+
+def run(p, threads, output):
+    numba.set_num_threads(threads)
+    table = method_table(p)
+    times = sorted({t for entry in table.values() for t in entry[0]})
+    rows, cases = [], []
+    for d_index, data in enumerate(p["data"]):
+        for t_index, t in enumerate(times):
+            solution = AggregationSolution(data, t)
+            cases.append((data, t, solution.mass, solution.dirac_mass))
+            progress(f"{data}, t = {t:g}: mass {solution.mass:.6g}, Dirac mass {solution.dirac_mass:.6g}")
+            for m_index, (name, (method_times, sizes, method, w1)) in enumerate(table.items()):
+                if t not in method_times:
+                    continue
+                if isinstance(sizes, dict):
+                    sizes = sizes[t]
+                method(data, sizes[0], t)  # warm-up: compile and fill caches
+                for size in sizes:
+                    seconds, out = timed(lambda m=method, d=data, s=size, t=t: m(d, s, t), p["repeats"])
+                    error = w1(solution, out)
+                    rows.append((d_index, t_index, m_index, size, count(out), error, seconds,
+                                 dirac_width(solution, out), spd_difference(name, data, size, t, out)))
+                    progress(f"  {name:18} size {size:7d} ({count(out)}): W1 {error:.4g} in {seconds:.4g} s")
+    rows = np.array(rows)
+    case_data, case_times, case_mass, case_dirac = zip(*cases)
+    save_results(output[0], data=np.array(p["data"]), times=np.array(times, dtype=float),
+                 methods=np.array(list(table)), data_index=rows[:, 0].astype(int),
+                 time_index=rows[:, 1].astype(int), method_index=rows[:, 2].astype(int),
+                 size=rows[:, 3].astype(int), count=rows[:, 4].astype(int), error=rows[:, 5], seconds=rows[:, 6],
+                 dirac_width=rows[:, 7], spd_difference=rows[:, 8],
+                 case_data=np.array(case_data), case_times=np.array(case_times), case_mass=np.array(case_mass),
+                 case_dirac=np.array(case_dirac))
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(snakemake.params.cfg, snakemake.threads, snakemake.output)  # noqa: F821

@@ -1,0 +1,18 @@
+"""One equation, every method: the 1D aggregation equation with the Newtonian kernel K = |x|/2.
+
+With v = -K' * rho = (M - 2F)/2 the cumulative mass F solves F_t + (M F/2 - F^2/2)_x = 0, a scalar
+conservation law with a concave flux, so the sticky paper's SPD, the blob paper's particle and
+blob methods, the LTP and SP methods and a finite-volume scheme all approximate one entropy
+solution, known exactly (:mod:`.exact`). Public entry points:
+
+- :func:`exact_mass_function`, :class:`AggregationSolution`: the exact solution, before and after
+  the blow-up (:mod:`.exact`);
+- :mod:`.methods`: every method's output at time t;
+- :mod:`.distances`: W1 distances computed on each output;
+- :mod:`.verdicts`: the claims of the comparison.
+"""
+
+from .exact import AggregationSolution, exact_mass_function
+from .profiles import PROFILES, Profile, profile
+
+__all__ = ["PROFILES", "AggregationSolution", "Profile", "exact_mass_function", "profile"]

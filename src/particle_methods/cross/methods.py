@@ -1,0 +1,170 @@
+"""Every method of the three papers applied to one equation: rho_t + (rho v)_x = 0, v = -K' * rho,
+K = |x|/2 (so v = (M - 2F)/2), from the symmetric data of :mod:`.profiles`.
+
+Each function returns the method's own output at time t, the object W1 is measured on
+(:mod:`.distances`): positions and masses of point masses, cell values of F, or LTP/SP particles.
+
+- :func:`spd_equal`: the SPD of the sticky paper for the flux Lambda(F) = M F/2 - F^2/2, n equal
+  masses M/n at the median quantiles (2.1), velocities n (Lambda(kM/n) - Lambda((k-1)M/n))/M.
+- :func:`spd_grid`: the SPD with the blob paper's grid particles, weighted (the weighted
+  Brenier-Grenier hull), velocities (mass right - mass left)/2.
+- :func:`particle_method`: the blob paper's particle method (Definition 2.2 with grad K(0) = 0),
+  integrated by DOP853; defined up to the first collision of two particles.
+- :func:`blob_method`: Definition 2.2 with K_delta = K * psi_delta, delta = h^q.
+- :func:`ltp_method`: LTP (and SP) of Campos Pinto et al. with W = |x|/2.
+- :func:`godunov_mass`: Godunov for F; with u = F/M and tau = M t the law is (5.3),
+  u_tau + (u(1 - u)/2)_x = 0, solved by :func:`particle_methods.finite_volume.godunov`.
+
+The grid particles sit at jh on [-1, 1] with masses rho0(jh) h, except the two ends, whose masses
+are halved (the trapezoid rule): the blob paper puts mass h at +-1 for the indicator (4.4), so its
+particles carry 2 + h instead of 2, and W1 between measures of different masses is infinite. For
+the smooth data rho0(+-1) = 0 and nothing changes. Particles of zero mass are left out.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..blob.kernels import kernel_1d
+from ..blob.mollifiers import mollifier
+from ..blob.solver import integrate_particles
+from ..finite_volume import CONCAVE, godunov
+from ..ltp.initial import InitialDensity
+from ..ltp.potentials import potential
+from ..ltp.solver import simulate
+from ..norms import cdf_antiderivative
+from ..sticky.spd import MAX_POSITIONS, spd_positions
+from ..validation import finite_array, integer_at_least, nonnegative, positive, same_length
+from .exact import AggregationSolution
+from .profiles import Profile, profile
+
+#: The attractive Newtonian kernel |x|/2 of the blob package.
+KERNEL = "newtonian_attractive"
+
+
+def aggregation_flux(mass: float):
+    """Lambda(F) = M F/2 - F^2/2, the flux of the law of the cumulative mass F."""
+    return lambda level: 0.5 * mass * np.asarray(level) - 0.5 * np.asarray(level) ** 2
+
+
+def _compact(shape: Profile) -> Profile:
+    if not np.isfinite(shape.radius) or shape.radius != 1.0:
+        raise ValueError(f"the grid methods need data supported in [-1, 1], got {shape.name}")
+    return shape
+
+
+def grid_particles(data, h: float):
+    """(positions, densities rho0(jh), masses) of the grid particles jh in [-1, 1] with positive
+    mass; masses rho0(jh) h, halved at the two ends (trapezoid rule, total mass exact for (4.4)).
+    1/h must be a whole number k (the grid then holds +-1); at most MAX_POSITIONS = 2k + 1 points."""
+    shape = _compact(profile(data))
+    h = positive("h", h)
+    k = round(1.0 / h)
+    if not (k >= 1 and abs(k * h - 1.0) <= 1e-9):
+        raise ValueError(f"1/h must be a whole number, got h = {h}")
+    if 2 * k + 1 > MAX_POSITIONS:
+        raise ValueError(f"h = {h} gives {2 * k + 1} grid points, more than MAX_POSITIONS = {MAX_POSITIONS}")
+    points = np.arange(-k, k + 1) / k
+    density = shape.density(points)
+    masses = density * h
+    masses[[0, -1]] *= 0.5
+    keep = masses > 0
+    return points[keep], density[keep], masses[keep]
+
+
+def _levels(masses):
+    return np.concatenate(([0.0], np.cumsum(masses)))
+
+
+def weighted_velocities(masses) -> np.ndarray:
+    """(mass right - mass left)/2 of each particle, sorted by position: the particle method's velocity
+    -sum_j m_j K'(x_i - x_j) with K'(0) = 0, and the SPD velocity (Lambda(c_k) - Lambda(c_{k-1}))/m_k
+    of the flux Lambda(F) = M F/2 - F^2/2 on the level interval (c_{k-1}, c_k] of the particle, which
+    is (M - c_{k-1} - c_k)/2 (in this closed form, so that masses below the rounding of the levels,
+    such as rho0(jh) h ~ 1e-100 near the ends of (4.3), keep their velocity)."""
+    masses = finite_array("masses", masses)
+    if masses.size == 0 or np.any(masses <= 0):
+        raise ValueError("masses must be positive, at least one")
+    levels = _levels(masses)
+    return 0.5 * (levels[-1] - levels[:-1] - levels[1:])
+
+
+def particle_velocities(x, masses) -> np.ndarray:
+    """-sum_j m_j K'(x_i - x_j) with K = |x|/2 and K'(0) = 0 at any positions (ties exert no force)."""
+    x = finite_array("x", x)
+    masses = finite_array("masses", masses)
+    same_length(x=x, masses=masses)
+    order = np.argsort(x, kind="stable")
+    sorted_x, sorted_m = x[order], masses[order]
+    # Mass strictly left and strictly right of each particle: group equal positions together.
+    first = np.searchsorted(sorted_x, sorted_x, side="left")
+    last = np.searchsorted(sorted_x, sorted_x, side="right")
+    cumulative = _levels(sorted_m)
+    velocity = np.empty_like(x)
+    velocity[order] = 0.5 * ((cumulative[-1] - cumulative[last]) - cumulative[first])
+    return velocity
+
+
+def spd_equal(data, n: int, t: float):
+    """(positions, masses) of the SPD with n equal masses at the median quantiles (2.1), at time t."""
+    shape = profile(data)
+    n = integer_at_least("n", n, 1)
+    t = nonnegative("t", t)
+    initial = AggregationSolution(shape, 0.0)
+    x = initial.quantile((np.arange(n) + 0.5) * (shape.mass / n))
+    masses = np.full(n, shape.mass / n)
+    return spd_positions(x, weighted_velocities(masses), t), masses
+
+
+def spd_grid(data, h: float, t: float):
+    """(positions, masses) of the weighted SPD from the grid particles of :func:`grid_particles`."""
+    x, _, masses = grid_particles(data, h)
+    return spd_positions(x, weighted_velocities(masses), nonnegative("t", t), masses=masses), masses
+
+
+def particle_method(data, h: float, t: float, *, rtol: float = 1e-12, atol: float = 1e-14):
+    """(positions, masses) of the blob paper's particle method at t (before the first collision)."""
+    x, density, masses = grid_particles(data, h)
+    run = integrate_particles(x[:, None], density, masses, kernel_1d(KERNEL), [nonnegative("t", t)],
+                              with_density=False, rtol=rtol, atol=atol, h=h)
+    return run.positions[-1, :, 0], masses
+
+
+def blob_method(data, h: float, t: float, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
+    """(positions, masses) of the blob method with the mollifier of ``order`` and delta = h^q at t."""
+    x, density, masses = grid_particles(data, h)
+    h = positive("h", h)
+    kernel = kernel_1d(KERNEL, mollifier(order, 1), h ** positive("q", q))
+    run = integrate_particles(x[:, None], density, masses, kernel, [nonnegative("t", t)], with_density=False,
+                              rtol=rtol, atol=atol, h=h)
+    return run.positions[-1, :, 0], masses
+
+
+def initial_density(data) -> InitialDensity:
+    """The data as an LTP initial density (cell weights (2.14) are differences of its CDF)."""
+    shape = _compact(profile(data))
+
+    def cdf(x):
+        return 0.5 * shape.mass + shape.mass_from_origin(np.clip(x, -1.0, 1.0))
+
+    return InitialDensity(shape.name, shape.density, cdf, -1.0, 1.0)
+
+
+def ltp_method(data, h: float, dt: float, t: float, *, method: str = "ltp", eps: float | None = None):
+    """The LTP (or SP, with width ``eps``) particles at t for W = |x|/2: a
+    :class:`~particle_methods.ltp.solver.Particles` with ``cumulative_mass``."""
+    return simulate(initial_density(data), potential("newtonian"), h, dt, t, method=method, eps=eps).at(-1)
+
+
+def godunov_mass(data, cells: int, t: float, *, cfl: float = 0.9):
+    """(edges, F values) of Godunov's scheme for F on ``cells`` cells of [-1, 1] at time t, started
+    from the exact cell averages of F0 (ghost states 0 and M)."""
+    shape = _compact(profile(data))
+    cells = integer_at_least("cells", cells, 1)
+    t = nonnegative("t", t)
+    edges = np.linspace(-1.0, 1.0, cells + 1)
+    initial = AggregationSolution(shape, 0.0)
+    integrals = np.diff(cdf_antiderivative(initial, edges))
+    u0 = integrals / (np.diff(edges) * shape.mass)
+    u = godunov(CONCAVE, u0, edges, shape.mass * t, cfl=cfl, left=0.0, right=1.0)
+    return edges, shape.mass * u

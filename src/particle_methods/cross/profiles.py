@@ -1,0 +1,123 @@
+"""Initial densities of the cross-method comparison: symmetric about 0 and non-increasing in |x|.
+
+The data (4.3)-(4.5) of the blob paper (not normalised: (4.3) has mass M = 0.389, (4.4) mass 2)
+and the Laplace law (5.4) of the sticky paper (mass 1). Every profile gives, in closed form or
+by a safeguarded Newton iteration to rounding, what the exact solution of
+:mod:`particle_methods.cross.exact` needs: the mass m(a) = int_0^a rho0 (odd), the moment
+int_{-R}^a s rho0(s) ds from the left end -R of the support, and the position of a level,
+the a <= 0 with F0(a) = M/2 + m(a) = w for 0 <= w <= M/2.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..blob.initial import DATA_1D, Data1D
+from ..validation import ParameterTypeError, one_of
+
+#: Newton steps (each safeguarded by bisection) allowed to reach rounding; bisection alone needs 64.
+MAX_ITERATIONS = 200
+
+
+def monotone_root(function: Callable, derivative: Callable, target, low, high):
+    """The x in [low, high] with function(x) = target, for a non-decreasing ``function``, element-wise.
+
+    Newton steps that leave the bracket, or meet a zero derivative, are replaced by bisection,
+    and the bracket shrinks at every step, so the iteration converges for any monotone function;
+    it stops when every step moves by less than two ulps. ``low`` and ``high`` must bracket the
+    root (function(low) <= target <= function(high)); the caller guarantees it.
+    """
+    target = np.asarray(target, dtype=np.float64)
+    shape = target.shape
+    target = target.ravel()
+    low = np.broadcast_to(np.asarray(low, dtype=np.float64), shape).ravel().copy()
+    high = np.broadcast_to(np.asarray(high, dtype=np.float64), shape).ravel().copy()
+    x = 0.5 * low + 0.5 * high  # not 0.5 (low + high): the sum of two large brackets overflows
+    active = np.arange(x.size)  # the points still moving: converged ones leave the iteration
+    for _ in range(MAX_ITERATIONS):
+        if active.size == 0:
+            break
+        xa, lo, hi = x[active], low[active], high[active]
+        value = function(xa) - target[active]
+        lo = np.where(value < 0.0, xa, lo)
+        hi = np.where(value > 0.0, xa, hi)
+        slope = derivative(xa)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(slope > 0.0, xa - value / slope, np.nan)
+        step = np.where((step > lo) & (step < hi), step, 0.5 * lo + 0.5 * hi)
+        step = np.where(value == 0.0, xa, step)
+        moving = np.abs(step - xa) > 2.0 * np.spacing(np.maximum(np.abs(step), 1e-300))
+        x[active], low[active], high[active] = step, lo, hi
+        active = active[moving]
+    return x.reshape(shape)
+
+
+@dataclass(frozen=True)
+class Profile:
+    """A symmetric, non-increasing-in-|x| initial density rho0 on (-radius, radius).
+
+    ``mass_from_origin`` is m(a) = int_0^a rho0 (odd in a), ``moment_from_left`` is
+    int_{-radius}^a s rho0(s) ds, ``level_position`` the inverse of F0 = M/2 + m on levels
+    0 <= w <= M/2 (non-positive positions).
+    """
+
+    name: str
+    mass: float
+    peak: float
+    radius: float
+    density: Callable
+    mass_from_origin: Callable
+    moment_from_left: Callable
+    level_position: Callable
+
+
+def _polynomial_profile(data: Data1D) -> Profile:
+    """(4.3)-(4.5): (1 - x^2)^p on [-1, 1], or the indicator (p = 0)."""
+    mass = data.mass
+
+    def level_position(w):
+        w = np.asarray(w, dtype=np.float64)
+        return monotone_root(data.mass_from_origin, data, w - 0.5 * mass, -np.ones_like(w), np.zeros_like(w))
+
+    return Profile(data.name, mass, data.maximum, 1.0, data, data.mass_from_origin, data.moment_from_left,
+                   level_position)
+
+
+def _laplace_mass(a):
+    a = np.asarray(a, dtype=np.float64)
+    return np.sign(a) * 0.5 * -np.expm1(-np.abs(a))
+
+
+def _laplace_moment(a):
+    """int_{-inf}^a s e^{-|s|}/2 ds: (a - 1) e^a / 2 for a <= 0, -(a + 1) e^{-a} / 2 above."""
+    a = np.asarray(a, dtype=np.float64)
+    return np.where(a <= 0.0, 0.5 * (a - 1.0) * np.exp(np.minimum(a, 0.0)),
+                    -0.5 * (a + 1.0) * np.exp(-np.maximum(a, 0.0)))
+
+
+def _laplace_level(w):
+    with np.errstate(divide="ignore"):
+        return np.log(2.0 * np.asarray(w, dtype=np.float64))
+
+
+LAPLACE = Profile("Laplace law e^{-|x|}/2 (5.4)", 1.0, 0.5, math.inf, lambda x: 0.5 * np.exp(-np.abs(x)),
+                  _laplace_mass, _laplace_moment, _laplace_level)
+
+PROFILES = {**{name: _polynomial_profile(data) for name, data in DATA_1D.items()}, "laplace": LAPLACE}
+
+
+def profile(data) -> Profile:
+    """The profile of ``data``: a name ('smooth20' (4.3), 'indicator' (4.4), 'smooth10' (4.5), 'laplace'),
+    a :class:`~particle_methods.blob.initial.Data1D`, or a :class:`Profile`."""
+    if isinstance(data, Profile):
+        return data
+    if isinstance(data, Data1D):
+        return _polynomial_profile(data)
+    if isinstance(data, str):
+        return one_of("initial data", data, PROFILES)
+    raise ParameterTypeError(f"data must be a data name, a Data1D or a Profile, got {data!r}")
+

@@ -1,0 +1,243 @@
+"""Every claim of the cross-method comparison (kind ``derived``), measured from the cached results.
+
+The study result (scripts/cross/study_data.py) holds one row per method, data, time and size:
+W1 error and wall time; the behaviour result (scripts/cross/behaviour_data.py) holds what the
+methods do at the blow-up. tests/cross/test_cross_verdicts.py feeds these functions wrong outcomes.
+
+Orders are slopes of log W1 against log size (n, 1/h or cells) on the ``fit_points`` largest
+sizes; identities that hold in exact arithmetic get rounding tolerances.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import claims as c
+from ..rates import Recorder, order
+
+PAPER = "cross"
+#: Positions (of order 1) that agree in exact arithmetic agree to this.
+ROUNDING = 1e-12
+#: DOP853's event location is a root of its dense output, accurate far below this.
+EVENT_TOLERANCE = 1e-9
+#: A W1 error this far below the mass is zero (rounding of positions of order 1).
+EXACT = 1e-12
+SOURCE_IDENTITY = ("blob paper Definition 2.2 (grad K(0) = 0); sticky paper section 1.1.3 and Remark 3.3")
+SOURCE_SPD = "sticky paper Remark 3.3 (SPD exact for discretised data) and the L1 contraction of entropy solutions"
+SPD_METHODS = ("SPD, equal masses", "SPD, grid weights")
+
+
+def claim(compare, name, text, *args, source, kind="derived", **kwargs):
+    return compare(f"{PAPER}.{name}", PAPER, "cross", text, *args, kind=kind, source=source, **kwargs)
+
+
+def series(d, data: str, t: float, method: str):
+    """(sizes, particle or cell counts, W1 errors, seconds) of one method on one case, by size."""
+    names, times, methods = list(d["data"]), list(d["times"]), list(d["methods"])
+    rows = ((d["data_index"] == names.index(data)) & (d["time_index"] == times.index(t))
+            & (d["method_index"] == methods.index(method)))
+    order_ = np.argsort(d["size"][rows], kind="stable")
+    return tuple(d[key][rows][order_] for key in ("size", "count", "error", "seconds"))
+
+
+def cases(d):
+    """(data, t, method) of every series in the study."""
+    seen = sorted(set(zip(d["data_index"], d["time_index"], d["method_index"])))
+    return [(str(d["data"][i]), float(d["times"][j]), str(d["methods"][k])) for i, j, k in seen]
+
+
+def _farthest(values, band):
+    values = np.asarray(values, dtype=float)
+    if values.size == 0:
+        return math.nan
+    return float(values[np.argmax(np.abs(values - 0.5 * (band[0] + band[1])))])
+
+
+def orders(d, rates: Recorder, methods, times, window: int, skip_collapsed: dict | None = None):
+    """Fitted W1 orders of ``methods`` at ``times`` for every data, recorded; the cases whose exact
+    solution is a single Dirac mass (``skip_collapsed[(data, t)]`` true) are left out."""
+    found = []
+    for data, t, method in cases(d):
+        if method not in methods or t not in times or (skip_collapsed or {}).get((data, t), False):
+            continue
+        sizes, _, errors, _ = series(d, data, t, method)
+        fit = order(f"{PAPER}.order", "size", sizes, np.maximum(errors, 1e-300), window,
+                    f"{method}, {data}, t = {t:g}")
+        found.append(-rates.add(fit))
+    return found
+
+
+def collapsed(d, masses) -> dict:
+    """(data, t) -> whether the exact solution at t is a single Dirac mass (masses[(data, t)] =
+    (mass, Dirac mass))."""
+    return {key: abs(value[0] - value[1]) <= EXACT * value[0] for key, value in masses.items()}
+
+
+def time_to_error(errors, seconds, target: float, min_seconds: float = 0.0) -> tuple[float, bool]:
+    """(wall time at which the work-precision line reaches W1 = target, whether extrapolated).
+
+    Interpolated log-linearly between the two runs bracketing the target; from the smallest
+    run if it is already below; extrapolated from the two largest runs (their local slope of log
+    time against log error) if no run reaches it, and then NaN (not measured) unless the largest
+    took at least ``min_seconds`` (shorter runs time overheads, not the method's growth; a fixed
+    overhead left in the smaller run flattens the slope, so the extrapolated time is then too
+    small, which favours the method); infinite if those do not decrease the error.
+    """
+    errors, seconds = np.asarray(errors, dtype=float), np.asarray(seconds, dtype=float)
+    below = np.flatnonzero(errors <= target)
+    if below.size and below[0] == 0:
+        return float(seconds[0]), False
+    if below.size:
+        j = below[0]
+        i = j - 1
+        extrapolated = False
+    else:
+        i, j = errors.size - 2, errors.size - 1
+        extrapolated = True
+        if not errors[j] < errors[i]:
+            return math.inf, True
+        if seconds[j] < min_seconds:
+            return math.nan, True
+    slope = math.log(seconds[j] / seconds[i]) / math.log(errors[j] / errors[i])
+    return float(seconds[i] * (target / errors[i]) ** slope), extrapolated
+
+
+def fastest_table(d, target: float, min_seconds: float = 0.0):
+    """{(data, t): {method: (time to target, extrapolated)}} (see :func:`time_to_error`)."""
+    table = {}
+    for data, t, method in cases(d):
+        if t == 0.0:
+            continue
+        _, _, errors, seconds = series(d, data, t, method)
+        table.setdefault((data, t), {})[method] = time_to_error(errors, seconds, target, min_seconds)
+    return table
+
+
+def study_claims(d, rates: Recorder, p):
+    """Orders of every method before and after the blow-up, the SPD's contraction and exactness,
+    and which method reaches the target W1 first."""
+    window, rules = p["fit_points"], p["claims"]
+    masses = {(str(data), float(t)): (float(m), float(dirac)) for data, t, m, dirac in
+              zip(d["case_data"], d["case_times"], d["case_mass"], d["case_dirac"])}
+    single = collapsed(d, masses)
+    before, after = [t for t in p["times"] if t < 1.0], [t for t in p["times"] if t > 1.0]
+    rows = []
+
+    late = max(p["times"])
+    share = masses[(str(p["data"][0]), late)][1] / masses[(str(p["data"][0]), late)][0]
+    rows.append(claim(c.between, "exact.dirac_share", f"share of the mass in the Dirac mass of the exact solution "
+                      f"from {p['data'][0]} at t = {late:g} (issue 15: about 57 % for (4.3) at t = 1.1)",
+                      *rules["dirac_share"], float(share), kind="check",
+                      source="a0 = t m(a0) (this section), against the issue's independent figure"))
+
+    spd = orders(d, rates, SPD_METHODS, p["times"], window, single)
+    rows.append(claim(c.between, "order.spd", "W1 order of both SPDs (n or 1/h), every data, before and after the "
+                      "blow-up (cases with a single Dirac mass left out): the discretised data are O(1/n) from the "
+                      "data, and the SPD is their exact entropy solution; worst fit", *rules["spd_order"],
+                      _farthest(spd, rules["spd_order"]), source=SOURCE_SPD))
+
+    ratios, exact = [], []
+    for data, t, method in cases(d):
+        if method not in SPD_METHODS or t == 0.0:
+            continue
+        _, _, errors, _ = series(d, data, t, method)
+        _, _, initial, _ = series(d, data, 0.0, method)
+        ratios.extend(errors / initial)
+        if single[(data, t)]:
+            exact.extend(errors / masses[(data, t)][0])
+    rows.append(claim(c.at_most, "spd.contraction", "W1(SPD(t), exact(t)) <= W1(SPD(0), exact(0)) for every size: "
+                      "largest ratio over both SPDs, data and times", 1.0 + 1e-9, float(max(ratios)),
+                      source=SOURCE_SPD))
+    rows.append(claim(c.at_most, "spd.collapse_exact", "once all the mass sits in the Dirac mass ((4.4) at t > 1) "
+                      "both SPDs are exact: largest W1 / M", EXACT, float(max(exact)) if exact else math.nan,
+                      source=SOURCE_SPD))
+
+    blob = [f"blob, m = {m}" for m in p["blob"]["orders"]]
+    rows.append(claim(c.between, "order.blob_before", f"W1 order of the blob method (m = {p['blob']['orders']}, "
+                      f"q = {p['blob']['q']}) before the blow-up: point masses on a grid, O(h); worst fit",
+                      *rules["blob_order_before"],
+                      _farthest(orders(d, rates, blob, before, window), rules["blob_order_before"]),
+                      source="blob paper Theorem 3.8 (trajectories O(h^{mq})); W1 of grid point masses is O(h)"))
+    rows.append(claim(c.at_least, "order.blob_after", "W1 order of the blob method after the blow-up: O(h) from the "
+                      "particles outside the Dirac mass plus at most its mass times the cluster width delta = h^q; "
+                      "smallest fit", rules["blob_order_after_min"],
+                      min(orders(d, rates, blob, after, window), default=math.nan),
+                      source="blob paper Definition 2.2 (K_delta smooth: no Dirac mass forms)"))
+    rows.append(claim(c.between, "order.ltp", "W1 order of LTP with W = |x|/2 before the blow-up (dt = h/2): the "
+                      "velocity (M - 2F)/2 is constant along characteristics, so explicit Euler moves centres "
+                      "exactly and the O(h^2) of the reconstruction remains; worst fit", *rules["ltp_order"],
+                      _farthest(orders(d, rates, ("LTP",), before, window), rules["ltp_order"]),
+                      source="LTP paper (2.31), Theorem 1 (O(h^2) reconstruction); outside its assumptions"))
+    rows.append(claim(c.between, "order.sp_before", "W1 order of SP (eps = h) before the blow-up: O(eps^2) smoothing; "
+                      "worst fit", *rules["sp_order_before"],
+                      _farthest(orders(d, rates, ("SP",), before, window), rules["sp_order_before"]),
+                      source="LTP paper section 2.1 (SP method)"))
+    rows.append(claim(c.between, "order.sp_after", "W1 order of SP after the blow-up: the Dirac mass is reconstructed "
+                      "as its mass times phi_eps, W1 of order eps = h; worst fit", *rules["sp_order_after"],
+                      _farthest(orders(d, rates, ("SP",), after, window), rules["sp_order_after"]),
+                      source="LTP paper section 2.1 (SP method)"))
+    rows.append(claim(c.between, "order.godunov", "W1 order of Godunov's scheme for F (cells), every data and time "
+                      "(single Dirac masses left out): first order; worst fit", *rules["godunov_order"],
+                      _farthest(orders(d, rates, ("Godunov for F",), p["times"], window, single),
+                                rules["godunov_order"]),
+                      source="Godunov (1959); LeVeque (2002) section 12"))
+
+    differences = d["spd_difference"][~np.isnan(d["spd_difference"])]
+    rows.append(claim(c.at_most, "identity.particle_spd", "the particle method (DOP853, rtol 1e-12) equals the "
+                      "weighted SPD before the first collision: largest |x_particle - x_SPD| over data and h",
+                      ROUNDING, float(np.max(differences)) if differences.size else math.nan,
+                      source=SOURCE_IDENTITY))
+
+    widths = []
+    for data, t, method in cases(d):
+        if method.startswith("blob") and t > 1.0 and masses[(data, t)][1] > 0:
+            rows_ = ((d["data"][d["data_index"]] == data) & (d["times"][d["time_index"]] == t)
+                     & (d["methods"][d["method_index"]] == method))
+            delta = (1.0 / d["size"][rows_]) ** p["blob"]["q"]
+            widths.extend(d["dirac_width"][rows_] / delta)
+    rows.append(claim(c.between, "blob.no_dirac", "after the blow-up the blob particles of the Dirac mass stay apart "
+                      "but within delta = h^q of 0: (largest |x| of them)/delta, farthest from the band", 1e-300, 1.0,
+                      _farthest(widths, (0.0, 1.0)) if np.all(np.asarray(widths) > 0) else 0.0,
+                      source="blob paper Definition 2.2 (K_delta smooth)"))
+
+    speedups = []
+    for times in fastest_table(d, p["target_error"], p["min_extrapolation_seconds"]).values():
+        # The fastest SPD whose time was measured (NaN only if neither was).
+        best_spd = min((times[m][0] for m in SPD_METHODS if m in times and not math.isnan(times[m][0])),
+                       default=math.nan)
+        others = [value[0] for m, value in times.items() if m not in SPD_METHODS]
+        # A time that could not be measured (NaN) leaves the verdict unmeasured: NaN fails.
+        speedups.append(math.nan if any(math.isnan(t) for t in others) else min(others) / best_spd)
+    rows.append(claim(c.at_least, "fastest", f"an SPD reaches W1 = {p['target_error']:g} first on every data and "
+                      "time, at least this many times faster than any other method: smallest ratio (time of the best "
+                      "other method / time of the best SPD)", rules["speedup_min"],
+                      math.nan if any(math.isnan(s) for s in speedups) else float(min(speedups)),
+                      source="sticky paper section 5.1.1: the hull costs O(n); the others O(n^2) or O(n/h)"))
+    return rows
+
+
+def behaviour_claims(b, p):
+    """The particle method against the weighted SPD, its first collision, the stall of the ODE solver
+    past it, the LTP refusal before the blow-up and the blob clusters after it."""
+    # Past the collision the solver may stop at its budget before the end of the window: rates use
+    # the time it reached.
+    rates = (b["stall_after"] / np.maximum(b["stall_reached"] - b["stall_collision"], 1e-300)) / (
+        b["stall_before"] / b["stall_collision"])
+    dt = b["ltp_dt"]
+    refusal = b["ltp_refusal"]
+    # LTP: rho_h at the centre follows the exact 1/(1 - t) (max rho0 = 1), so dt rho_h reaches 1 at t = 1 - dt.
+    refusal_miss = np.abs(refusal - (1.0 - dt[None, :])) / dt[None, :]
+    return [
+        claim(c.at_most, "identity.first_collision", "the particle method stops at the first meeting of neighbours "
+              "moving at the SPD velocities: largest |event time - predicted time|", EVENT_TOLERANCE,
+              float(np.max(np.abs(b["collision_measured"] - b["collision_predicted"]))), source=SOURCE_IDENTITY),
+        claim(c.at_least, "particle.stall", "without the collision event DOP853 chatters past the collision (the "
+              "velocities jump as particles cross and recross): right-hand sides per unit time after it over before "
+              "it, smallest over data", p["claims"]["stall_rate_min"], float(np.min(rates)), kind="check",
+              source=SOURCE_IDENTITY),
+        claim(c.at_most, "ltp.refusal", "LTP with W = |x|/2 is refused by the explicit Euler bound dt rho_h < 1 at "
+              "t = 1 - dt, to within dt, as rho_h(0) follows the exact 1/(1 - t): largest |t_refused - (1 - dt)|/dt",
+              1.0, float(np.max(refusal_miss)), source="LTP paper (2.31)-(2.32); blob paper section 4.1 (blow-up)"),
+    ]
