@@ -68,8 +68,8 @@ def method_table(p):
     atoms = distances.w1_atoms
 
     def w1_particles(solution, particles):
-        reach = particles.widths * 2.0  # the B3 shape is supported in [-2, 2]
-        breaks = np.union1d(particles.centres - reach, particles.centres + reach)
+        # F_h is a polynomial between the breaks of every particle's shape.
+        breaks = np.unique(particles.centres[:, None] + particles.widths[:, None] * particles.shape.breaks[None, :])
         return distances.w1_smooth(solution, particles.cumulative_mass, breaks, particles.widths.min())
 
     table = {

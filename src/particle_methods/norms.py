@@ -17,6 +17,7 @@ import numpy as np
 from .validation import (
     ParameterTypeError,
     finite_array,
+    finite_number,
     finite_result,
     in_interval,
     integer_at_least,
@@ -128,10 +129,26 @@ def discrete_l1(values, reference, h: float, dimension: int = 1) -> float:
                          "values, reference or h are too large: the sum overflows")
 
 
+def _checked_measure(measure, methods: tuple[str, ...]) -> float:
+    """The mass M of ``measure`` (its ``mass``, 1 if absent) after checking that it provides ``methods``."""
+    if isinstance(measure, type) or not all(callable(getattr(measure, name, None)) for name in methods):
+        raise ParameterTypeError(f"measure must provide methods {', '.join(f'{name}()' for name in methods)}, got "
+                                 f"{measure!r}")
+    return positive("measure.mass", getattr(measure, "mass", 1.0))
+
+
+def _within_range(name: str, x: np.ndarray, mass: float) -> None:
+    """Refuse positions ``x`` whose products x F(x) with values of F up to ``mass`` overflow."""
+    with np.errstate(over="ignore"):
+        if x.size and not np.isfinite(np.max(np.abs(x)) * mass):
+            raise ValueError(f"{name} are too large: {name} times the mass {mass!r} overflow")
+
+
 def cdf_antiderivative(measure, x, mass=None):
     """A(x) = int_{-inf}^x F = x F(x) - G(F(x)) for the CDF F of ``measure`` (mass M, default its
     ``mass`` or 1): the levels below F(x) sit at X(w) <= x (integration by parts)."""
-    mass = float(getattr(measure, "mass", 1.0)) if mass is None else mass
+    own = _checked_measure(measure, ("cdf", "quantile_integral"))
+    mass = own if mass is None else positive("mass", mass)
     x = finite_array("x", x)
     if callable(getattr(measure, "antiderivative", None)):  # the measure computes A itself, faster
         return measure.antiderivative(x)
@@ -154,7 +171,7 @@ def l1_to_step_function(measure, breaks, values) -> float:
     int_a^{x*} (s - F), with x* = X(s) clipped to [a, b] the point where F reaches s:
     exact, no quadrature.
     """
-    mass = float(getattr(measure, "mass", 1.0))
+    mass = _checked_measure(measure, ("cdf", "quantile", "quantile_integral"))
     b = sorted_array("breaks", breaks)
     s = finite_array("values", values)
     if b.size == 0:
@@ -164,6 +181,7 @@ def l1_to_step_function(measure, breaks, values) -> float:
     if not abs(s[-1] - mass) <= 1e-9 * mass:
         raise ValueError(f"values[-1] = {s[-1]!r} must be the total mass {mass!r} of the measure: the L1 distance "
                          "is infinite otherwise")
+    _within_range("breaks", b, mass)
     a_values = cdf_antiderivative(measure, b, mass)
     starts, ends, steps = b[:-1], b[1:], s[:-1]
     crossing = np.where(steps <= 0.0, starts, np.where(steps >= mass, ends, 0.0))
@@ -171,9 +189,10 @@ def l1_to_step_function(measure, breaks, values) -> float:
     crossing[interior] = measure.quantile(steps[interior])
     crossing = np.clip(crossing, starts, ends)
     a_crossing = cdf_antiderivative(measure, crossing, mass)
-    pieces = (a_values[1:] - a_values[:-1]) - steps * (ends - starts)
-    pieces += 2.0 * (steps * (crossing - starts) - (a_crossing - a_values[:-1]))
-    total = float(np.sum(pieces) + sum(tail_integrals(measure, b[0], b[-1])))
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported just below
+        pieces = (a_values[1:] - a_values[:-1]) - steps * (ends - starts)
+        pieces += 2.0 * (steps * (crossing - starts) - (a_crossing - a_values[:-1]))
+        total = float(np.sum(pieces) + sum(tail_integrals(measure, b[0], b[-1])))
     return finite_result("the L1 distance", total, "breaks or values are too large")
 
 
@@ -181,8 +200,8 @@ def tail_integrals(measure, left: float, right: float) -> tuple[float, float]:
     """(int_{-inf}^left F, int_right^inf (M - F)) for the CDF F of ``measure`` of mass M (see
     :func:`l1_to_step_function`): A(left), and (G(M) - G(F(right))) - right (M - F(right)), since
     the levels above F(right) sit at X(w) > right."""
-    mass = float(getattr(measure, "mass", 1.0))
-    ends = np.array([left, right], dtype=np.float64)
+    mass = _checked_measure(measure, ("cdf", "quantile_integral"))
+    ends = np.array([finite_number("left", left), finite_number("right", right)], dtype=np.float64)
     lower = float(cdf_antiderivative(measure, ends[:1], mass)[0])
     level = np.clip(measure.cdf(ends[1:]), 0.0, mass)
     upper = (measure.quantile_integral(np.array([mass])) - measure.quantile_integral(level)) - ends[1] * (mass - level)

@@ -81,7 +81,8 @@ class AggregationSolution:
         if self.collapse_radius >= shape.radius:
             self.level = 0.0
         else:
-            self.level = 0.5 * shape.mass - float(shape.mass_from_origin(self.collapse_radius))
+            # (not below 0: M/2 - m(a0) rounds to -ulp(M) when a0 is just short of the radius)
+            self.level = max(0.5 * shape.mass - float(shape.mass_from_origin(self.collapse_radius)), 0.0)
         self.dirac_mass = shape.mass - 2.0 * self.level
         #: Left end of the support, -R + t M/2 (-inf for an unbounded support).
         self.left_end = min(-shape.radius + 0.5 * self.t * shape.mass, 0.0)
@@ -97,8 +98,10 @@ class AggregationSolution:
         level, integral = np.zeros_like(x), np.zeros_like(x)
         if np.any(inside):
             xi = x[inside]
-            # For a < 0, |m(a)| <= M/2: the characteristic of a lies in [a, a + t M/2].
-            low = np.maximum(xi - 0.5 * t * shape.mass, -shape.radius)
+            # For a < 0, |m(a)| <= M/2: the characteristic of a lies in [a, a + t M/2]. (The bracket stays
+            # finite: x - t M/2 overflows to -inf for x near -1.8e308, and m(-inf), s rho0(s) at -inf are NaN.)
+            with np.errstate(over="ignore"):
+                low = np.maximum(xi - 0.5 * t * shape.mass, max(-shape.radius, -np.finfo(np.float64).max))
             high = np.minimum(xi, -self.collapse_radius)
             a = monotone_root(self._characteristic, lambda s: 1.0 - t * shape.density(s), xi, low, high)
             # Clipped: M/2 + m(a) may round to -ulp(M) in the left tail, and F must lie in [0, M].
@@ -122,8 +125,9 @@ class AggregationSolution:
         x = finite_values("x", x)
         flat = x.ravel()
         left, integral = self._left_state(-np.abs(flat))
-        value = flat * np.where(flat < 0.0, left, self.mass - left) - integral
-        return finite_result("int F(t, .)", value.reshape(x.shape), "the data overflow")
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported just below
+            value = flat * np.where(flat < 0.0, left, self.mass - left) - integral
+        return finite_result("int F(t, .)", value.reshape(x.shape), "x is too large: x F(t, x) overflows")
 
     def _left_levels(self, w):
         """min(w, M - w), and whether that level still moves (below w0)."""

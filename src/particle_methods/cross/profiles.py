@@ -46,7 +46,7 @@ def monotone_root(function: Callable, derivative: Callable, target, low, high):
         lo = np.where(value < 0.0, xa, lo)
         hi = np.where(value > 0.0, xa, hi)
         slope = derivative(xa)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # such steps leave the bracket
             step = np.where(slope > 0.0, xa - value / slope, np.nan)
         step = np.where((step > lo) & (step < hi), step, 0.5 * lo + 0.5 * hi)
         step = np.where(value == 0.0, xa, step)

@@ -1,0 +1,199 @@
+"""Safe API of the cross package: the exact solution and the W1 distances fuzzed.
+
+Each call must return finite values or raise ValueError/TypeError naming one of its parameters;
+:func:`fuzzing.safe_call` fails on anything else, on a non-finite result and on a hang. Where a call
+returns, the values must also be what a cumulative mass function promises (within [0, M], non-decreasing
+in x; a non-negative distance).
+"""
+
+import numpy as np
+import pytest
+from fuzzing import FUZZ, bad_array, bad_scalar, extreme, safe_call
+from hypothesis import given
+from hypothesis import strategies as st
+
+from particle_methods.blob.initial import DATA_1D, Data1D
+from particle_methods.cross import distances
+from particle_methods.cross.exact import AggregationSolution, exact_mass_function
+from particle_methods.cross.profiles import profile
+from particle_methods.norms import l1_to_step_function
+from particle_methods.sticky import ConcaveLaplaceSolution
+
+DATA = st.sampled_from(["smooth20", "indicator", "smooth10", "laplace", DATA_1D["smooth20"], Data1D("p1", 1),
+                        Data1D("p30", 30), None, "smooth30", 3, b"laplace", AggregationSolution])
+HUGE = [1e300, -1e300, 1.7e308, -1.7e308]
+finite_lists = st.lists(st.one_of(extreme, st.floats(-3, 3), st.sampled_from(HUGE)), min_size=0, max_size=6)
+
+
+def scalar(good):
+    """A good value, a bad one, an extreme one, or times around the blow-up (t = 1 for the polynomial data,
+    2 for the Laplace law, 2/M for the full collapse of (4.3))."""
+    return st.one_of(st.just(good), bad_scalar, extreme, st.floats(0, 10),
+                     st.sampled_from([1.0, 2.0, 1.0 + 1e-12, 2.0 / DATA_1D["smooth20"].mass, 1e8, 1.7e308]))
+
+
+def array(good, ordered=False):
+    drawn = finite_lists.map(sorted if ordered else list).map(lambda values: np.array(values, dtype=float))
+    return st.one_of(st.just(np.asarray(good, dtype=float)), bad_array, drawn, st.floats(-2, 2), extreme)
+
+
+def levels(mass):
+    """Levels w in [0, M] (the ends and values a rounding away included), and some outside it."""
+    inside = st.one_of(st.floats(0.0, 1.0).map(lambda u: u * mass),
+                       st.sampled_from([0.0, 5e-324, 1e-300, 1e-17, 0.5 * mass, mass * (1 - 1e-16), mass]))
+    outside = st.sampled_from([-1e-300, -1.0, mass * (1 + 1e-15), 2 * mass + 1, np.nan, np.inf])
+    return st.one_of(st.lists(inside, min_size=0, max_size=6).map(np.array), inside, outside, bad_array)
+
+
+def naming(function, *names):
+    """``function``, whose ValueError/TypeError must name one of ``names`` (its parameters)."""
+
+    def call(*args):
+        try:
+            return function(*args)
+        except (ValueError, TypeError) as error:
+            assert any(name in str(error) for name in names), f"{function.__name__}: {error!r} names none of {names}"
+            raise
+
+    call.__name__ = getattr(function, "__name__", repr(function))
+    return call
+
+
+def check_cdf(solution, x, values):
+    """F(t, x) lies in [0, M] and does not decrease in x (to 1e-7 M: exactly at the blow-up time the root
+    next to 0 is found only to |a| ~ 1e-8, where the characteristic a - t m(a) ~ a^3 is flat; see
+    test_cross_exact.py)."""
+    values = np.asarray(values)
+    assert values.shape == np.shape(x)
+    assert np.all(values >= 0.0) and np.all(values <= solution.mass)
+    flat_x, flat_values = np.ravel(x), values.ravel()
+    order = np.argsort(flat_x, kind="stable")
+    assert np.all(np.diff(flat_values[order]) >= -1e-7 * solution.mass)
+
+
+@FUZZ
+@given(data=DATA, t=scalar(1.1), x=array([-0.5, 0.0, 0.5]))
+def test_exact_mass_function(data, t, x):
+    safe_call(naming(profile, "data"), data)
+    values = safe_call(naming(exact_mass_function, "data", "t", "x"), data, t, x)
+    if values is not None:
+        solution = AggregationSolution(data, t)
+        check_cdf(solution, x, values)
+
+
+@FUZZ
+@given(data=DATA, t=scalar(1.1), x=array([-0.5, 0.0, 0.5]), w=st.data())
+def test_aggregation_solution_methods(data, t, x, w):
+    solution = safe_call(naming(AggregationSolution, "data", "t"), data, t)
+    if solution is None:
+        return
+    assert 0.0 <= solution.level <= 0.5 * solution.mass
+    assert 0.0 <= solution.dirac_mass <= solution.mass and 0.0 <= solution.collapse_radius
+    values = safe_call(naming(solution.cdf, "x"), x)
+    if values is not None:
+        check_cdf(solution, x, values)
+    safe_call(naming(solution.antiderivative, "x"), x)
+    levels_drawn = w.draw(levels(solution.mass))
+    quantiles = safe_call(naming(solution.quantile, "w"), levels_drawn)
+    if quantiles is not None:
+        assert np.shape(quantiles) == np.shape(levels_drawn)
+    safe_call(naming(solution.quantile_integral, "w"), levels_drawn)
+
+
+SOLUTIONS = [AggregationSolution(data, t) for data, t in
+             [("smooth20", 0.5), ("smooth20", 1.1), ("indicator", 1.0), ("indicator", 1.5), ("laplace", 3.0),
+              ("smooth10", 0.0)]]
+MEASURES = st.sampled_from([*SOLUTIONS, ConcaveLaplaceSolution(2.5), None, "smooth20", AggregationSolution])
+
+
+def masses_for(measure):
+    """Masses adding up to the measure's mass (normalised random ones, one atom, some zeros), or not."""
+    mass = float(getattr(measure, "mass", 1.0))
+    weights = st.lists(st.one_of(st.floats(0.0, 1.0), st.sampled_from([0.0, 5e-324, 1e-300])), min_size=1,
+                       max_size=6).map(np.array)
+    normalised = weights.filter(lambda w: w.sum() > 1e-300).map(lambda w: w * (mass / w.sum()))
+    return st.one_of(normalised, st.just(np.array([mass])), array([mass]), st.lists(st.sampled_from(
+        [-1.0, 1e300, 1.7e308, mass]), min_size=1, max_size=4).map(np.array))
+
+
+def step_values(measure, size):
+    """``size`` values of a step function ending at the measure's mass (or not, or bad values)."""
+    mass = float(getattr(measure, "mass", 1.0))
+    values = st.lists(st.one_of(st.floats(0.0, 1.0).map(lambda u: u * mass), st.sampled_from(
+        [0.0, mass, -1.0, 2.0 * mass, 1e300, -1.7e308])), min_size=size, max_size=size).map(np.array)
+    ending = values.map(lambda v: np.append(v[:-1], mass) if v.size else v)
+    return st.one_of(ending, values, bad_array)
+
+
+@FUZZ
+@given(measure=MEASURES, breaks=array([-1.0, 0.0, 1.0], ordered=True), drawn=st.data())
+def test_l1_to_step_function(measure, breaks, drawn):
+    size = np.size(breaks) if isinstance(breaks, np.ndarray) else 1
+    values = drawn.draw(step_values(measure, max(size, 1)))
+    distance = safe_call(naming(l1_to_step_function, "measure", "breaks", "values"), measure, breaks, values)
+    assert distance is None or distance >= -1e-12
+
+
+@FUZZ
+@given(solution=MEASURES, positions=array([-0.5, 0.0, 0.5]), drawn=st.data())
+def test_w1_atoms(solution, positions, drawn):
+    masses = drawn.draw(masses_for(solution))
+    if isinstance(positions, np.ndarray) and isinstance(masses, np.ndarray) and positions.ndim == masses.ndim == 1:
+        positions = np.resize(positions, masses.size) if positions.size else positions
+    distance = safe_call(naming(distances.w1_atoms, "solution", "positions", "masses"), solution,
+                         positions, masses)
+    assert distance is None or distance >= -1e-12
+
+
+@FUZZ
+@given(solution=MEASURES, edges=array([-1.0, 0.0, 1.0], ordered=True), drawn=st.data())
+def test_w1_cells(solution, edges, drawn):
+    cells = max(np.size(edges) - 1, 1) if isinstance(edges, np.ndarray) else 1
+    values = drawn.draw(st.one_of(step_values(solution, cells), bad_array))
+    distance = safe_call(naming(distances.w1_cells, "solution", "edges", "values"), solution, edges, values)
+    assert distance is None or distance >= -1e-12
+
+
+# The cases the fuzzing found (each crashed, returned a wrong value or named no parameter before its fix)
+
+
+def test_full_collapse_of_the_indicator_at_t_1_is_reported():
+    """At t = 1 every level of (4.4) reaches 0 together: the Dirac mass is all of M, as the CDF says."""
+    solution = AggregationSolution("indicator", 1.0)
+    assert solution.dirac_mass == 2.0 and solution.level == 0.0 and solution.collapse_radius == 1.0
+    assert solution.cdf(0.0) - solution.cdf(-1e-300) == 2.0
+
+
+def test_brackets_near_the_largest_double_do_not_overflow():
+    """The root's first midpoint 0.5 (low + high) overflowed to -inf for x = -1.7e308 (NaN antiderivative)."""
+    for data, t in [("laplace", 2.0), ("laplace", 1e8), ("smooth20", 1.1)]:
+        solution = AggregationSolution(data, t)
+        np.testing.assert_array_equal(solution.cdf(np.array([-1.7e308, 1.7e308])), [0.0, solution.mass])
+        assert float(solution.antiderivative(-1.7e308)) == 0.0
+    assert float(AggregationSolution("laplace", 2.0).antiderivative(1.7e308)) == 1.7e308
+
+
+def test_cdf_and_level_stay_within_their_ranges_under_rounding():
+    """M/2 + m(a) and M/2 - m(a0) round to -ulp(M) in the far left tail and just short of a full collapse."""
+    x = np.linspace(-1.0, -0.8, 2001)
+    for data, t in [("smooth10", 1.1), ("smooth20", 0.5), (Data1D("p30", 30), 0.999999999)]:
+        assert AggregationSolution(data, t).cdf(x).min() >= 0.0
+    solution = AggregationSolution(Data1D("p30", 30), 5.140625)
+    assert solution.level >= 0.0 and solution.dirac_mass <= solution.mass
+
+
+@pytest.mark.parametrize("measure", [None, "smooth20", AggregationSolution, 1.0])
+def test_measures_without_the_needed_methods_are_refused_naming_measure(measure):
+    with pytest.raises(TypeError, match="measure"):
+        l1_to_step_function(measure, [0.0], [1.0])
+
+
+@pytest.mark.parametrize(("call", "name"), [
+    (lambda s: l1_to_step_function(s, [1.7e308], [2.0]), "breaks"),
+    (lambda s: distances.w1_atoms(s, [1.7e308], [2.0]), "positions"),
+    (lambda s: distances.w1_cells(s, [0.0, 1.7e308], [1.0]), "edges"),
+    (lambda s: s.antiderivative(1.7e308), "x"),
+])
+def test_positions_whose_products_with_the_mass_overflow_are_refused_naming_them(call, name):
+    with pytest.raises(ValueError, match=rf"\b{name}\b"):
+        call(AggregationSolution("indicator", 0.5))

@@ -1,0 +1,441 @@
+"""Every claim of the cross-method comparison can fail: each measure of cross/verdicts.py passes on synthetic
+results of the shape the theory states and fails on a plausible wrong one (an SPD at order 0.5, an SPD error
+that grows in time or is not zero once all the mass has collapsed, blob, LTP, SP and Godunov orders off their
+bands, blob particles that coincide or spread beyond delta, a method faster than the SPDs, a particle method
+1e-6 off the SPD, a collision event in the wrong place, a solver that does not chatter, LTP refused at 0.9).
+
+The inputs are the result dictionaries the scripts save (scripts/cross/study_data.py and behaviour_data.py,
+same keys, checked below), built from the config's sizes, times and bands, so the tests follow the config."""
+
+import ast
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from particle_methods.cross import verdicts as v
+from particle_methods.cross.exact import AggregationSolution
+from particle_methods.rates import Recorder
+from particle_methods.workflow import load_results, save_results
+
+ROOT = Path(__file__).parents[2]
+CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["cross"]
+RULES = CONFIG["claims"]
+BLOB = [f"blob, m = {m}" for m in CONFIG["blob"]["orders"]]
+METHODS = ["SPD, equal masses", "SPD, grid weights", "particle method", "Godunov for F", *BLOB, "LTP", "SP"]
+TIMES = sorted({0.0, *CONFIG["times"], *CONFIG["particle_times"], *CONFIG["ltp"]["times"],
+                *CONFIG["ltp"]["sp_times"]})
+BEFORE = [t for t in CONFIG["times"] if t < 1.0]
+AFTER = [t for t in CONFIG["times"] if t > 1.0]
+
+
+def middle(band):
+    return 0.5 * (band[0] + band[1])
+
+
+def sizes_at(spec_sizes, t):
+    """The sizes of a method at t (SP's may depend on the time, as in the config)."""
+    return spec_sizes[t] if isinstance(spec_sizes, dict) else spec_sizes
+
+
+LTP = CONFIG["ltp"]
+# method -> (times, sizes (the config's), coefficient, seconds per size^power, power): error = coefficient
+# size^-order, wall time seconds size^power. The SPDs reach the target W1 within their runs at O(n) cost; the
+# others cost O(n^2) or O(n/h) and are extrapolated from runs longer than min_extrapolation_seconds.
+SPECS = {
+    "SPD, equal masses": ([0.0, *CONFIG["times"]], CONFIG["spd_n"], 0.1, 1e-7, 1.0),
+    "SPD, grid weights": ([0.0, *CONFIG["times"]], CONFIG["grid_inverse_h"], 0.05, 1e-7, 1.0),
+    "particle method": (CONFIG["particle_times"], CONFIG["particle_inverse_h"], 0.05, 1e-5, 2.0),
+    "Godunov for F": (CONFIG["times"], CONFIG["godunov"]["cells"], 0.2, 1e-5, 1.0),
+    **{name: (CONFIG["times"], CONFIG["blob"]["inverse_h"], 0.05, 1e-5, 2.0) for name in BLOB},
+    "LTP": (LTP["times"], LTP["inverse_h"], 0.5, 1e-3, 1.0),
+    "SP": (LTP["sp_times"], {t: LTP["inverse_h"] if t < 1.0 else LTP.get("sp_after_inverse_h", LTP["inverse_h"])
+                             for t in LTP["sp_times"]}, 0.5, 1e-3, 1.0),
+}
+
+
+def default_order(method, t):
+    """The order each method should show (the middle of its band)."""
+    if method.startswith("SPD"):
+        return middle(RULES["spd_order"])
+    if method.startswith("blob"):
+        return middle(RULES["blob_order_before"]) if t < 1.0 else RULES["blob_order_after_min"] + 0.1
+    if method == "LTP":
+        return middle(RULES["ltp_order"])
+    if method == "SP":
+        return middle(RULES["sp_order_before"]) if t < 1.0 else middle(RULES["sp_order_after"])
+    if method == "Godunov for F":
+        return middle(RULES["godunov_order"])
+    return 1.0
+
+
+def collapsed(data, t):
+    solution = AggregationSolution(data, t)
+    return solution.dirac_mass == solution.mass
+
+
+def study(change=None, change_case=None):
+    """The study result: one row per data, time, method and size, passing every claim. ``change(row)`` may
+    edit each row (a dict: data, t, method, size, error, seconds, width, spd_difference) to a wrong outcome, and
+    ``change_case(case)`` each exact case (a dict: data, t, mass, dirac)."""
+    rows = []
+    for data in CONFIG["data"]:
+        for t in TIMES:
+            solution = AggregationSolution(data, t)
+            for method, (times, sizes, coefficient, cost, power) in SPECS.items():
+                if t not in times:
+                    continue
+                for size in sizes_at(sizes, t):
+                    error = coefficient * size ** -default_order(method, t)
+                    if method.startswith("SPD"):
+                        # contraction: below the initial error; exact once all the mass is in the Dirac mass
+                        error = 0.0 if collapsed(data, t) else error * (1.0 if t == 0.0 else 0.5)
+                    width = math.nan
+                    if method.startswith("blob") and solution.dirac_mass > 0:
+                        width = 0.5 * (1.0 / size) ** CONFIG["blob"]["q"]  # apart, within delta = h^q
+                    row = {"data": data, "t": t, "method": method, "size": size, "error": error,
+                           "seconds": cost * size**power, "width": width,
+                           "spd_difference": 2e-16 if method == "particle method" else math.nan}
+                    if change is not None:
+                        change(row)
+                    rows.append(row)
+    cases = []
+    for data in CONFIG["data"]:
+        for t in TIMES:
+            solution = AggregationSolution(data, t)
+            case = {"data": data, "t": t, "mass": solution.mass, "dirac": solution.dirac_mass}
+            if change_case is not None:
+                change_case(case)
+            cases.append(case)
+    return {
+        "data": np.array(CONFIG["data"]), "times": np.array(TIMES, dtype=float), "methods": np.array(METHODS),
+        "data_index": np.array([CONFIG["data"].index(r["data"]) for r in rows]),
+        "time_index": np.array([TIMES.index(r["t"]) for r in rows]),
+        "method_index": np.array([METHODS.index(r["method"]) for r in rows]),
+        "size": np.array([r["size"] for r in rows]),
+        "count": np.array([2 * r["size"] + 1 for r in rows]),
+        "error": np.array([r["error"] for r in rows]), "seconds": np.array([r["seconds"] for r in rows]),
+        "dirac_width": np.array([r["width"] for r in rows]),
+        "spd_difference": np.array([r["spd_difference"] for r in rows]),
+        "case_data": np.array([c["data"] for c in cases]), "case_times": np.array([c["t"] for c in cases]),
+        "case_mass": np.array([c["mass"] for c in cases]), "case_dirac": np.array([c["dirac"] for c in cases]),
+    }
+
+
+def behaviour(**changes):
+    """The behaviour result, passing every claim; keyword arguments replace entries."""
+    data = CONFIG["data"]
+    inverse_h = np.array(LTP["inverse_h"])
+    dt = LTP["dt_over_h"] / inverse_h
+    predicted = np.linspace(1.0, 1.03, len(data))
+    result = {
+        "data": np.array(data), "collision_predicted": predicted, "collision_measured": predicted + 3e-11,
+        # DOP853 chatters: 500 right-hand sides up to the collision, the budget spent 1e-4 past it
+        "stall_collision": predicted, "stall_before": np.full(len(data), 500.0),
+        "stall_after": np.full(len(data), 4500.0), "stall_reached": predicted + 1e-4,
+        "ltp_peak_position": np.zeros(len(data)), "ltp_peak_width": np.full(len(data), 0.01),
+        "ltp_inverse_h": inverse_h, "ltp_dt": dt, "ltp_refusal": np.tile(1.0 - dt, (len(data), 1)),
+        "stall_window": CONFIG["behaviour"]["stall_window"],
+    }
+    return result | changes
+
+
+def run_study(d):
+    return v.study_claims(d, Recorder(lambda *_: None), CONFIG)
+
+
+def status(claims, name):
+    return {claim.id: claim.status for claim in claims}[f"cross.{name}"]
+
+
+def failing(claims):
+    return [(claim.id, claim.measured, claim.tolerance) for claim in claims if claim.status != "pass"]
+
+
+def only_failing(claims, *names):
+    """The claims ``names`` fail and every other one passes."""
+    assert sorted(claim.id for claim in claims if claim.status != "pass") == sorted(f"cross.{n}" for n in names), \
+        failing(claims)
+
+
+@pytest.fixture(scope="module")
+def passing_study():
+    return study()
+
+
+# The synthetic results have the keys the scripts save
+
+
+def saved_keys(script):
+    """Keyword names of the save_results call in scripts/cross/<script>."""
+    tree = ast.parse((ROOT / "scripts" / "cross" / script).read_text())
+    calls = [node for node in ast.walk(tree) if isinstance(node, ast.Call)
+             and getattr(node.func, "id", getattr(node.func, "attr", None)) == "save_results"]
+    assert len(calls) == 1
+    return {keyword.arg for keyword in calls[0].keywords}
+
+
+def test_synthetic_results_have_the_keys_the_scripts_save(passing_study):
+    assert set(passing_study) == saved_keys("study_data.py")
+    assert set(behaviour()) == saved_keys("behaviour_data.py")
+
+
+def test_claims_read_the_results_as_saved(tmp_path, passing_study):
+    """Through an .npz file (strings and floats come back as numpy arrays) nothing changes."""
+    save_results(tmp_path / "study.npz", **passing_study)
+    save_results(tmp_path / "behaviour.npz", **behaviour())
+    assert not failing(run_study(load_results(tmp_path / "study.npz")))
+    assert not failing(v.behaviour_claims(load_results(tmp_path / "behaviour.npz"), CONFIG))
+
+
+# Study claims
+
+
+def test_study_claims_all_pass_on_the_expected_outcome(passing_study):
+    claims = run_study(passing_study)
+    assert not failing(claims)
+    assert {claim.id for claim in claims} == {f"cross.{name}" for name in (
+        "exact.dirac_share", "order.spd", "spd.contraction", "spd.collapse_exact", "order.blob_before",
+        "order.blob_after", "order.ltp", "order.sp_before", "order.sp_after", "order.godunov",
+        "identity.particle_spd", "blob.no_dirac", "fastest")}
+    assert all(claim.kind in ("derived", "check") and claim.source for claim in claims)
+
+
+def test_study_records_one_rate_per_fitted_series(passing_study):
+    recorder = Recorder(lambda *_: None)
+    v.study_claims(passing_study, recorder, CONFIG)
+    assert recorder.fits and all(fit.window == CONFIG["fit_points"] for fit in recorder.fits)
+
+
+@pytest.mark.parametrize("method", ["SPD, equal masses", "SPD, grid weights"])
+def test_spd_at_order_one_half_fails(method):
+    def half(row):
+        if row["method"] == method and row["error"] > 0:
+            row["error"] = 0.1 * row["size"] ** -0.5 * (1.0 if row["t"] == 0.0 else 0.5)
+
+    only_failing(run_study(study(half)), "order.spd")
+
+
+def test_spd_error_growing_in_time_fails():
+    def growing(row):
+        if row["method"] == "SPD, grid weights" and row["t"] > 1.0:
+            row["error"] *= 2.5  # 0.5 -> 1.25 times the initial error: same order, no contraction
+
+    only_failing(run_study(study(growing)), "spd.contraction")
+
+
+def test_spd_not_exact_once_the_mass_has_collapsed_fails():
+    def inexact(row):
+        if row["method"] == "SPD, equal masses" and collapsed(row["data"], row["t"]):
+            row["error"] = 1e-9 / row["size"]
+
+    claims = run_study(study(inexact))
+    assert status(claims, "spd.collapse_exact") == "fail"
+    assert status(claims, "order.spd") == "pass"  # the collapsed case is not fitted
+
+
+def test_collapsed_cases_are_left_out_of_the_spd_and_godunov_orders():
+    """The single Dirac mass: SPD errors 0 (exact) and a Godunov error that does not decrease are not orders."""
+    def flat(row):
+        if row["method"] == "Godunov for F" and collapsed(row["data"], row["t"]):
+            row["error"] = 1e-3
+
+    assert any(collapsed(data, t) for data in CONFIG["data"] for t in CONFIG["times"])
+    assert not failing(run_study(study(flat)))
+
+
+def test_blob_at_order_one_half_before_the_blowup_fails():
+    def slow(row):
+        if row["method"] == BLOB[0] and row["t"] < 1.0:
+            row["error"] = 0.05 * row["size"] ** -0.5
+
+    only_failing(run_study(study(slow)), "order.blob_before")
+
+
+def test_blob_at_order_one_half_after_the_blowup_fails():
+    def slow(row):
+        if row["method"] == BLOB[-1] and row["t"] > 1.0 and row["data"] == CONFIG["data"][0]:
+            row["error"] = 0.05 * row["size"] ** -0.5
+
+    only_failing(run_study(study(slow)), "order.blob_after")
+
+
+@pytest.mark.parametrize(("method", "when", "order", "claim"), [
+    ("LTP", "before", 1.0, "order.ltp"),  # first order: the reconstruction's O(h^2) lost
+    ("SP", "before", 1.0, "order.sp_before"),
+    ("SP", "after", 2.0, "order.sp_after"),  # second order after the blow-up: no Dirac mass to smear
+    ("SP", "after", 0.5, "order.sp_after"),
+    ("Godunov for F", "before", 0.5, "order.godunov"),
+    ("Godunov for F", "after", 1.5, "order.godunov"),
+])
+def test_orders_off_their_bands_fail(method, when, order, claim):
+    times = BEFORE if when == "before" else AFTER
+
+    def off(row):
+        if row["method"] == method and row["t"] in times and not collapsed(row["data"], row["t"]):
+            row["error"] = 0.5 * row["size"] ** -order
+
+    claims = run_study(study(off))
+    assert status(claims, claim) == "fail"
+    assert all(c.status == "pass" for c in claims if c.id.startswith("cross.order") and c.id != f"cross.{claim}")
+
+
+@pytest.mark.parametrize("width", [0.0, 2.0, math.nan])
+def test_blob_particles_that_coincide_or_spread_beyond_delta_fail(width):
+    """Width 0: the blob particles collapsed into a point (a Dirac mass K_delta cannot form); 2 delta: they are
+    not in a cluster of width delta; NaN: no particle in the Dirac mass's levels."""
+    def wrong(row):
+        if row["method"] == BLOB[0] and row["t"] > 1.0 and row["size"] == CONFIG["blob"]["inverse_h"][-1]:
+            row["width"] = width * (1.0 / row["size"]) ** CONFIG["blob"]["q"]
+
+    only_failing(run_study(study(wrong)), "blob.no_dirac")
+
+
+def test_a_method_faster_than_the_spds_fails():
+    def fast(row):
+        if row["method"] == "Godunov for F":
+            row["seconds"] = 1e-12 * row["size"]
+
+    only_failing(run_study(study(fast)), "fastest")
+
+
+def test_an_spd_only_three_times_faster_fails(passing_study):
+    """The SPDs slowed down to a third of LTP's time to the target (their wall times scale their time to it)."""
+    table = v.fastest_table(passing_study, CONFIG["target_error"], CONFIG["min_extrapolation_seconds"])
+    factor = {key: times["LTP"][0] / 3.0 / min(times[m][0] for m in v.SPD_METHODS)
+              for key, times in table.items() if "LTP" in times}
+
+    def slower(row):
+        if row["method"] in v.SPD_METHODS and (row["data"], row["t"]) in factor:
+            row["seconds"] *= factor[(row["data"], row["t"])]
+
+    claims = run_study(study(slower))
+    only_failing(claims, "fastest")
+    assert float(next(c for c in claims if c.id == "cross.fastest").value) == pytest.approx(3.0, rel=1e-9)
+
+
+def test_particle_method_1e_6_off_the_spd_fails():
+    def off(row):
+        if row["method"] == "particle method" and row["size"] == CONFIG["particle_inverse_h"][-1]:
+            row["spd_difference"] = 1e-6
+
+    only_failing(run_study(study(off)), "identity.particle_spd")
+
+
+def test_no_particle_method_measured_fails():
+    def unmeasured(row):
+        row["spd_difference"] = math.nan
+
+    only_failing(run_study(study(unmeasured)), "identity.particle_spd")
+
+
+@pytest.mark.parametrize("share", [0.5, 0.65, 0.0])
+def test_a_dirac_mass_off_the_issues_57_percent_fails(share):
+    """(4.3) at t = 1.1: 0.5 (a0 from a wrong m), 0.65, or no Dirac mass at all (a0 = 0, blow-up missed)."""
+    late = max(CONFIG["times"])
+
+    def wrong(case):
+        if case["data"] == CONFIG["data"][0] and case["t"] == late:
+            case["dirac"] = share * case["mass"]
+
+    claims = run_study(study(change_case=wrong))
+    assert status(claims, "exact.dirac_share") == "fail"
+
+
+def test_a_method_whose_extrapolation_rests_on_short_runs_is_not_measured():
+    """Godunov's largest run below min_extrapolation_seconds: its time to the target is NaN, and the claim
+    that the SPDs are fastest cannot be decided (fails)."""
+    def short(row):
+        if row["method"] == "Godunov for F":
+            row["seconds"] = 0.1 * CONFIG["min_extrapolation_seconds"] * row["size"] / max(CONFIG["godunov"]["cells"])
+
+    only_failing(run_study(study(short)), "fastest")
+
+
+# time_to_error: the work-precision line
+
+
+def test_time_to_error_interpolates_log_linearly_between_bracketing_runs():
+    seconds, extrapolated = v.time_to_error([1e-4, 1e-6, 1e-8], [1.0, 10.0, 100.0], 1e-7)
+    assert seconds == pytest.approx(10.0 * math.sqrt(10.0), rel=1e-12) and not extrapolated
+    assert v.time_to_error([1e-4, 1e-6, 1e-8], [1.0, 10.0, 100.0], 1e-6) == (pytest.approx(10.0), False)
+
+
+def test_time_to_error_of_a_run_already_below_the_target_is_its_time():
+    assert v.time_to_error([1e-9, 1e-10], [0.5, 2.0], 1e-6) == (0.5, False)
+    assert v.time_to_error([0.0, 0.0], [0.25, 2.0], 1e-6) == (0.25, False)  # exact (the collapsed SPD)
+
+
+def test_time_to_error_extrapolates_from_the_two_largest_runs():
+    seconds, extrapolated = v.time_to_error([1e-1, 1e-2, 1e-3, 1e-4], [0.1, 1.0, 10.0, 100.0], 1e-6)
+    assert seconds == pytest.approx(1e4, rel=1e-12) and extrapolated
+    # the local slope of the last two runs counts, not the first ones: error ~ time^-1/2 there
+    seconds, _ = v.time_to_error([1e-1, 1e-2, 1e-3], [1.0, 2.0, 200.0], 1e-5)
+    assert seconds == pytest.approx(2e4 * 100.0, rel=1e-12)
+
+
+def test_time_to_error_is_infinite_when_the_error_stops_decreasing():
+    assert v.time_to_error([1e-2, 1e-3, 1e-3], [1.0, 10.0, 100.0], 1e-6) == (math.inf, True)
+    assert v.time_to_error([1e-2, 1e-3, 2e-3], [1.0, 10.0, 100.0], 1e-6) == (math.inf, True)
+
+
+def test_time_to_error_does_not_extrapolate_from_runs_shorter_than_min_seconds():
+    errors, seconds = [1e-1, 1e-2, 1e-3], [1e-4, 1e-3, 1e-2]
+    assert v.time_to_error(errors, seconds, 1e-6, min_seconds=0.02)[0] != v.time_to_error(errors, seconds, 1e-6)[0]
+    assert math.isnan(v.time_to_error(errors, seconds, 1e-6, min_seconds=0.02)[0])
+    assert v.time_to_error(errors, seconds, 1e-6, min_seconds=0.01) == (pytest.approx(10.0), True)
+    # interpolation and runs already below the target do not need long runs
+    assert v.time_to_error(errors, seconds, 1e-2, min_seconds=1.0) == (pytest.approx(1e-3), False)
+    assert v.time_to_error(errors, seconds, 1.0, min_seconds=1.0) == (1e-4, False)
+
+
+def test_fastest_table_uses_every_method_at_every_time_after_0(passing_study):
+    table = v.fastest_table(passing_study, CONFIG["target_error"], CONFIG["min_extrapolation_seconds"])
+    assert set(table) == {(data, t) for data in CONFIG["data"] for t in TIMES if t > 0.0}
+    for (_, t), times in table.items():
+        assert set(times) == {m for m, spec in SPECS.items() if t in spec[0]}
+        assert all(seconds > 0 for seconds, _ in times.values())  # every time measured (no NaN)
+
+
+# Behaviour claims
+
+
+def behaviour_status(b, name):
+    return status(v.behaviour_claims(b, CONFIG), name)
+
+
+def test_behaviour_claims_all_pass_on_the_expected_outcome():
+    claims = v.behaviour_claims(behaviour(), CONFIG)
+    assert not failing(claims)
+    assert {claim.id for claim in claims} == {"cross.identity.first_collision", "cross.particle.stall",
+                                              "cross.ltp.refusal"}
+
+
+def test_collision_event_away_from_the_predicted_meeting_fails():
+    b = behaviour()
+    assert behaviour_status(b | {"collision_measured": b["collision_predicted"] + 1e-6},
+                            "identity.first_collision") == "fail"
+    assert behaviour_status(b | {"collision_measured": np.full(len(CONFIG["data"]), np.inf)},
+                            "identity.first_collision") == "fail"  # no collision at all
+
+
+def test_a_solver_that_does_not_chatter_past_the_collision_fails():
+    """As many right-hand sides per unit time after the collision as before it: no stall."""
+    b = behaviour()
+    before_rate = b["stall_before"] / b["stall_collision"]
+    window = CONFIG["behaviour"]["stall_window"]
+    steady = b | {"stall_after": 2.0 * before_rate * window, "stall_reached": b["stall_collision"] + window}
+    assert behaviour_status(steady, "particle.stall") == "fail"
+
+
+def test_ltp_refused_at_0_9_fails():
+    b = behaviour()
+    refusal = b["ltp_refusal"].copy()
+    refusal[0, -1] = 0.9
+    assert behaviour_status(b | {"ltp_refusal": refusal}, "ltp.refusal") == "fail"
+    refusal[0, -1] = 1.0 + 2 * b["ltp_dt"][-1]  # or never refused before the blow-up
+    assert behaviour_status(b | {"ltp_refusal": refusal}, "ltp.refusal") == "fail"
+    refusal[0, -1] = np.nan  # or not refused at all
+    assert behaviour_status(b | {"ltp_refusal": refusal}, "ltp.refusal") == "fail"
