@@ -22,7 +22,7 @@ def latex_number(value: float) -> str:
 def work_precision_table(d, cfg) -> str:
     """LaTeX rows: per method and case, the W1 error at the largest size and the wall time to the target
     (an asterisk marks an extrapolation from the two largest runs)."""
-    table = v.fastest_table(d, cfg["target_error"], cfg["min_extrapolation_seconds"])
+    table = v.fastest_table(d, cfg["target_error"], cfg["min_timed_seconds"])
     keys = list(table)
     head = " & ".join(f"({data}, $t = {t:g}$)" for data, t in keys)
     lines = ["\\begin{tabular}{@{}l" + "r" * len(keys) + "@{}}\\toprule", f"method & {head} \\\\ \\midrule"]

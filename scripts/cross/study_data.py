@@ -85,7 +85,7 @@ def method_table(p):
     }
     for order in blob["orders"]:
         table[f"blob, m = {order}"] = (
-            p["times"], blob["inverse_h"],
+            p["times"], {t: blob["inverse_h"] if t < 1.0 else blob["after_inverse_h"] for t in p["times"]},
             lambda d, k, t, order=order: methods.blob_method(d, 1.0 / k, t, order=order, q=blob["q"]),
             lambda s, out: atoms(s, *out))
     table["LTP"] = (ltp["times"], ltp["inverse_h"],
