@@ -59,7 +59,8 @@ def run(p, threads, output):
     predicted, measured = np.empty(len(data_names)), np.empty(len(data_names))
     stall_start, stall_before, stall_after, stall_reached = (np.empty(len(data_names)) for _ in range(4))
     peak_position, peak_width = np.empty(len(data_names)), np.empty(len(data_names))
-    refusal = np.full((len(data_names), len(ltp["inverse_h"])), np.nan)
+    # Not refused by t_final: an infinite refusal time (the claim then fails; NaN would not compare).
+    refusal = np.full((len(data_names), len(ltp["inverse_h"])), np.inf)
     b = p["behaviour"]
     for i, data in enumerate(data_names):
         h = 1.0 / b["collision_inverse_h"]
@@ -82,13 +83,16 @@ def run(p, threads, output):
                 methods.ltp_method(data, h, ltp["dt_over_h"] * h, b["ltp_t_final"])
             except StabilityError as error:
                 refusal[i, j] = error.time
+        progress(f"{data}: LTP refused at t = {refusal[i]} (dt = {[ltp['dt_over_h'] / k for k in ltp['inverse_h']]})")
         h = 1.0 / ltp["inverse_h"][-1]
+        if not np.isfinite(refusal[i, -1]):
+            peak_position[i] = peak_width[i] = np.nan
+            continue
         peak_position[i], peak_width[i] = densest_particle(data, h, ltp["dt_over_h"] * h, refusal[i, -1])
         solution = AggregationSolution(data, refusal[i, -1])
         progress(f"{data}: at t = {refusal[i, -1]:g} the densest LTP particle sits at {peak_position[i]:.6g} "
                  f"(support edge {solution.left_end:.6g}), width {peak_width[i]:.4g} h (exact flow: "
                  f"{1.0 - refusal[i, -1]:.4g} h at the peak of rho0)")
-        progress(f"{data}: LTP refused at t = {refusal[i]} (dt = {[ltp['dt_over_h'] / k for k in ltp['inverse_h']]})")
 
     save_results(output[0], data=np.array(data_names),
                  collision_predicted=predicted, collision_measured=measured, stall_collision=stall_start,
