@@ -58,7 +58,7 @@ def run(p, threads, output):
     t_after = max(p["times"])
     predicted, measured = np.empty(len(data_names)), np.empty(len(data_names))
     stall_start, stall_before, stall_after, stall_reached = (np.empty(len(data_names)) for _ in range(4))
-    peak_position, peak_width = np.empty(len(data_names)), np.empty(len(data_names))
+    peak_position, peak_width, peak_edge = (np.empty(len(data_names)) for _ in range(3))
     # Not refused by t_final: an infinite refusal time (the claim then fails; NaN would not compare).
     refusal = np.full((len(data_names), len(ltp["inverse_h"])), np.inf)
     b = p["behaviour"]
@@ -86,10 +86,11 @@ def run(p, threads, output):
         progress(f"{data}: LTP refused at t = {refusal[i]} (dt = {[ltp['dt_over_h'] / k for k in ltp['inverse_h']]})")
         h = 1.0 / ltp["inverse_h"][-1]
         if not np.isfinite(refusal[i, -1]):
-            peak_position[i] = peak_width[i] = np.nan
+            peak_position[i] = peak_width[i] = peak_edge[i] = np.nan
             continue
         peak_position[i], peak_width[i] = densest_particle(data, h, ltp["dt_over_h"] * h, refusal[i, -1])
         solution = AggregationSolution(data, refusal[i, -1])
+        peak_edge[i] = solution.left_end
         progress(f"{data}: at t = {refusal[i, -1]:g} the densest LTP particle sits at {peak_position[i]:.6g} "
                  f"(support edge {solution.left_end:.6g}), width {peak_width[i]:.4g} h (exact flow: "
                  f"{1.0 - refusal[i, -1]:.4g} h at the peak of rho0)")
@@ -97,8 +98,9 @@ def run(p, threads, output):
     save_results(output[0], data=np.array(data_names),
                  collision_predicted=predicted, collision_measured=measured, stall_collision=stall_start,
                  stall_before=stall_before, stall_after=stall_after, stall_reached=stall_reached,
-                 ltp_peak_position=peak_position, ltp_peak_width=peak_width, ltp_inverse_h=np.array(ltp["inverse_h"]),
-                 ltp_dt=ltp["dt_over_h"] / np.array(ltp["inverse_h"]), ltp_refusal=refusal,
+                 ltp_peak_position=peak_position, ltp_peak_width=peak_width, ltp_peak_edge=peak_edge,
+                 ltp_inverse_h=np.array(ltp["inverse_h"]), ltp_dt=ltp["dt_over_h"] / np.array(ltp["inverse_h"]),
+                 ltp_refusal=refusal,
                  stall_window=b["stall_window"])
 
 

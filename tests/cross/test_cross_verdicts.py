@@ -137,6 +137,7 @@ def behaviour(**changes):
         "stall_collision": predicted, "stall_before": np.full(len(data), 500.0),
         "stall_after": np.full(len(data), 4500.0), "stall_reached": predicted + 1e-4,
         "ltp_peak_position": np.zeros(len(data)), "ltp_peak_width": np.full(len(data), 0.01),
+        "ltp_peak_edge": np.full(len(data), -0.8),
         "ltp_inverse_h": inverse_h, "ltp_dt": dt, "ltp_refusal": np.tile(1.0 - dt, (len(data), 1)),
         "stall_window": CONFIG["behaviour"]["stall_window"],
     }
@@ -411,7 +412,7 @@ def test_behaviour_claims_all_pass_on_the_expected_outcome():
     claims = v.behaviour_claims(behaviour(), CONFIG)
     assert not failing(claims)
     assert {claim.id for claim in claims} == {"cross.identity.first_collision", "cross.particle.stall",
-                                              "cross.ltp.refusal"}
+                                              "cross.ltp.refusal", "cross.ltp.edge_collapse"}
 
 
 def test_collision_event_away_from_the_predicted_meeting_fails():
@@ -440,3 +441,16 @@ def test_ltp_refused_at_0_9_fails():
     assert behaviour_status(b | {"ltp_refusal": refusal}, "ltp.refusal") == "fail"
     refusal[0, -1] = np.nan  # or not refused at all
     assert behaviour_status(b | {"ltp_refusal": refusal}, "ltp.refusal") == "fail"
+
+
+def test_early_refusal_explained_by_the_edge_particle_passes_and_other_causes_fail():
+    """An early refusal whose densest particle sits at the edge, much narrower than the exact flow, is
+    explained; the same refusal with the densest particle at the centre, or as wide as the exact flow, is not."""
+    b = behaviour()
+    refusal = b["ltp_refusal"].copy()
+    refusal[0, -1] = 0.98  # several steps early at the finest h
+    edge = b["ltp_peak_edge"].copy()
+    early = b | {"ltp_refusal": refusal, "ltp_peak_position": edge.copy(), "ltp_peak_width": np.full(edge.size, 1e-3)}
+    assert behaviour_status(early, "ltp.edge_collapse") == "pass"
+    assert behaviour_status(early | {"ltp_peak_position": np.zeros(edge.size)}, "ltp.edge_collapse") == "fail"
+    assert behaviour_status(early | {"ltp_peak_width": np.full(edge.size, 0.02)}, "ltp.edge_collapse") == "fail"

@@ -237,6 +237,21 @@ def study_claims(d, rates: Recorder, p):
     return rows
 
 
+def edge_collapse(b) -> float:
+    """Largest (width of the densest LTP particle at the refusal) / (exact (1 - t) h) over the data whose
+    refusal (finest h) came more than one step early: the explanation of an early refusal. Infinite for
+    such data if that particle is not at the support's edge (within 10 % of its half-width): the
+    explanation does not hold there; 0 when no refusal came early (nothing to explain)."""
+    dt, refusal = b["ltp_dt"][-1], b["ltp_refusal"][:, -1]
+    with np.errstate(invalid="ignore"):
+        early = (1.0 - dt - refusal) / dt > 1.0 + ROUNDING
+    if not np.any(early):
+        return 0.0
+    at_edge = np.abs(b["ltp_peak_position"] - b["ltp_peak_edge"]) <= 0.1 * np.abs(b["ltp_peak_edge"])
+    ratios = np.where(at_edge, b["ltp_peak_width"] / (1.0 - refusal), np.inf)
+    return float(np.max(ratios[early]))
+
+
 def behaviour_claims(b, p):
     """The particle method against the weighted SPD, its first collision, the stall of the ODE solver
     past it, the LTP refusal before the blow-up and the blob clusters after it."""
@@ -260,4 +275,10 @@ def behaviour_claims(b, p):
               "t = 1 - dt, to within one step, as rho_h(0) follows the exact 1/(1 - t): largest "
               "|t_refused - (1 - dt)|/dt", 1.0 + ROUNDING, float(np.max(refusal_miss)),
               source="LTP paper (2.31)-(2.32); blob paper section 4.1 (blow-up)"),
+        claim(c.at_most, "ltp.edge_collapse", "why the refusal comes early where it does: at the refusal (finest h) "
+              "the densest LTP particle sits at the edge of the support and is narrower than the exact flow's "
+              "(1 - t) h: largest (its width / (1 - t) h) over the data refused more than a step early (infinite if "
+              "it is not within 10 % of the support's half-width from the edge; 0 if no refusal is early)", 0.5,
+              edge_collapse(b),
+              kind="check", source="LTP paper (2.31)-(2.32): the width update uses rho_h at the centre"),
     ]
