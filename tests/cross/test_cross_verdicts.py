@@ -454,3 +454,8 @@ def test_early_refusal_explained_by_the_edge_particle_passes_and_other_causes_fa
     assert behaviour_status(early, "ltp.edge_collapse") == "pass"
     assert behaviour_status(early | {"ltp_peak_position": np.zeros(edge.size)}, "ltp.edge_collapse") == "fail"
     assert behaviour_status(early | {"ltp_peak_width": np.full(edge.size, 0.02)}, "ltp.edge_collapse") == "fail"
+
+
+def test_time_to_error_does_not_extrapolate_a_cost_that_did_not_grow():
+    """The largest run faster than the one before (a parallel threshold, a cache): no growth measured."""
+    assert math.isnan(v.time_to_error([1e-2, 1e-3], [0.2, 0.15], 1e-6, min_seconds=0.1)[0])

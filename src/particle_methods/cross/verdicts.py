@@ -81,9 +81,10 @@ def time_to_error(errors, seconds, target: float, min_seconds: float = 0.0) -> t
     Interpolated log-linearly between the two runs bracketing the target; from the smallest
     run if it is already below; extrapolated from the two largest runs (their local slope of log
     time against log error) if no run reaches it, and then NaN (not measured) unless the largest
-    took at least ``min_seconds`` (shorter runs time overheads, not the method's growth; a fixed
-    overhead left in the smaller run flattens the slope, so the extrapolated time is then too
-    small, which favours the method); infinite if those do not decrease the error.
+    took at least ``min_seconds`` and longer than the other (shorter runs time overheads, not the
+    method's growth; a fixed overhead left in the smaller run flattens the slope, so the
+    extrapolated time is then too small, which favours the method); infinite if those do not
+    decrease the error.
     """
     errors, seconds = np.asarray(errors, dtype=float), np.asarray(seconds, dtype=float)
     below = np.flatnonzero(errors <= target)
@@ -98,8 +99,8 @@ def time_to_error(errors, seconds, target: float, min_seconds: float = 0.0) -> t
         extrapolated = True
         if not errors[j] < errors[i]:
             return math.inf, True
-        if seconds[j] < min_seconds:
-            return math.nan, True
+        if seconds[j] < min_seconds or not seconds[j] > seconds[i]:
+            return math.nan, True  # the growth of the cost is not measured
     slope = math.log(seconds[j] / seconds[i]) / math.log(errors[j] / errors[i])
     return float(seconds[i] * (target / errors[i]) ** slope), extrapolated
 
