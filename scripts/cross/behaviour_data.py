@@ -60,8 +60,8 @@ def run(p, threads, output):
     stall_start, stall_before, stall_after, stall_reached = (np.empty(len(data_names)) for _ in range(4))
     peak_position, peak_width, peak_edge = (np.empty(len(data_names)) for _ in range(3))
     # Not refused by t_final: an infinite refusal time (the claim then fails; NaN would not compare).
-    refusal = np.full((len(data_names), len(ltp["inverse_h"])), np.inf)
     b = p["behaviour"]
+    refusal = np.full((len(data_names), len(b["ltp_inverse_h"])), np.inf)
     for i, data in enumerate(data_names):
         h = 1.0 / b["collision_inverse_h"]
         x, _, masses = methods.grid_particles(data, h)
@@ -77,14 +77,14 @@ def run(p, threads, output):
                  f"without the event DOP853 spends {stall_before[i]:.0f} right-hand sides before it and "
                  f"{stall_after[i]:.0f} after it, reaching {stall_reached[i]:.12g}")
 
-        for j, k in enumerate(ltp["inverse_h"]):
+        for j, k in enumerate(b["ltp_inverse_h"]):
             h = 1.0 / k
             try:
                 methods.ltp_method(data, h, ltp["dt_over_h"] * h, b["ltp_t_final"])
             except StabilityError as error:
                 refusal[i, j] = error.time
-        progress(f"{data}: LTP refused at t = {refusal[i]} (dt = {[ltp['dt_over_h'] / k for k in ltp['inverse_h']]})")
-        h = 1.0 / ltp["inverse_h"][-1]
+        progress(f"{data}: LTP refused at t = {refusal[i]} (dt = {[ltp['dt_over_h'] / k for k in b['ltp_inverse_h']]})")
+        h = 1.0 / b["ltp_inverse_h"][-1]
         if not np.isfinite(refusal[i, -1]):
             peak_position[i] = peak_width[i] = peak_edge[i] = np.nan
             continue
@@ -99,7 +99,7 @@ def run(p, threads, output):
                  collision_predicted=predicted, collision_measured=measured, stall_collision=stall_start,
                  stall_before=stall_before, stall_after=stall_after, stall_reached=stall_reached,
                  ltp_peak_position=peak_position, ltp_peak_width=peak_width, ltp_peak_edge=peak_edge,
-                 ltp_inverse_h=np.array(ltp["inverse_h"]), ltp_dt=ltp["dt_over_h"] / np.array(ltp["inverse_h"]),
+                 ltp_inverse_h=np.array(b["ltp_inverse_h"]), ltp_dt=ltp["dt_over_h"] / np.array(b["ltp_inverse_h"]),
                  ltp_refusal=refusal,
                  stall_window=b["stall_window"])
 

@@ -128,7 +128,7 @@ def study(change=None, change_case=None):
 def behaviour(**changes):
     """The behaviour result, passing every claim; keyword arguments replace entries."""
     data = CONFIG["data"]
-    inverse_h = np.array(LTP["inverse_h"])
+    inverse_h = np.array(CONFIG["behaviour"]["ltp_inverse_h"])
     dt = LTP["dt_over_h"] / inverse_h
     predicted = np.linspace(1.0, 1.03, len(data))
     result = {
