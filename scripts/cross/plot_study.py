@@ -3,7 +3,7 @@ or cells, or against wall time, for every data (rows) and time (columns)."""
 
 import numpy as np
 
-from particle_methods.cross.verdicts import series
+from particle_methods.cross.verdicts import cases, series
 from particle_methods.plotting import label_panel, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
@@ -24,14 +24,13 @@ TITLES = {"smooth20": "(4.3) (1 - x^2)^20", "indicator": "(4.4) indicator of [-1
 
 def run(d, p, figure, output):
     data, times = p["data"], p["times"]
+    every = cases(d)
     fig, axes = new_figure(len(data), len(times), width=11, height=8.5, squeeze=False)
     for i, name in enumerate(data):
         for j, t in enumerate(times):
             ax = axes[i, j]
-            for method in d["methods"]:
-                method = str(method)
-                if not np.any((d["method_index"] == list(d["methods"]).index(method))
-                              & (d["time_index"] == list(d["times"]).index(t))):
+            for method in map(str, d["methods"]):
+                if (name, t, method) not in every:
                     continue
                 _, counts, errors, seconds = series(d, name, t, method)
                 colour, marker, line = STYLES.get(method, ("k", "x", "-"))

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..blob.kernels import kernel_1d
+from ..blob.kernels import kernel_1d, pair_sums
 from ..blob.mollifiers import mollifier
 from ..blob.solver import integrate_particles
 from ..finite_volume import CONCAVE, godunov
@@ -90,19 +90,13 @@ def weighted_velocities(masses) -> np.ndarray:
 
 
 def particle_velocities(x, masses) -> np.ndarray:
-    """-sum_j m_j K'(x_i - x_j) with K = |x|/2 and K'(0) = 0 at any positions (ties exert no force)."""
+    """-sum_j m_j K'(x_i - x_j) with K = |x|/2 and K'(0) = 0 at any positions (ties exert no force): the
+    right-hand side of the particle method, by the blob package's pair sums."""
     x = finite_array("x", x)
     masses = finite_array("masses", masses)
     same_length(x=x, masses=masses)
-    order = np.argsort(x, kind="stable")
-    sorted_x, sorted_m = x[order], masses[order]
-    # Mass strictly left and strictly right of each particle: group equal positions together.
-    first = np.searchsorted(sorted_x, sorted_x, side="left")
-    last = np.searchsorted(sorted_x, sorted_x, side="right")
-    cumulative = _levels(sorted_m)
-    velocity = np.empty_like(x)
-    velocity[order] = 0.5 * ((cumulative[-1] - cumulative[last]) - cumulative[first])
-    return velocity
+    velocity, _ = pair_sums(x[:, None], masses, *kernel_1d(KERNEL).arrays())
+    return velocity[:, 0]
 
 
 def spd_equal(data, n: int, t: float):

@@ -33,13 +33,14 @@ def claim(compare, name, text, *args, source, kind="derived", **kwargs):
     return compare(f"{PAPER}.{name}", PAPER, "cross", text, *args, kind=kind, source=source, **kwargs)
 
 
-def series(d, data: str, t: float, method: str):
-    """(sizes, particle or cell counts, W1 errors, seconds) of one method on one case, by size."""
+def series(d, data: str, t: float, method: str, keys=("size", "count", "error", "seconds")):
+    """The columns ``keys`` (default: sizes, particle or cell counts, W1 errors, seconds) of one method
+    on one case, by size."""
     names, times, methods = list(d["data"]), list(d["times"]), list(d["methods"])
     rows = ((d["data_index"] == names.index(data)) & (d["time_index"] == times.index(t))
             & (d["method_index"] == methods.index(method)))
     order_ = np.argsort(d["size"][rows], kind="stable")
-    return tuple(d[key][rows][order_] for key in ("size", "count", "error", "seconds"))
+    return tuple(d[key][rows][order_] for key in keys)
 
 
 def cases(d):
@@ -122,18 +123,18 @@ def speed_ratio(d, min_seconds: float) -> float:
     overheads) and whose error the SPD runs bracket (interpolated, never extrapolated); NaN if
     there is no such run."""
     ratios = []
-    for data, t, method in cases(d):
+    every = cases(d)
+    for data, t, method in every:
         if method in SPD_METHODS or t == 0.0:
             continue
-        _, _, errors, seconds = series(d, data, t, method)
+        errors, seconds = series(d, data, t, method, ("error", "seconds"))
+        spd_lines = [series(d, data, t, spd, ("error", "seconds")) for spd in SPD_METHODS
+                     if (data, t, spd) in every]
         for error, time in zip(errors, seconds):
             if time < min_seconds:
                 continue
             spd_times = []
-            for spd in SPD_METHODS:
-                if (data, t, spd) not in cases(d):
-                    continue
-                _, _, spd_errors, spd_seconds = series(d, data, t, spd)
+            for spd_errors, spd_seconds in spd_lines:
                 spd_time, extrapolated = time_to_error(spd_errors, spd_seconds, max(error, 0.0))
                 if not extrapolated:
                     spd_times.append(spd_time)
@@ -220,10 +221,8 @@ def study_claims(d, rates: Recorder, p):
     widths = []
     for data, t, method in cases(d):
         if method.startswith("blob") and t > 1.0 and masses[(data, t)][1] > 0:
-            rows_ = ((d["data"][d["data_index"]] == data) & (d["times"][d["time_index"]] == t)
-                     & (d["methods"][d["method_index"]] == method))
-            delta = (1.0 / d["size"][rows_]) ** p["blob"]["q"]
-            widths.extend(d["dirac_width"][rows_] / delta)
+            sizes, width = series(d, data, t, method, ("size", "dirac_width"))
+            widths.extend(width / (1.0 / sizes) ** p["blob"]["q"])
     rows.append(claim(c.between, "blob.no_dirac", "after the blow-up the blob particles of the Dirac mass stay apart "
                       "but within delta = h^q of 0: (largest |x| of them)/delta, farthest from the band", 1e-300, 1.0,
                       _farthest(widths, (0.0, 1.0)) if np.all(np.asarray(widths) > 0) else 0.0,
