@@ -28,6 +28,7 @@ from particle_methods.sticky import (
     cluster_sizes,
     concave_flux,
     median_quantiles,
+    mspd_exact,
     mspd_positions,
     mspd_trajectory,
     rank_velocities,
@@ -214,6 +215,7 @@ def test_mspd(x0, system, delta, steps):
     safe_call(naming(rank_velocities, *names), x0, system)
     safe_call(naming(mspd_trajectory, *names), x0, system, delta, steps)
     safe_call(naming(mspd_positions, *names), x0, system, delta, steps)
+    safe_call(naming(mspd_exact, "x0", "system", "times", "velocities"), x0, system, [0.0, delta, 2 * delta])
 
 
 CONFIGURATION = np.vstack([np.linspace(0.0, 1.0, 6)] * 2)

@@ -1,0 +1,194 @@
+"""Exact MSPD (event-driven): the scalar SPD, the iterated TSPD's limit, invariants, event counts."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from particle_methods.norms import w1_between_samples
+from particle_methods.sticky import mspd_exact
+from particle_methods.sticky.cases import psystem_initial_configuration
+from particle_methods.sticky.exact import burgers_flux, concave_flux
+from particle_methods.sticky.mspd import mspd_positions, rank_velocities
+from particle_methods.sticky.multitype_events import MAX_TABLE
+from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
+from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
+
+SYSTEM = PSystem()
+CASES = {"rarefaction": 0.1, "shocks": -4.0}
+
+
+class ScalarLaw:
+    """A scalar conservation law seen as a diagonal system with d = 1."""
+
+    d = 1
+
+    def __init__(self, flux):
+        self.flux = flux
+
+    def speed_primitive(self, gamma, levels):
+        return self.flux(levels[..., 0])
+
+
+class ThreeFields:
+    """d = 3, lambda^g = s_g + eps (w_1 + w_2 + w_3) with s = (2, 0, -2): (USH) holds for eps < 2/3."""
+
+    d = 3
+
+    def __init__(self, eps=0.3):
+        self.eps = eps
+
+    def speed_primitive(self, gamma, levels):
+        own = levels[..., gamma]
+        others = levels.sum(axis=-1) - own
+        return (2.0 - 2.0 * gamma) * own + self.eps * (0.5 * own**2 + own * others)
+
+
+def distance(a, b):
+    return sum(w1_between_samples(x, y) for x, y in zip(a, b))
+
+
+@pytest.mark.parametrize("flux", [burgers_flux, concave_flux])
+def test_one_type_is_the_spd(rng, flux):
+    x = np.sort(rng.normal(size=120))
+    x[40:52] = x[40]  # a group at one place: the SPD splits it by its velocities
+    times = [0.0, 0.2, 1.0, 7.0]
+    out = mspd_exact(x[None], ScalarLaw(flux), times)
+    for row, t in zip(out, times):
+        np.testing.assert_allclose(row[0], spd_positions(x, velocities_from_flux(flux, x.size), t), atol=1e-12)
+
+
+def test_moves_at_the_rank_velocities_until_the_first_event(rng):
+    x = np.sort(rng.normal(size=(2, 8)), axis=1)
+    t = 1e-7  # far below the first meeting time of this draw
+    moved = mspd_exact(x, SYSTEM, [t])[0]
+    np.testing.assert_allclose((moved - x) / t, rank_velocities(x, SYSTEM), rtol=1e-7)
+
+
+def test_three_types_are_the_limit_of_the_iterated_tspd(rng):
+    system = ThreeFields()
+    x = np.sort(rng.normal(size=(3, 12)) * [[1.0], [0.5], [1.5]], axis=1)
+    exact, events = mspd_exact(x, system, [1.0], return_events=True)
+    assert events.crossings > 10
+    errors = [distance(mspd_positions(x, system, delta, round(1.0 / delta)), exact[0]) for delta in (0.01, 0.001)]
+    assert errors[1] < 0.2 * errors[0]
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_iterated_tspd_converges_at_first_order_in_delta(case):
+    # Proposition 4.1 at fixed n: the iterated TSPD is within C Delta of the MSPD.
+    x = psystem_initial_configuration(case, CASES[case], 20)
+    exact = mspd_exact(x, SYSTEM, [1.0])[0]
+    deltas = np.array([0.02, 0.01, 0.005, 0.0025])
+    errors = [distance(mspd_positions(x, SYSTEM, delta, round(1.0 / delta)), exact) for delta in deltas]
+    slope = np.polyfit(np.log(deltas), np.log(errors), 1)[0]
+    assert 0.8 < slope < 1.3, (slope, errors)
+
+
+def test_rarefaction_case_keeps_order_and_never_sticks():
+    # Section 5.2.2: x+_k <= x-_k for all k is preserved, and particles of one type never meet.
+    x = psystem_initial_configuration("rarefaction", CASES["rarefaction"], 40)
+    assert np.all(x[PLUS] <= x[MINUS])
+    times = np.linspace(0.0, 4.0, 41)
+    out, events = mspd_exact(x, SYSTEM, times, return_events=True)
+    assert events.merges == 0 and events.splits == 0
+    assert np.all(out[:, PLUS] <= out[:, MINUS])
+    assert all(cluster_sizes(row).max() == 1 for state in out for row in state)
+    assert np.all(np.diff(out, axis=2) > 0)
+
+
+def test_every_crossing_is_one_pair_changing_order():
+    # With singletons only, a crossing is a - particle passing a + particle: count the pairs whose
+    # order changed between 0 and t.
+    x = psystem_initial_configuration("rarefaction", CASES["rarefaction"], 30)
+    t = 1.5
+    out, events = mspd_exact(x, SYSTEM, [t], return_events=True)
+    before = x[MINUS][:, None] < x[PLUS][None, :]
+    after = out[0, MINUS][:, None] > out[0, PLUS][None, :]
+    assert events.crossings == np.sum(before & after) > 0
+    assert events.member_updates == 2 * events.crossings
+
+
+def test_shock_case_cluster_forms_then_splits():
+    # Figure 6: the + particles start as one cluster at 0 and break up after crossing the - particles.
+    n = 40
+    x = psystem_initial_configuration("shocks", CASES["shocks"], n)
+    out, events = mspd_exact(x, SYSTEM, [0.3, 12.0], return_events=True)
+    assert cluster_sizes(out[0, PLUS]).max() == n
+    assert cluster_sizes(out[1, PLUS]).max() == 1 and cluster_sizes(out[1, MINUS]).max() == 1
+    assert np.all(out[1, PLUS] <= out[1, MINUS])
+    assert events.splits > 0 and events.merges > 0
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_flow_property(case):
+    # Restarting from the state at s gives the state at s + t (clusters stay one block).
+    x = psystem_initial_configuration(case, CASES[case], 25)
+    s, t = 0.9, 1.3
+    middle, end = mspd_exact(x, SYSTEM, [s, s + t])
+    np.testing.assert_allclose(mspd_exact(middle, SYSTEM, [t])[0], end, atol=1e-9)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_events_grow_like_n_squared(case):
+    counts = []
+    for n in (100, 200):
+        _, events = mspd_exact(psystem_initial_configuration(case, CASES[case], n), SYSTEM, [2.0], return_events=True)
+        counts.append(events.crossings)
+    assert 3.5 < counts[1] / counts[0] < 4.5
+
+
+def test_times_are_kept_in_order_and_time_zero_is_the_start(rng):
+    x = np.sort(rng.normal(size=(2, 10)), axis=1)
+    out = mspd_exact(x, SYSTEM, [0.0, 0.5, 0.5, 2.0])
+    assert out.shape == (4, 2, 10)
+    np.testing.assert_array_equal(out[0], x)
+    np.testing.assert_array_equal(out[1], out[2])
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(rows=st.lists(st.lists(st.sampled_from([-1.0, -0.5, 0.0, 0.25, 1.0, 2.0]), min_size=5, max_size=5),
+                     min_size=2, max_size=2),
+       t=st.floats(0.0, 5.0))
+def test_random_ties_give_sorted_rows_and_match_the_iterated_tspd(rows, t):
+    # Ties inside and across types on purpose: the post-collisional order and the splits decide.
+    x = np.sort(np.array(rows), axis=1)
+    out = mspd_exact(x, SYSTEM, [t])[0]
+    assert np.all(np.isfinite(out)) and np.all(np.diff(out, axis=1) >= 0)
+    steps = 2000
+    approx = mspd_positions(x, SYSTEM, max(t, 1e-9) / steps, steps) if t > 0 else x
+    assert distance(out, approx) < 2e-2
+
+
+def test_refuses_a_system_without_uniform_strict_hyperbolicity():
+    class Equal:
+        d = 2
+
+        def speed_primitive(self, gamma, levels):
+            return levels[..., gamma]  # both speeds 1
+
+    with pytest.raises(ValueError, match="USH"):
+        mspd_exact(np.zeros((2, 3)), Equal(), [1.0])
+
+
+@pytest.mark.parametrize("args, error, message", [
+    ((np.zeros((3, 4)), SYSTEM, [1.0]), ValueError, "one row per type"),
+    ((np.array([[1.0, 0.0], [0.0, 1.0]]), SYSTEM, [1.0]), ValueError, "sorted"),
+    ((np.array([[0.0, np.nan], [0.0, 1.0]]), SYSTEM, [1.0]), ValueError, "NaN"),
+    ((np.zeros((2, 4)), None, [1.0]), TypeError, "system must be"),
+    ((np.zeros((2, 4)), SYSTEM, []), ValueError, "times must contain"),
+    ((np.zeros((2, 4)), SYSTEM, [1.0, 0.5]), ValueError, "non-decreasing"),
+    ((np.zeros((2, 4)), SYSTEM, [-1.0]), ValueError, "non-negative"),
+    ((np.zeros((2, 4)), SYSTEM, [np.inf]), ValueError, "times contains NaN or infinite"),
+    ((np.zeros((2, 4)), SYSTEM, "1"), TypeError, "times must be"),
+    ((np.zeros((2, int(np.sqrt(MAX_TABLE / 2)) + 1)), SYSTEM, [1.0]), ValueError, "MAX_TABLE"),
+    ((np.array([[0.0, 1.0], [0.0, 1.0]]), SYSTEM, [1e308]), ValueError, "may overflow"),
+])
+def test_bad_input_is_refused(args, error, message):
+    with pytest.raises(error, match=message):
+        mspd_exact(*args)
+
+
+def test_return_events_must_be_a_bool():
+    with pytest.raises(TypeError, match="return_events"):
+        mspd_exact(np.zeros((2, 3)), SYSTEM, [1.0], return_events="yes")
