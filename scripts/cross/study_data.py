@@ -6,30 +6,12 @@ method's own output, and its wall time (initial discretisation plus evolution, a
 run that compiles every kernel) is the best of ``repeats`` runs when a run is short.
 """
 
-import time
-
 import numba
 import numpy as np
 
 from particle_methods.cross import distances, methods
 from particle_methods.cross.exact import AggregationSolution
-from particle_methods.workflow import logged, progress, save_results
-
-#: Runs longer than this are timed once (a repeat would not change the verdicts, only the budget).
-REPEAT_BELOW = 0.2
-
-
-def timed(function, repeats):
-    """(seconds, result): the best of ``repeats`` runs for short runs, else a single run."""
-    start = time.perf_counter()
-    result = function()
-    best = time.perf_counter() - start
-    if best < REPEAT_BELOW:
-        for _ in range(repeats - 1):
-            start = time.perf_counter()
-            result = function()
-            best = min(best, time.perf_counter() - start)
-    return best, result
+from particle_methods.workflow import logged, progress, save_results, timed
 
 
 def count(output) -> int:

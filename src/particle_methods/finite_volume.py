@@ -161,11 +161,13 @@ def _face_flux(flux_id, convex, extremum, a, b):
 
 @njit
 def _evolve(u, dx, dt, t, flux_id, convex, extremum, left, right):
-    """Godunov steps of length dt (the last one shortened) from time 0 to t, in place."""
+    """Godunov steps of length dt (the last one shortened) from time 0 to t, in place; returns their number."""
     n = u.size
     faces = np.empty(n + 1)
     time = 0.0
+    steps = 0
     while time < t:
+        steps += 1
         step = min(dt, t - time)
         faces[0] = _face_flux(flux_id, convex, extremum, left, u[0])
         for i in range(1, n):
@@ -175,6 +177,7 @@ def _evolve(u, dx, dt, t, flux_id, convex, extremum, left, right):
         for i in range(n):
             u[i] -= ratio * (faces[i + 1] - faces[i])
         time += step
+    return steps
 
 
 def _edges(x_edges, name: str = "x_edges") -> np.ndarray:
@@ -226,14 +229,15 @@ def _check_cell_steps(t: float, dt: float, cells: int, limit: int) -> None:
         )
 
 
-def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right=None) -> np.ndarray:
+def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right=None, return_steps: bool = False):
     """Cell averages at time t of the Godunov scheme started from the cell averages ``u0``.
 
     ``x_edges`` are the len(u0) + 1 uniformly spaced edges of the cells. ``left``
     and ``right`` are the constant ghost states beyond the two ends (default: the
     end values of ``u0``). The time step is cfl dx / max|f'| over the range of the
     data, shortened at the end to land exactly on t. ``flux`` must be
-    :data:`BURGERS` or :data:`CONCAVE`, the fluxes the compiled kernel knows.
+    :data:`BURGERS` or :data:`CONCAVE`, the fluxes the compiled kernel knows. With
+    ``return_steps`` the number of time steps taken is returned too (cells x steps is the work).
     """
     flux = _checked_flux(flux)
     if flux not in _COMPILED_FLUXES:
@@ -247,15 +251,18 @@ def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right
     right = u[-1] if right is None else finite_number("right", right)
     states = np.concatenate([u, [left, right]])
     speed = flux.max_speed(states.min(), states.max())
+    if not isinstance(return_steps, (bool, np.bool_)):
+        raise ParameterTypeError(f"return_steps must be a bool, got {return_steps!r}")
     if t == 0 or speed == 0:
         # No time to evolve, or every state sits at u*, where nothing moves.
-        return u
+        return (u, 0) if return_steps else u
     dt = np.float64(cfl) * dx / speed
     _check_cell_steps(t, dt, u.size, MAX_CELL_STEPS)
-    _evolve(u, dx, float(dt), t, _COMPILED_FLUXES.index(flux), flux.shape == "convex", flux.extremum, left, right)
+    taken = _evolve(u, dx, float(dt), t, _COMPILED_FLUXES.index(flux), flux.shape == "convex", flux.extremum, left,
+                    right)
     if not np.all(np.isfinite(u)):
         raise ValueError("u0 and the ghost states are too large: the flux overflowed")
-    return u
+    return (u, int(taken)) if return_steps else u
 
 
 def _points(points) -> np.ndarray:

@@ -33,6 +33,24 @@ def progress(message: str) -> None:
     print(message, file=sys.stdout, flush=True)
 
 
+#: Runs longer than this many seconds are timed once: a repeat would only cost budget.
+REPEAT_BELOW = 0.2
+
+
+def timed(function, repeats: int):
+    """(seconds, result) of ``function()``: the best of ``repeats`` runs for runs shorter than
+    :data:`REPEAT_BELOW`, else a single run."""
+    start = time.perf_counter()
+    result = function()
+    best = time.perf_counter() - start
+    if best < REPEAT_BELOW:
+        for _ in range(repeats - 1):
+            start = time.perf_counter()
+            result = function()
+            best = min(best, time.perf_counter() - start)
+    return best, result
+
+
 def save_results(path, **arrays) -> None:
     """Write ``arrays`` to an ``.npz`` file through a temporary name, so that an
     interrupted run never leaves a truncated result behind."""

@@ -287,3 +287,71 @@ def test_cost_claims_fail_for_a_quadratic_kernel():
         slow[key] = 1e-12 * slow["rank_n"] ** 2
     claims = v.cost_claims(slow, quiet(), 3, (0.8, 1.2))
     assert status(claims, "cost.rank_step") == "fail" and status(claims, "cost.tspd_n") == "fail"
+
+
+BEYOND = {"window": 3, "limit_order_min": 0.8, "separation": 3.0, "reference_share": 0.5, "spd_band": (0.9, 1.25),
+          "eps2_band": (1.8, 2.2), "scalar_ratio_min": 10.0, "same_cost_band": (0.1, 10.0)}
+
+
+def runs(errors, work, seconds, *extra):
+    return np.array([errors, work, seconds, *extra], dtype=float)
+
+
+def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_slowdown=1.0, events_exponent=2.0,
+           rarefaction_plateau=False, shock_gap=0.05, reference_gap=1e-3):
+    """Study results shaped as the theory predicts, with one knob per claim to make it wrong."""
+    n = np.array([25.0, 50.0, 100.0, 200.0, 400.0])
+    errors = 2.0 / n
+    d = {"t": 2.0, "cases": np.array(["rarefaction", "shocks"]), "limit_n": np.array([100, 200, 400, 800]),
+         "reference_cells": 32000, "exact_n": n}
+    sizes = np.array([100.0, 400.0, 1600.0, 6400.0, 25600.0])
+    for name in v.SCALAR_NAMES:
+        d[f"{name}_spd"] = runs(1.0 / sizes, sizes ** spd_exponent, 1e-8 * sizes ** spd_exponent)
+        cells = np.array([250.0, 500.0, 1000.0, 2000.0, 4000.0])
+        work = (cells / 10.0) ** godunov_exponent
+        d[f"{name}_godunov"] = runs(10.0 / cells, work, 1e-8 * work)
+    for case in ("rarefaction", "shocks"):
+        limit = 2.0 / d["limit_n"]
+        if case == "rarefaction" and rarefaction_plateau:
+            limit = 0.01 + 0 * limit
+        if case == "shocks":
+            limit = limit + shock_gap
+        d.update({f"{case}_limit_to_hll": limit, f"{case}_limit_to_upwind": limit, f"{case}_mspd_gap": reference_gap,
+                  f"{case}_hll_gap": 1e-3})
+        d[f"{case}_tspd"] = runs(errors, (1.0 / errors) ** method_exponent, 1e-7 * n**2)
+        d[f"{case}_exact"] = runs(errors, (1.0 / errors) ** 2, exact_slowdown * 1e-7 * n**2, n**events_exponent)
+        d[f"{case}_upwind"] = runs(errors, (1.0 / errors) ** 2, 1e-7 * n**2)
+    return d
+
+
+def beyond_status(d, name):
+    return status(v.beyond_claims(d, quiet(), BEYOND), f"beyond.{name}")
+
+
+def test_beyond_claims_pass_on_the_predicted_shapes():
+    claims = v.beyond_claims(beyond(), quiet(), BEYOND)
+    assert {claim.status for claim in claims} == {"pass"}, [c.id for c in claims if c.status != "pass"]
+    assert all(claim.kind in ("derived", "check") for claim in claims)
+
+
+@pytest.mark.parametrize("knobs, name", [
+    ({"spd_exponent": 2.0}, "exponent.spd_burgers_two_atoms"),        # a quadratic hull
+    ({"godunov_exponent": 3.0}, "exponent.godunov_concave_laplace"),  # half an order
+    ({"method_exponent": 3.0}, "exponent.tspd_rarefaction"),          # O(eps^-3)
+    ({"events_exponent": 3.0}, "exact.events_shocks"),                # cubic event count
+    ({"exact_slowdown": 100.0}, "ratio.same_cost_rarefaction"),       # exact much dearer
+    ({"godunov_exponent": 1.0}, "ratio.scalar_burgers_two_atoms"),     # Godunov as cheap as the SPD
+    ({"rarefaction_plateau": True}, "limit.rarefaction"),             # no convergence
+    ({"shock_gap": 0.0}, "limit.shocks"),                             # the limits agree
+    ({"reference_gap": 0.1}, "cost.reference"),                       # an inaccurate reference
+])
+def test_each_beyond_claim_fails_on_a_wrong_outcome(knobs, name):
+    assert beyond_status(beyond(), name) == "pass"
+    assert beyond_status(beyond(**knobs), name) == "fail"
+
+
+def test_values_at_an_error_are_interpolated_never_extrapolated():
+    errors, seconds = np.array([1e-1, 1e-2, 1e-3]), np.array([1.0, 10.0, 100.0])
+    assert v.value_at_error(errors, seconds, 10 ** -1.5) == pytest.approx(10**0.5)
+    assert math.isnan(v.value_at_error(errors, seconds, 1e-4))
+    assert v.common_error(errors, np.array([0.5, 0.05])) == 0.05

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..norms import w1_to_measure
+from ..finite_volume import l1_distance_to_step_cdf
+from ..norms import cdf_antiderivative, w1_to_measure
 from ..validation import finite_array, finite_number, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux, concave_flux
 from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
@@ -73,6 +74,29 @@ def psystem_initial_configuration(case: str, x0: float, n: int) -> np.ndarray:
     """Configuration (1.9) of n particles per type, rows (w^-, w^+) as in :class:`PSystem`."""
     n = integer_at_least("n", n, 1)
     return np.array([averaged_quantiles(m, n) for m in psystem_initial_measures(case, x0)])
+
+
+def psystem_initial_cells(case: str, x0: float, x_edges) -> np.ndarray:
+    """Exact cell averages of (w_0^-, w_0^+) on the cells of ``x_edges``, shape (2, cells)."""
+    edges = sorted_array("x_edges", x_edges)
+    if edges.size < 2 or np.any(np.diff(edges) <= 0):
+        raise ValueError("x_edges must hold at least 2 strictly increasing edges")
+    return np.array([np.diff(cdf_antiderivative(m, edges)) / np.diff(edges)
+                     for m in psystem_initial_measures(case, x0)])
+
+
+def distance_to_cells(configuration, w, x_edges) -> float:
+    """W1^(d) (1.10) between a configuration (d, n) and cell values w (d, cells) of the CDFs: the sum
+    over types of the exact L1 distances on the grid, which must hold every particle."""
+    configuration, w = np.asarray(configuration), np.asarray(w)
+    if configuration.ndim != 2 or w.ndim != 2 or configuration.shape[0] != w.shape[0]:
+        raise ValueError(f"configuration (d, n) and w (d, cells) must have the same d, got shapes "
+                         f"{configuration.shape} and {w.shape}")
+    edges = sorted_array("x_edges", x_edges)
+    if configuration.size and (configuration.min() < edges[0] or configuration.max() > edges[-1]):
+        raise ValueError(f"the particles span [{configuration.min():.6g}, {configuration.max():.6g}], beyond the grid "
+                         f"[{edges[0]:.6g}, {edges[-1]:.6g}]: widen x_edges")
+    return sum(l1_distance_to_step_cdf(values, edges, points) for values, points in zip(w, configuration))
 
 
 def empirical_cdf(points, x) -> np.ndarray:

@@ -409,3 +409,105 @@ def cost_claims(d, rates: Recorder, window: int, band):
                          f"{text}: exponent of the best time against {resolution} on the {window} largest sizes "
                          f"({d[sizes][-window]}..{d[sizes][-1]})", lower, upper, exponent, published="linear"))
     return out
+
+
+SCALAR_NAMES = {"burgers_two_atoms": "Figure 2 (Burgers)", "concave_laplace": "Figure 3 (concave flux)"}
+
+
+def value_at_error(errors, values, eps: float) -> float:
+    """``values`` interpolated log-log at the error ``eps`` between the two runs whose errors bracket
+    it; NaN if ``eps`` lies outside the measured errors (no extrapolation)."""
+    errors, values = np.asarray(errors, dtype=float), np.asarray(values, dtype=float)
+    order_ = np.argsort(errors)
+    errors, values = errors[order_], values[order_]
+    if not errors[0] <= eps <= errors[-1]:
+        return math.nan
+    return float(np.exp(np.interp(np.log(eps), np.log(errors), np.log(values))))
+
+
+def common_error(*error_rows) -> float:
+    """eps*: the largest of the smallest errors of the methods, an error every method measured."""
+    return float(max(np.min(row) for row in error_rows))
+
+
+def cost_exponent(rates: Recorder, name: str, errors, work, window: int, label: str = "") -> float:
+    """Slope of log(work) against log(1/error) on the ``window`` most accurate runs (the paper's
+    O(eps^-2) has slope 2)."""
+    errors, work = np.asarray(errors, dtype=float), np.asarray(work, dtype=float)
+    return rates.add(fit(f"{PAPER}.beyond.exponent.{name}", "log work against log(1/error)", "1/error", 1.0 / errors,
+                         np.log(1.0 / errors), np.log(work), window, label))
+
+
+def beyond_claims(d, rates: Recorder, p):
+    """Beyond the paper: the MSPD's limit against a conservative scheme, event counts and the cost
+    argument of section 5.2 (kind ``derived``: consequences of the paper's estimates that it does
+    not measure; ``check`` for our references and the shock-case question)."""
+    window = p["window"]
+    limit_n = d["limit_n"].astype(float)
+    out = []
+    for name, label in SCALAR_NAMES.items():
+        spd, fv = d[f"{name}_spd"], d[f"{name}_godunov"]
+        spd_exponent = cost_exponent(rates, f"spd_{name}", spd[0], spd[1], window, "SPD")
+        fv_exponent = cost_exponent(rates, f"godunov_{name}", fv[0], fv[1], window, "Godunov")
+        eps = common_error(spd[0], fv[0])
+        ratio = value_at_error(fv[0], fv[2], eps) / value_at_error(spd[0], spd[2], eps)
+        out += [
+            claim(c.between, f"beyond.exponent.spd_{name}", "derived", "sections 5.1.1 (O(n) hull) and 3 (O(1/n) "
+                  "error, log n/n for Figure 3)", label, f"{label}: operations (particles of one hull pass) of the SPD "
+                  f"against 1/W1, exponent on the {window} most accurate runs", *p["spd_band"], spd_exponent,
+                  published="1 (O(n) work, O(1/n) error)"),
+            claim(c.between, f"beyond.exponent.godunov_{name}", "derived", "section 5.2 (argument for first-order "
+                  "schemes under CFL)", label, f"{label}: cell updates of the Godunov scheme against 1/W1, exponent "
+                  f"on the {window} finest grids", *p["eps2_band"], fv_exponent, published="2 (O(eps^-2))"),
+            claim(c.at_least, f"beyond.ratio.scalar_{name}", "derived", "sections 5.1.1 and 5.2", label,
+                  f"{label}: wall time of the Godunov scheme over that of the SPD at the common error "
+                  f"eps* = {eps:.3g} (interpolated, never extrapolated)", p["scalar_ratio_min"], ratio,
+                  published="SPD cheaper (exponent 1 against 2)"),
+        ]
+    reference_share = 0.0
+    for name in d["cases"]:
+        to_hll, gap_mspd, gap_hll = d[f"{name}_limit_to_hll"], float(d[f"{name}_mspd_gap"]), float(d[f"{name}_hll_gap"])
+        tspd, exact, upwind = d[f"{name}_tspd"], d[f"{name}_exact"], d[f"{name}_upwind"]
+        exponents = {method: cost_exponent(rates, f"{method}_{name}", runs[0], runs[1], window, name)
+                     for method, runs in (("tspd", tspd), ("exact", exact), ("upwind", upwind))}
+        events = -rates.add(order(f"{PAPER}.beyond.exact.events_{name}", "n", d["exact_n"].astype(float),
+                                  1.0 / exact[3], window, name))
+        eps = common_error(tspd[0], exact[0])
+        same_cost = value_at_error(exact[0], exact[2], eps) / value_at_error(tspd[0], tspd[2], eps)
+        reference_share = max(reference_share, gap_mspd / min(tspd[0].min(), exact[0].min(), upwind[0].min()))
+        texts = {"tspd": "particle moves d n L of the iterated TSPD (L = n steps of t/n)",
+                 "exact": "events and velocity updates of the exact MSPD",
+                 "upwind": "cell updates d cells steps of the upwind scheme for (1.7)"}
+        out += [claim(c.between, f"beyond.exponent.{method}_{name}", "derived", "section 5.2 (O(t^2/eps^2))",
+                      f"p-system, {name}", f"{name} case, t = {float(d['t']):g}: {texts[method]} against 1/W1^(d) "
+                      f"(reference: exact MSPD, n = {int(limit_n[-1])}), exponent on the {window} most accurate runs",
+                      *p["eps2_band"], exponents[method], published="2 (O(eps^-2))") for method in texts]
+        out += [
+            claim(c.between, f"beyond.exact.events_{name}", "derived", "section 5.2 (at most d(d-1)n^2/2 crossings)",
+                  f"p-system, {name}", f"{name} case: crossings of the exact MSPD up to t = {float(d['t']):g} against "
+                  f"n, exponent on the {window} largest n", *p["eps2_band"], events, published="O(n^2)"),
+            claim(c.between, f"beyond.ratio.same_cost_{name}", "derived", "section 5.2 (same cost as the exact "
+                  "simulation)", f"p-system, {name}", f"{name} case: wall time of the exact MSPD over that of the "
+                  f"iterated TSPD at the common error eps* = {eps:.3g}", *p["same_cost_band"], same_cost,
+                  published="same cost, O(n^2)"),
+        ]
+        if name == "rarefaction":
+            limit_order = rates.add(order(f"{PAPER}.beyond.limit.{name}", "n", 1.0 / limit_n, to_hll, window, name))
+            out.append(claim(c.at_least, f"beyond.limit.{name}", "derived", "Theorem 1.6 (no shock: the semigroup "
+                             "solution is the classical one)", "p-system, rarefaction",
+                             f"rarefaction case: W1^(d) between the exact MSPD and the conservative HLL solution "
+                             f"({int(d['reference_cells'])} cells) decreases in n; order on the {window} largest n",
+                             p["limit_order_min"], limit_order, published="convergence"))
+        else:
+            noise = gap_mspd + gap_hll
+            out.append(claim(c.at_least, f"beyond.limit.{name}", "check", "section 1.2.3 (nonconservative system); "
+                             "our question", "p-system, shocks",
+                             f"shock case: the MSPD's limit differs from the conservative entropy solution: W1^(d) "
+                             f"between the exact MSPD (n = {int(limit_n[-1])}) and HLL ({int(d['reference_cells'])} "
+                             f"cells), {to_hll[-1]:.3g}, over the sum of their self-distances at half resolution "
+                             f"({gap_mspd:.2g} + {gap_hll:.2g})", p["separation"], float(to_hll[-1] / noise),
+                             published="differ"))
+    out.append(claim(c.at_most, "beyond.cost.reference", "check", "our reference", "p-system",
+                     "the cost study's reference (exact MSPD) is accurate: its distance to n/2 over the smallest error "
+                     "it measures, largest over the two cases", p["reference_share"], reference_share))
+    return out
