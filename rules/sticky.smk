@@ -24,6 +24,12 @@ STICKY_CAPTIONS = {
     "fig7": (
         f"p-system with shocks: w-, w+, u and v in the space-time plane (n = {SHOCKS['field_particles']} per type, Delta = {SHOCKS['delta']})."
     ),
+    "beyond_limits": (
+        f"Beyond the paper, p-system at t = {STICKY['beyond']['t']}: (a, b) w- and w+ of the exact MSPD (n = {STICKY['beyond']['limit_n'][-1]} per type), the conservative HLL scheme and the upwind scheme for (1.7) ({STICKY['beyond']['reference_cells']} cells), rarefaction and shock cases; (c) W1 distance of the exact MSPD to both schemes against n, with each reference's distance to its half-resolution run."
+    ),
+    "beyond_cost": (
+        "Beyond the paper, the cost argument of section 5.2: error against operation count (top) and wall time (bottom); SPD and Godunov on the scalar cases of Figures 2 and 3, iterated TSPD (L = n), exact MSPD and upwind scheme for (1.7) on the two p-system cases. Dotted: slopes 1 and 2."
+    ),
 }
 
 
@@ -34,7 +40,8 @@ PSYSTEM_FIGURES = {
     "fig6": ("shocks", "trajectories"),
     "fig7": ("shocks", "fields"),
 }
-STICKY_FIGURES = expand("figures/sticky/fig{number}.{ext}", number=range(1, 8), ext=["pdf", "png"])
+STICKY_FIGURES = expand("figures/sticky/{name}.{ext}", name=[f"fig{number}" for number in range(1, 8)]
+                        + ["beyond_limits", "beyond_cost"], ext=["pdf", "png"])
 
 
 rule sticky_fig1:
@@ -203,6 +210,48 @@ rule sticky_cost:
         "../scripts/sticky/cost_data.py"
 
 
+rule sticky_beyond:
+    """Beyond the paper: exact MSPD against conservative and upwind finite volumes, and the cost study.
+    Runs alone (all cores reserved) so that its timings are not disturbed by other jobs."""
+    input:
+        code=imports("sticky/beyond_data.py"),
+    output:
+        "results/sticky/beyond.npz",
+    log:
+        "logs/sticky/beyond.log",
+    conda:
+        ENVIRONMENT
+    threads: workflow.cores
+    params:
+        system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
+        cases=lambda wildcards: {
+            case: STICKY["psystem"][case] for case in ("rarefaction", "shocks")
+        },
+        cfg=STICKY["beyond"],
+    script:
+        "../scripts/sticky/beyond_data.py"
+
+
+rule sticky_beyond_figure:
+    """Beyond the paper: the limits and the work-precision diagrams from the cached study."""
+    input:
+        data="results/sticky/beyond.npz",
+        code=imports("sticky/plot_beyond.py"),
+    output:
+        **figure("figures/sticky/{figure}"),
+    log:
+        "logs/sticky/{figure}_plot.log",
+    wildcard_constraints:
+        figure="beyond_limits|beyond_cost",
+    conda:
+        ENVIRONMENT
+    params:
+        caption=caption(STICKY_CAPTIONS),
+        cfg=STICKY["beyond"],
+    script:
+        "../scripts/sticky/plot_beyond.py"
+
+
 rule sticky_claims:
     """Measure every sticky claim from the cached results; record every fitted rate."""
     input:
@@ -214,6 +263,7 @@ rule sticky_claims:
         remark33="results/sticky/remark33.npz",
         tspd="results/sticky/tspd_convergence.npz",
         cost="results/sticky/cost.npz",
+        beyond="results/sticky/beyond.npz",
         code=imports("sticky/claims.py"),
     output:
         claims="results/sticky/claims.csv",

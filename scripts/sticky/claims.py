@@ -29,6 +29,7 @@ def run(inputs, cfg, output):
                           cfg["psystem"]["shocks"]["shock_fraction"],
                           PSystem(nu=cfg["psystem"]["nu"], kappa=cfg["psystem"]["kappa"])),
         *v.cost_claims(load_results(inputs.cost), rates, cost["window"], cost["band"]),
+        *v.beyond_claims(load_results(inputs.beyond), rates, cfg["beyond"]),
     ]
     for row in rows:
         progress(f"{row.status:4} {row.id} [{row.kind}]: measured {row.measured} ({row.tolerance})")

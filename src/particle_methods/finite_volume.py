@@ -45,6 +45,7 @@ from .validation import (
     finite_number,
     finite_result,
     in_interval,
+    instance,
     positive,
     real_array,
     sorted_array,
@@ -251,8 +252,7 @@ def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right
     right = u[-1] if right is None else finite_number("right", right)
     states = np.concatenate([u, [left, right]])
     speed = flux.max_speed(states.min(), states.max())
-    if not isinstance(return_steps, (bool, np.bool_)):
-        raise ParameterTypeError(f"return_steps must be a bool, got {return_steps!r}")
+    instance("return_steps", return_steps, (bool, np.bool_))
     if t == 0 or speed == 0:
         # No time to evolve, or every state sits at u*, where nothing moves.
         return (u, 0) if return_steps else u

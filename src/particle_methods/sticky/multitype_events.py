@@ -25,9 +25,10 @@ the next one, in an indexed binary heap. At an event:
 Velocities (1.8) are read from a table built once from the primitive P_gamma of lambda^gamma in
 its own variable at every level grid point (k_1/n, ..., k_d/n): lambda~^gamma_k = n (P_gamma(..,
 k/n, ..) - P_gamma(.., (k-1)/n, ..)), as in :mod:`.mspd`. The grid holds (n+1)^d points and d of
-them per point is at most :data:`MAX_TABLE`; on it (USH) is checked for every velocity. By (USH) every pair of particles of different types crosses at most once, so
-there are at most d(d-1)n^2/2 crossings; merges and splits are bounded by the same count plus
-d n. A call asks for at most :data:`MAX_EVENTS` such events.
+them per point is at most :data:`MAX_TABLE`; on it (USH) is checked for every velocity.
+By (USH) every pair of particles of different types crosses at most once, so there are at most
+d(d-1)n^2/2 crossings; merges and splits are bounded by the same count plus d n. A call asks for
+at most :data:`MAX_EVENTS` such events.
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..jit import njit
-from ..validation import finite_array, finite_result
+from ..validation import finite_array, finite_result, instance
 from .mspd import _checked_configuration, _primitive, _ranks
 from .spd import _check_reach
 
@@ -228,8 +229,8 @@ def _simulate(x0, ranks, table, strides, times, out, stats):
             row[:] = ranks[gamma, lo]
             for k in range(lo, hi):
                 lam[gamma, k] = _speed(table, strides, gamma, k, row)
-            first, last = _new_blocks(_NONE, gamma, lo, hi, x0[gamma, lo], 0.0, row, lam, starts, sums, free, nfree, kind,
-                                      low, high, xref, tref, vel, counts, prv, nxt)
+            first, last = _new_blocks(_NONE, gamma, lo, hi, x0[gamma, lo], 0.0, row, lam, starts, sums, free, nfree,
+                                      kind, low, high, xref, tref, vel, counts, prv, nxt)
             cluster = first
             while cluster >= 0:
                 by_type[gamma, found[gamma]] = cluster
@@ -384,8 +385,7 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     if bound > MAX_EVENTS:
         raise ValueError(f"d = {d} types of n = {n} particles may need up to {bound:.3g} events, more than "
                          f"MAX_EVENTS = {MAX_EVENTS:.0e}")
-    if not isinstance(return_events, (bool, np.bool_)):
-        raise TypeError(f"return_events must be a bool, got {return_events!r}")
+    instance("return_events", return_events, (bool, np.bool_))
     table, strides, speed = _velocity_table(system, n, d)
     _check_reach(x0, speed, float(times[-1]), "times", "velocities")
     out = np.empty((times.size, d, n))

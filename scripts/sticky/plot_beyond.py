@@ -1,0 +1,83 @@
+"""Beyond the paper: the exact MSPD's limit against two finite-volume schemes (``beyond_limits``)
+and the work-precision diagrams of the cost argument of section 5.2 (``beyond_cost``)."""
+
+import numpy as np
+
+from particle_methods.plotting import label_panel, new_figure, save_figure
+from particle_methods.sticky.cases import empirical_cdf
+from particle_methods.sticky.psystem import MINUS, PLUS
+from particle_methods.sticky.verdicts import SCALAR_NAMES
+from particle_methods.workflow import load_results, logged
+
+METHODS = {  # key in the results, label, colour, marker
+    "spd": ("SPD", "C0", "o"),
+    "godunov": ("Godunov", "C3", "D"),
+    "tspd": ("iterated TSPD, L = n", "C1", "s"),
+    "exact": ("exact MSPD", "C0", "o"),
+    "upwind": ("upwind for (1.7)", "C3", "D"),
+}
+
+
+def limits(d, p, output):
+    fig, axes = new_figure(1, 3, width=13, height=4.2, squeeze=False)
+    edges = np.linspace(*p["domain"], int(d["reference_cells"]) + 1)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    for j, case in enumerate(map(str, d["cases"])):
+        ax = axes[0, j]
+        for gamma, name, style in ((MINUS, "w-", "-"), (PLUS, "w+", "--")):
+            ax.plot(centres, empirical_cdf(d[f"{case}_mspd"][gamma], centres), style, color="C0", lw=1.6,
+                    label=f"{name} exact MSPD")
+            ax.plot(centres, d[f"{case}_hll_w"][gamma], style, color="C3", lw=1.0, label=f"{name} HLL (conservative)")
+            ax.plot(centres, d[f"{case}_upwind_w"][gamma], style, color="C2", lw=0.8, label=f"{name} upwind for (1.7)")
+        ax.set(xlim=(-12, 12), xlabel="x", ylabel="Riemann invariant")
+        label_panel(ax, f"({'ab'[j]}) {case} case, t = {float(d['t']):g}")
+    axes[0, 0].legend(loc="upper left", fontsize=7)
+    ax = axes[0, 2]
+    n = d["limit_n"]
+    for j, case in enumerate(map(str, d["cases"])):
+        colour = f"C{j}"
+        ax.plot(n, d[f"{case}_limit_to_hll"], "o-", color=colour, label=f"{case}: to HLL")
+        ax.plot(n, d[f"{case}_limit_to_upwind"], "s--", color=colour, mfc="none", label=f"{case}: to upwind (1.7)")
+        ax.axhline(float(d[f"{case}_hll_gap"]), color=colour, lw=0.7, ls=":")
+    ax.plot(n, 2.0 / n, "k:", lw=0.7, label="slope -1; dotted: HLL self-distance")
+    ax.set(xscale="log", yscale="log", xlabel="n per type", ylabel="W1^(d) distance")
+    label_panel(ax, "(c) exact MSPD against the schemes")
+    ax.legend(fontsize=7, loc="lower left")
+    fig.suptitle("Which limit? Exact MSPD, conservative HLL and nonconservative upwind on the p-system")
+    save_figure(fig, output.pdf, output.png)
+
+
+def cost(d, output):
+    panels = [(name, label, ("spd", "godunov")) for name, label in SCALAR_NAMES.items()]
+    panels += [(str(case), f"p-system, {case}", ("tspd", "exact", "upwind")) for case in d["cases"]]
+    fig, axes = new_figure(2, len(panels), width=14, height=7.5, squeeze=False)
+    for j, (name, label, methods) in enumerate(panels):
+        for row, (column, xlabel) in enumerate(((1, "operations"), (2, "wall time (s), after JIT warm-up"))):
+            ax = axes[row, j]
+            for method in methods:
+                runs = d[f"{name}_{method}"]
+                text, colour, marker = METHODS[method]
+                ax.plot(runs[column], runs[0], marker + "-", color=colour, ms=4, lw=1, label=text)
+            if row == 0:
+                work = np.geomspace(*ax.get_xlim(), 3)
+                anchor = ax.get_ylim()[1]
+                for slope in (1, 2):
+                    ax.plot(work, anchor * (work / work[0]) ** (-1.0 / slope), "k:", lw=0.6)
+            ax.set(xscale="log", yscale="log", xlabel=xlabel, ylabel="W1 error")
+            label_panel(ax, f"({'abcdefgh'[row * len(panels) + j]}) {label}")
+            if row == 0:
+                ax.legend(fontsize=7, loc="lower left")
+    fig.suptitle("Error against cost: particles (hull, TSPD, exact events) and finite volumes (cell updates)")
+    save_figure(fig, output.pdf, output.png)
+
+
+def run(d, p, figure, output):
+    if figure == "beyond_limits":
+        limits(d, p, output)
+    else:
+        cost(d, output)
+
+
+with logged(snakemake.log[0]):  # noqa: F821
+    run(load_results(snakemake.input.data), snakemake.params.cfg, snakemake.wildcards.figure,  # noqa: F821
+        snakemake.output)  # noqa: F821
