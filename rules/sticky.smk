@@ -28,7 +28,7 @@ STICKY_CAPTIONS = {
         f"Beyond the paper, p-system at t = {STICKY['beyond']['t']}: (a, b) w- and w+ of the exact MSPD (n = {STICKY['beyond']['limit_n'][-1]} per type), the conservative HLL scheme and the upwind scheme for (1.7) ({STICKY['beyond']['reference_cells']} cells), rarefaction and shock cases; (c) W1 distance of the exact MSPD to both schemes against n, with each reference's distance to its half-resolution run."
     ),
     "beyond_cost": (
-        "Beyond the paper, the cost argument of section 5.2: error against operation count (top) and wall time (bottom); SPD and Godunov on the scalar cases of Figures 2 and 3, iterated TSPD (L = n), exact MSPD and upwind scheme for (1.7) on the two p-system cases. Dotted: slopes 1 and 2."
+        "Beyond the paper, the cost argument of section 5.2: error against operation count (top) and wall time (bottom); SPD and Godunov on the scalar cases of Figures 2 and 3, iterated TSPD (L = n), exact MSPD and upwind scheme for (1.7) on the two p-system cases. Dotted: error proportional to work^-1 (steep) and work^-1/2."
     ),
 }
 

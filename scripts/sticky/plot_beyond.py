@@ -58,12 +58,13 @@ def cost(d, output):
                 runs = d[f"{name}_{method}"]
                 text, colour, marker = METHODS[method]
                 ax.plot(runs[column], runs[0], marker + "-", color=colour, ms=4, lw=1, label=text)
-            if row == 0:
-                work = np.geomspace(*ax.get_xlim(), 3)
-                anchor = ax.get_ylim()[1]
-                for slope in (1, 2):
-                    ax.plot(work, anchor * (work / work[0]) ** (-1.0 / slope), "k:", lw=0.6)
             ax.set(xscale="log", yscale="log", xlabel=xlabel, ylabel="W1 error")
+            if row == 0:  # error ~ work^(-1/slope): slope 1 for O(1/eps), 2 for O(eps^-2)
+                (left, right), (bottom, top) = ax.get_xlim(), ax.get_ylim()
+                work = np.geomspace(left, right, 3)
+                for slope in (1, 2):
+                    ax.plot(work, top * (work / left) ** (-1.0 / slope), "k:", lw=0.7)
+                ax.set(xlim=(left, right), ylim=(bottom, top))
             label_panel(ax, f"({'abcdefgh'[row * len(panels) + j]}) {label}")
             if row == 0:
                 ax.legend(fontsize=7, loc="lower left")

@@ -298,7 +298,7 @@ def runs(errors, work, seconds, *extra):
 
 
 def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_slowdown=1.0, events_exponent=2.0,
-           rarefaction_plateau=False, shock_gap=0.05, reference_gap=1e-3):
+           rarefaction_plateau=False, shock_gap=0.05, reference_gap=1e-3, hll_gap=1e-3):
     """Study results shaped as the theory predicts, with one knob per claim to make it wrong."""
     n = np.array([25.0, 50.0, 100.0, 200.0, 400.0])
     errors = 2.0 / n
@@ -317,7 +317,7 @@ def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_sl
         if case == "shocks":
             limit = limit + shock_gap
         d.update({f"{case}_limit_to_hll": limit, f"{case}_limit_to_upwind": limit, f"{case}_mspd_gap": reference_gap,
-                  f"{case}_hll_gap": 1e-3})
+                  f"{case}_hll_gap": hll_gap})
         d[f"{case}_tspd"] = runs(errors, (1.0 / errors) ** method_exponent, 1e-7 * n**2)
         d[f"{case}_exact"] = runs(errors, (1.0 / errors) ** 2, exact_slowdown * 1e-7 * n**2, n**events_exponent)
         d[f"{case}_upwind"] = runs(errors, (1.0 / errors) ** 2, 1e-7 * n**2)
@@ -344,6 +344,7 @@ def test_beyond_claims_pass_on_the_predicted_shapes():
     ({"rarefaction_plateau": True}, "limit.rarefaction"),             # no convergence
     ({"shock_gap": 0.0}, "limit.shocks"),                             # the limits agree
     ({"reference_gap": 0.1}, "cost.reference"),                       # an inaccurate reference
+    ({"hll_gap": 0.05}, "limit.reference_rarefaction"),               # a coarse conservative reference
 ])
 def test_each_beyond_claim_fails_on_a_wrong_outcome(knobs, name):
     assert beyond_status(beyond(), name) == "pass"

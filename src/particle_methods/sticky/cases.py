@@ -77,12 +77,15 @@ def psystem_initial_configuration(case: str, x0: float, n: int) -> np.ndarray:
 
 
 def psystem_initial_cells(case: str, x0: float, x_edges) -> np.ndarray:
-    """Exact cell averages of (w_0^-, w_0^+) on the cells of ``x_edges``, shape (2, cells)."""
+    """Exact cell averages of (w_0^-, w_0^+) on the cells of ``x_edges``, shape (2, cells).
+
+    Averages of a CDF lie in [0, 1]; the differences of its antiderivative can pass 1 by rounding
+    far in the tails, which the clip removes."""
     edges = sorted_array("x_edges", x_edges)
     if edges.size < 2 or np.any(np.diff(edges) <= 0):
         raise ValueError("x_edges must hold at least 2 strictly increasing edges")
-    return np.array([np.diff(cdf_antiderivative(m, edges)) / np.diff(edges)
-                     for m in psystem_initial_measures(case, x0)])
+    return np.clip([np.diff(cdf_antiderivative(m, edges)) / np.diff(edges)
+                     for m in psystem_initial_measures(case, x0)], 0.0, 1.0)
 
 
 def distance_to_cells(configuration, w, x_edges) -> float:
