@@ -65,9 +65,13 @@ def test_moves_at_the_rank_velocities_until_the_first_event(rng):
     np.testing.assert_allclose((moved - x) / t, rank_velocities(x, SYSTEM), rtol=1e-7)
 
 
-def test_three_types_are_the_limit_of_the_iterated_tspd(rng):
+@pytest.mark.parametrize("ties", [False, True])
+def test_three_types_are_the_limit_of_the_iterated_tspd(rng, ties):
+    # With ties, clusters of the three types start at the same places: simultaneous meetings.
     system = ThreeFields()
     x = np.sort(rng.normal(size=(3, 12)) * [[1.0], [0.5], [1.5]], axis=1)
+    if ties:
+        x = np.sort(np.round(x), axis=1)
     exact, events = mspd_exact(x, system, [1.0], return_events=True)
     assert events.crossings > 10
     errors = [distance(mspd_positions(x, system, delta, round(1.0 / delta)), exact[0]) for delta in (0.01, 0.001)]

@@ -290,7 +290,7 @@ def test_cost_claims_fail_for_a_quadratic_kernel():
 
 
 BEYOND = {"window": 3, "limit_order_min": 0.8, "separation": 3.0, "reference_share": 0.5, "spd_band": (0.9, 1.25),
-          "eps2_band": (1.8, 2.2), "scalar_ratio_min": 10.0, "same_cost_band": (0.1, 10.0)}
+          "eps2_band": (1.8, 2.2), "events_band": (1.8, 2.2), "scalar_ratio_min": 10.0, "same_cost_band": (0.1, 10.0)}
 
 
 def runs(errors, work, seconds, *extra):

@@ -27,8 +27,10 @@ its own variable at every level grid point (k_1/n, ..., k_d/n): lambda~^gamma_k 
 k/n, ..) - P_gamma(.., (k-1)/n, ..)), as in :mod:`.mspd`. The grid holds (n+1)^d points and d of
 them per point is at most :data:`MAX_TABLE`; on it (USH) is checked for every velocity.
 By (USH) every pair of particles of different types crosses at most once, so there are at most
-d(d-1)n^2/2 crossings; merges and splits are bounded by the same count plus d n. A call asks for
-at most :data:`MAX_EVENTS` such events.
+d(d-1)n^2/2 crossings. A crossing of clusters a and b makes |a| |b| pairs cross and costs O(|a| + |b|)
+<= O(|a| |b| + 1) member updates and blocks, and a merge undoes one block: every count of
+:class:`EventCounts` is O(d^2 n^2). A call is refused when the crossing bound d(d-1)n^2/2 + d n
+exceeds :data:`MAX_EVENTS`.
 """
 
 from __future__ import annotations
@@ -45,7 +47,7 @@ from .spd import _check_reach
 #: Largest velocity table d (n+1)^d one call builds (400 MB): n <= 4999 for d = 2.
 MAX_TABLE = 5 * 10**7
 
-#: Largest bound d(d-1) n^2 / 2 + d n on the events one call may process (about a minute).
+#: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts (with the other events, about a minute).
 MAX_EVENTS = 2 * 10**8
 
 _NONE = -1
