@@ -19,7 +19,7 @@ METHODS = {  # key in the results, label, colour, marker
 
 
 def limits(d, p, output):
-    fig, axes = new_figure(1, 3, width=13, height=4.2, squeeze=False)
+    fig, axes = new_figure(1, 3, width=11, height=4.0, squeeze=False)
     edges = np.linspace(*p["domain"], int(d["reference_cells"]) + 1)
     centres = 0.5 * (edges[1:] + edges[:-1])
     for j, case in enumerate(map(str, d["cases"])):
@@ -50,7 +50,7 @@ def limits(d, p, output):
 def cost(d, output):
     panels = [(name, label, ("spd", "godunov")) for name, label in SCALAR_NAMES.items()]
     panels += [(str(case), f"p-system, {case}", ("tspd", "exact", "upwind")) for case in d["cases"]]
-    fig, axes = new_figure(2, len(panels), width=14, height=7.5, squeeze=False)
+    fig, axes = new_figure(2, len(panels), width=12, height=7.0, squeeze=False)
     for j, (name, label, methods) in enumerate(panels):
         for row, (column, xlabel) in enumerate(((1, "operations"), (2, "wall time (s), after JIT warm-up"))):
             ax = axes[row, j]
