@@ -22,7 +22,8 @@ EXPECTED_FIGURES = [f"figures/{paper}/{name}.{ext}" for paper, count in FIGURES.
                     for ext in ("pdf", "png")]
 # Every claim of the quick run, with its expected verdict (`snakemake verify` checks them).
 EXPECTED_VERDICTS = read_verdicts(ROOT / "config" / "verdicts-quick.yaml")
-TIMED = ("sticky.cost.", "sticky.beyond.ratio.", "cross.fastest")  # claims whose measured values are timings, different on every run
+# Claims whose measured values are timings, different on every run.
+TIMED = ("sticky.cost.", "sticky.beyond.ratio.", "cross.fastest")
 
 pytestmark = pytest.mark.pipeline
 

@@ -494,10 +494,11 @@ def beyond_claims(d, rates: Recorder, p):
         if name == "rarefaction":
             limit_order = rates.add(order(f"{PAPER}.beyond.limit.{name}", "n", 1.0 / limit_n, to_hll, window, name))
             out += [
-                claim(c.at_least, f"beyond.limit.{name}", "derived", "Theorem 1.6, and our inference: without a shock "
-                      "the semigroup solution is the classical one", "p-system, rarefaction", f"rarefaction case: W1^(d) between the exact "
-                      f"MSPD and the conservative HLL solution ({int(d['reference_cells'])} cells) decreases in n; "
-                      f"order on the {window} largest n", p["limit_order_min"], limit_order, published="convergence"),
+                claim(c.at_least, f"beyond.limit.{name}", "derived", "Theorem 1.6, and our inference: without a "
+                      "shock the semigroup solution is the classical one", "p-system, rarefaction",
+                      f"rarefaction case: W1^(d) between the exact MSPD and the conservative HLL solution "
+                      f"({int(d['reference_cells'])} cells) decreases in n; order on the {window} largest n",
+                      p["limit_order_min"], limit_order, published="convergence"),
                 claim(c.at_most, f"beyond.limit.reference_{name}", "check", "our reference", "p-system, rarefaction",
                       "rarefaction case: the HLL reference is accurate: its distance to the run on half as many "
                       "cells over its distance to the exact MSPD with the largest n", p["reference_share"],
