@@ -7,23 +7,11 @@ from scipy import integrate
 from particle_methods.norms import w1_between_samples
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.exact import burgers_flux
-from particle_methods.sticky.mspd import _ranks, mspd_positions, mspd_trajectory, rank_velocities
+from particle_methods.sticky.mspd import ScalarLaw, _ranks, mspd_positions, mspd_trajectory, rank_velocities
 from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
 
 SYSTEM = PSystem()
-
-
-class ScalarLaw:
-    """A scalar conservation law seen as a diagonal system with d = 1."""
-
-    d = 1
-
-    def __init__(self, flux):
-        self.flux = flux
-
-    def speed_primitive(self, gamma, levels):
-        return self.flux(levels[..., 0])
 
 
 def test_one_type_reduces_to_the_scalar_spd(rng):

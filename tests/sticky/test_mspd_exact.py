@@ -9,25 +9,13 @@ from particle_methods.norms import w1_between_samples
 from particle_methods.sticky import mspd_exact
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.exact import burgers_flux, concave_flux
-from particle_methods.sticky.mspd import mspd_positions, rank_velocities
+from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, rank_velocities
 from particle_methods.sticky.multitype_events import MAX_TABLE
 from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
 
 SYSTEM = PSystem()
 CASES = {"rarefaction": 0.1, "shocks": -4.0}
-
-
-class ScalarLaw:
-    """A scalar conservation law seen as a diagonal system with d = 1."""
-
-    d = 1
-
-    def __init__(self, flux):
-        self.flux = flux
-
-    def speed_primitive(self, gamma, levels):
-        return self.flux(levels[..., 0])
 
 
 class ThreeFields:

@@ -12,7 +12,7 @@ from scipy import integrate
 from particle_methods.convergence import fit_order, order_table
 from particle_methods.finite_volume import BURGERS, cell_averages_of_step_cdf, godunov, l1_between_cell_functions
 from particle_methods.norms import cdf_antiderivative
-from particle_methods.sticky import psystem_volumes
+from particle_methods.sticky import ScalarLaw, burgers_flux, psystem_volumes
 from particle_methods.sticky.cases import psystem_initial_measures
 from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
 from particle_methods.sticky.psystem_riemann import PSystemRiemann
@@ -26,15 +26,7 @@ from particle_methods.sticky.psystem_volumes import (
 from particle_methods.validation import ParameterTypeError
 
 SYSTEM = PSystem(nu=0.5, kappa=5.0)
-
-
-class Burgers:
-    """The scalar Burgers equation (5.1) as a diagonal system with d = 1: lambda(w) = w."""
-
-    d = 1
-
-    def speed_primitive(self, gamma, levels):
-        return levels[..., 0] ** 2 / 2
+BURGERS_LAW = ScalarLaw(burgers_flux)
 
 
 # Riemann problems of the lower half u <= nu/2 = 0.25, where c increases: a 1-wave (2-wave) is a
@@ -220,7 +212,7 @@ def test_upwind_is_godunov_for_burgers_with_positive_data():
     u0 = 0.5 + 0.4 * np.tanh(-5 * x) + 0.3 * (np.abs(x) < 0.3)  # a shock and a rarefaction, u > 0
     # One step (t below both time steps): the same update, flux f(u_{i-1}) at face i - 1/2.
     t = 0.5 * 0.9 * 0.01 / u0.max()
-    np.testing.assert_allclose(upwind_diagonal(Burgers(), u0[None], edges, t)[0], godunov(BURGERS, u0, edges, t),
+    np.testing.assert_allclose(upwind_diagonal(BURGERS_LAW, u0[None], edges, t)[0], godunov(BURGERS, u0, edges, t),
                                rtol=0, atol=1e-15)
     # Many steps: the time steps differ (averaged speeds against max f'), the results by O(dx^1.3) only.
     gaps = []
@@ -228,7 +220,7 @@ def test_upwind_is_godunov_for_burgers_with_positive_data():
         edges = np.linspace(-1.0, 1.0, cells + 1)
         x = 0.5 * (edges[1:] + edges[:-1])
         u0 = 0.5 + 0.4 * np.tanh(-5 * x) + 0.3 * (np.abs(x) < 0.3)
-        upwind = upwind_diagonal(Burgers(), u0[None], edges, 0.5)[0]
+        upwind = upwind_diagonal(BURGERS_LAW, u0[None], edges, 0.5)[0]
         gaps.append(l1_between_cell_functions(upwind, edges, godunov(BURGERS, u0, edges, 0.5), edges))
         assert gaps[-1] < 2e-3 * l1_between_cell_functions(upwind, edges, u0, edges)
     assert gaps[1] < gaps[0] / 4, gaps
@@ -404,7 +396,7 @@ W0 = np.full((2, 4), 0.5)
      re.escape(f"more than {MAX_CELL_STEPS:.0e} cell updates")),
     (lambda: hll_psystem(SYSTEM, U0[None], V0[None], EDGES, 1.0), ValueError, "u0 must be a 1-dimensional"),
     (lambda: upwind_diagonal(None, W0, EDGES, 1.0), ParameterTypeError, "system must be a diagonal system"),
-    (lambda: upwind_diagonal(Burgers(), W0, EDGES, 1.0), ValueError, "w0 must have one row per type"),
+    (lambda: upwind_diagonal(BURGERS_LAW, W0, EDGES, 1.0), ValueError, "w0 must have one row per type"),
     (lambda: upwind_diagonal(SYSTEM, W0[0], EDGES, 1.0), ValueError, "w0 must be a 2-dimensional"),
     (lambda: upwind_diagonal(SYSTEM, W0[:, :3], EDGES, 1.0), ValueError, "w0 has 3 cells but x_edges has 5"),
     (lambda: upwind_diagonal(SYSTEM, W0 + [[0.0], [np.nan]], EDGES, 1.0), ValueError, "w0 contains NaN"),
@@ -414,8 +406,7 @@ W0 = np.full((2, 4), 0.5)
     (lambda: upwind_diagonal(SYSTEM, W0, EDGES, 1.0, cfl=1.01), ValueError, r"cfl must lie in \(0, 1\]"),
     (lambda: upwind_diagonal(SYSTEM, W0, EDGES, -0.5), ValueError, "t must be non-negative"),
     (lambda: upwind_diagonal(SYSTEM, [[0.0, 0.5, 0.5, 1.0]] * 2, EDGES, 1e9), ValueError, "MAX_UPWIND"),
-    (lambda: upwind_diagonal(Burgers(), [[0.0, 1.0, 1e300, 1.0]], EDGES, 1.0), ValueError,
-     "averaged speeds are not finite"),
+    (lambda: upwind_diagonal(BURGERS_LAW, [[0.0, 1.0, 1e300, 1.0]], EDGES, 1.0), ValueError, "not finite"),
     (lambda: invariants_from_conservative(SYSTEM, [0.2, 0.5 + 1e-6], [0.0, 0.0]), ValueError,
      "u leaves .* by 2e-06 nu"),
     (lambda: invariants_from_conservative(SYSTEM, [0.2], [0.0], tolerance=-1.0), ValueError,
@@ -452,7 +443,7 @@ STATES = st.lists(NUMBERS, min_size=1, max_size=5).map(np.array)
 @given(u0=st.one_of(STATES, bad_array), v0=st.one_of(STATES, bad_array),
        x_edges=st.one_of(st.sampled_from([EDGES, np.array([0.0, 1e-300]), np.array([-1e300, 1e300])]), bad_array),
        t=st.one_of(st.sampled_from([0.0, 1e-300, 0.5, 1e300]), bad_scalar), cfl=st.one_of(st.just(0.9), bad_scalar),
-       system=st.sampled_from([SYSTEM, Burgers(), None]), left=st.tuples(st.one_of(NUMBERS, bad_scalar), NUMBERS))
+       system=st.sampled_from([SYSTEM, BURGERS_LAW, None]), left=st.tuples(st.one_of(NUMBERS, bad_scalar), NUMBERS))
 def test_fuzz_entry_points(u0, v0, x_edges, t, cfl, system, left):
     """Finite results or a ValueError/TypeError, never NaN and never a hang (tests/fuzzing.py)."""
     safe_call(hll_psystem, system, u0, v0, x_edges, t, cfl)

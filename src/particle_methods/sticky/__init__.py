@@ -10,7 +10,8 @@ Public entry points:
 - measures with exact quantiles (:class:`Atoms`, :class:`Laplace`, ...) and exact
   entropy solutions (:class:`BurgersSolution`, :class:`ConcaveLaplaceSolution`);
 - :func:`mspd_trajectory`, :func:`mspd_positions`, :func:`rank_velocities`: the
-  iterated typewise SPD for diagonal systems (sections 4.1, 5.2.1); :func:`mspd_exact`: the
+  iterated typewise SPD for diagonal systems (sections 4.1, 5.2.1), :class:`ScalarLaw` a scalar
+  law as a system with d = 1; :func:`mspd_exact`: the
   MSPD itself, event by event (section 5.2);
 - :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants.
 """
@@ -28,7 +29,7 @@ from .measures import (
     averaged_quantiles,
     median_quantiles,
 )
-from .mspd import mspd_positions, mspd_trajectory, rank_velocities
+from .mspd import ScalarLaw, mspd_positions, mspd_trajectory, rank_velocities
 from .multitype_events import EventCounts, mspd_exact
 from .psystem import PSystem
 from .spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux, velocities_from_levels
@@ -42,6 +43,7 @@ __all__ = [
     "PSystem",
     "Pareto",
     "QuantileMeasure",
+    "ScalarLaw",
     "TruncatedExponential",
     "TruncatedPareto",
     "Uniform",

@@ -62,6 +62,28 @@ def _ranks(x):
     return counts
 
 
+class ScalarLaw:
+    """A scalar conservation law u_t + A(u)_x = 0 (1.1) seen as a diagonal system with d = 1.
+
+    Its primitive of lambda = A' is the flux A itself, so the velocities (1.8) are those of
+    section 1.1.3 and every diagonal-system solver (the MSPD, the finite volumes of
+    :mod:`.psystem_volumes`) reduces to its scalar counterpart.
+    """
+
+    d = 1
+
+    def __init__(self, flux):
+        if not callable(flux):
+            raise ParameterTypeError(f"flux must be callable, got {flux!r}")
+        self.flux = flux
+
+    def speed_primitive(self, gamma, levels):
+        """A(levels[..., 0]); gamma must be 0."""
+        if integer_at_least("gamma", gamma, 0) != 0:
+            raise ValueError(f"gamma must be 0 for a scalar law, got {gamma}")
+        return self.flux(np.asarray(levels)[..., 0])
+
+
 def _checked_system(system) -> int:
     """Number of types d of a diagonal system (an integer d and a method speed_primitive)."""
     if not callable(getattr(system, "speed_primitive", None)):

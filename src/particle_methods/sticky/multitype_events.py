@@ -148,6 +148,15 @@ def _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel):
 
 
 @njit
+def _append(last, cluster, prv, nxt):
+    """Chain ``cluster`` after ``last`` in the list; True if it starts the list (last = -1)."""
+    prv[cluster], nxt[cluster] = last, _NONE
+    if last >= 0:
+        nxt[last] = cluster
+    return last < 0
+
+
+@njit
 def _blocks(values, lo, hi, starts, sums):
     """Pool-adjacent-violators on values[lo:hi]: the blocks of its non-decreasing regression.
 
@@ -189,10 +198,7 @@ def _new_blocks(reuse, gamma, lo, hi, place, now, count_row, lam, starts, sums, 
         kind[cluster], low[cluster], high[cluster] = gamma, starts[j], end
         xref[cluster], tref[cluster], vel[cluster] = place, now, sums[j] / (end - starts[j])
         counts[cluster, :] = count_row
-        prv[cluster], nxt[cluster] = last, _NONE
-        if last >= 0:
-            nxt[last] = cluster
-        else:
+        if _append(last, cluster, prv, nxt):
             first = cluster
         last = cluster
     return first, last
@@ -250,10 +256,7 @@ def _simulate(x0, ranks, table, strides, times, out, stats):
                 chosen = g
         cluster = by_type[chosen, current[chosen]]
         current[chosen] += 1
-        prv[cluster], nxt[cluster] = last, _NONE
-        if last >= 0:
-            nxt[last] = cluster
-        else:
+        if _append(last, cluster, prv, nxt):
             head = cluster
         last = cluster
     size, now = 0, 0.0

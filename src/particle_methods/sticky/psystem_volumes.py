@@ -205,6 +205,19 @@ def _primitives(system, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 @njit
+def _entering(values, right_going, g, i):
+    """Sum of ``values`` over the faces of cell i whose fluctuation of type g enters it: the left
+    face's if right-going, the right face's if left-going (face k lies between cells k and k + 1
+    of the padded row)."""
+    total = 0.0
+    if right_going[g, i - 1]:
+        total += values[g, i - 1]
+    if not right_going[g, i]:
+        total += values[g, i]
+    return total
+
+
+@njit
 def _face_pass(w, upper, lower, fluctuations, right_going, speeds):
     """Fluctuations, directions and averaged speeds at every face; returns the largest inflow speed of a cell.
 
@@ -228,12 +241,7 @@ def _face_pass(w, upper, lower, fluctuations, right_going, speeds):
             right_going[g, k] = dp >= 0.0 if jump > 0.0 else dp <= 0.0
             speeds[g, k] = abs(dp) / abs(jump) if abs(dp) > SPEED_RESOLUTION * scale else 0.0
         for i in range(1, m - 1):
-            inflow = 0.0
-            if right_going[g, i - 1]:
-                inflow += speeds[g, i - 1]
-            if not right_going[g, i]:
-                inflow += speeds[g, i]
-            fastest = max(fastest, inflow)
+            fastest = max(fastest, _entering(speeds, right_going, g, i))
     return fastest
 
 
@@ -247,12 +255,7 @@ def _upwind_update(w, fluctuations, right_going, ratio, low, high):
     d, m = w.shape
     for g in range(d):
         for i in range(1, m - 1):
-            change = 0.0
-            if right_going[g, i - 1]:
-                change += fluctuations[g, i - 1]
-            if not right_going[g, i]:
-                change += fluctuations[g, i]
-            w[g, i] = min(max(w[g, i] - ratio * change, low[g]), high[g])
+            w[g, i] = min(max(w[g, i] - ratio * _entering(fluctuations, right_going, g, i), low[g]), high[g])
 
 
 def upwind_diagonal(system, w0, x_edges, t, cfl: float = 0.9, return_steps: bool = False):
