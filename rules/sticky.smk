@@ -40,8 +40,11 @@ PSYSTEM_FIGURES = {
     "fig6": ("shocks", "trajectories"),
     "fig7": ("shocks", "fields"),
 }
-STICKY_FIGURES = expand("figures/sticky/{name}.{ext}", name=[f"fig{number}" for number in range(1, 8)]
-                        + ["beyond_limits", "beyond_cost"], ext=["pdf", "png"])
+STICKY_FIGURES = expand(
+    "figures/sticky/{name}.{ext}",
+    name=[f"fig{number}" for number in range(1, 8)] + ["beyond_limits", "beyond_cost"],
+    ext=["pdf", "png"],
+)
 
 
 rule sticky_fig1:
