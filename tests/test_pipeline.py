@@ -16,7 +16,8 @@ ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
 FIGURES = {"sticky": 7, "ltp": 8, "blob": 8}
 # Figures of our own studies beyond the papers
-OWN_FIGURES = {"sticky": [], "ltp": ["long_time", "nonaffine"], "blob": ["repulsive", "fig4log"]}
+OWN_FIGURES = {"sticky": ["beyond_limits", "beyond_cost"], "ltp": ["long_time", "nonaffine"],
+               "blob": ["repulsive", "fig4log"]}
 EXPECTED_FIGURES = [f"figures/{paper}/{name}.{ext}" for paper, count in FIGURES.items()
                     for name in [*(f"fig{number}" for number in range(1, count + 1)), *OWN_FIGURES[paper]]
                     for ext in ("pdf", "png")]
