@@ -69,3 +69,17 @@ def safe_call(function, *args, **kwargs):
             return None
     assert _all_finite(result), f"{function.__name__}{args} returned non-finite values silently"
     return result
+
+
+def naming(function, *names):
+    """``function``, whose ValueError/TypeError must name one of ``names`` (its parameters)."""
+
+    def call(*args, **kwargs):
+        try:
+            return function(*args, **kwargs)
+        except (ValueError, TypeError) as error:
+            assert any(name in str(error) for name in names), f"{call.__name__}: {error!r} names none of {names}"
+            raise
+
+    call.__name__ = getattr(function, "__name__", repr(function))
+    return call

@@ -12,7 +12,7 @@ import re
 
 import numpy as np
 import pytest
-from fuzzing import FUZZ, bad_array, bad_scalar, extreme, safe_call, watchdog
+from fuzzing import FUZZ, bad_array, bad_scalar, extreme, naming, safe_call, watchdog
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -44,20 +44,6 @@ def scalar(good):
 def array(good, ordered=False):
     drawn = st.one_of(finite_lists, huge_lists).map(sorted if ordered else list).map(np.array)
     return st.one_of(st.just(np.asarray(good, dtype=float)), bad_array, drawn)
-
-
-def naming(function, *names):
-    """``function``, whose ValueError/TypeError must name one of ``names`` (its parameters)."""
-
-    def call(*args, **kwargs):
-        try:
-            return function(*args, **kwargs)
-        except (ValueError, TypeError) as error:
-            assert any(name in str(error) for name in names), f"{function.__name__}: {error!r} names none of {names}"
-            raise
-
-    call.__name__ = function.__name__
-    return call
 
 
 def never_as_minus_one(function):

@@ -13,9 +13,7 @@ def run(inputs, output, p):
             *v.repulsive_claims(load_results(inputs.repulsive), p["fig4"]),
             *v.fig5_claims(load_results(inputs.fig5)), *v.fig6_claims(load_results(inputs.fig6)),
             *v.fig7_claims(load_results(inputs.fig7), p["fig7"]), *v.fig8_claims(load_results(inputs.fig8), p["fig8"])]
-    for row in rows:
-        progress(f"{row.status:4} {row.id} ({row.kind}): measured {row.measured} ({row.tolerance})")
-    c.write_claims(output.claims, rows)
+    c.write_claims(output.claims, rows, log=progress)
     v.RATES.write(output.rates)
 
 

@@ -47,9 +47,7 @@ def run(inputs, cfg, output):
         handle.write(work_precision_table(study, cfg))
     rows = [*v.study_claims(study, rates, cfg),
             *v.behaviour_claims(load_results(inputs.behaviour), cfg)]
-    for row in rows:
-        progress(f"{row.status:4} {row.id} [{row.kind}]: measured {row.measured} ({row.tolerance})")
-    c.write_claims(output.claims, rows)
+    c.write_claims(output.claims, rows, log=progress)
     rates.write(output.rates)
 
 

@@ -26,9 +26,7 @@ def run(inputs, output, p):
             (d7, [""]),
         ]),
     ]
-    for row in rows:
-        progress(f"{row.status:4} {row.id} ({row.kind}): measured {row.measured} ({row.tolerance})")
-    c.write_claims(output.claims, rows)
+    c.write_claims(output.claims, rows, log=progress)
     rates.write(output.rates)
 
 

@@ -44,10 +44,9 @@ def cell_distance(a, b, edges_a, edges_b):
 
 
 def hll_invariants(system, case, x0, edges, t, cfl):
-    """(seconds, steps, w) of the conservative HLL run mapped to Riemann invariants."""
+    """Riemann invariants (w-, w+) of the conservative HLL run, shape (2, cells)."""
     u0, v0 = system.physical_variables(*psystem_initial_cells(case, x0, edges))
-    seconds, (u, v, steps) = timed(lambda: hll_psystem(system, u0, v0, edges, t, cfl, return_steps=True), 1)
-    return seconds, steps, np.array(invariants_from_conservative(system, u, v))
+    return np.array(invariants_from_conservative(system, *hll_psystem(system, u0, v0, edges, t, cfl)))
 
 
 def upwind(system, case, x0, edges, t, cfl, repeats):
@@ -84,8 +83,8 @@ def run(system_params, cases, p, output):
         x0 = cases[name]["x0"]
         fine = np.linspace(*p["domain"], p["reference_cells"] + 1)
         coarse = np.linspace(*p["domain"], p["reference_cells"] // 2 + 1)
-        _, _, hll = hll_invariants(system, name, x0, fine, t, cfl)
-        _, _, hll_half = hll_invariants(system, name, x0, coarse, t, cfl)
+        hll = hll_invariants(system, name, x0, fine, t, cfl)
+        hll_half = hll_invariants(system, name, x0, coarse, t, cfl)
         _, (up, _) = upwind(system, name, x0, fine, t, cfl, 1)
         _, (up_half, _) = upwind(system, name, x0, coarse, t, cfl, 1)
         progress(f"{name}: references on {p['reference_cells']} cells done")

@@ -31,9 +31,7 @@ def run(inputs, cfg, output):
         *v.cost_claims(load_results(inputs.cost), rates, cost["window"], cost["band"]),
         *v.beyond_claims(load_results(inputs.beyond), rates, cfg["beyond"]),
     ]
-    for row in rows:
-        progress(f"{row.status:4} {row.id} [{row.kind}]: measured {row.measured} ({row.tolerance})")
-    c.write_claims(output.claims, rows)
+    c.write_claims(output.claims, rows, log=progress)
     rates.write(output.rates)
 
 

@@ -134,14 +134,17 @@ class Catalogue:
         return compare(f"{self.paper}.{name}", self.paper, figure, text, *args, kind=kind, source=source, **kwargs)
 
 
-def write_claims(path, claims) -> None:
-    """Write claims to a CSV file with the columns of the repository-wide table."""
+def write_claims(path, claims, log=None) -> None:
+    """Write claims to a CSV file with the columns of the repository-wide table; ``log`` (a
+    callable taking one line, e.g. a rule's progress) also receives one line per verdict."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     ids = [claim.id for claim in claims]
     duplicates = sorted({i for i in ids if ids.count(i) > 1})
     if duplicates:
         raise ValueError(f"duplicate claim ids: {duplicates}")
+    for claim in claims if log is not None else ():
+        log(f"{claim.status:4} {claim.id} [{claim.kind}]: measured {claim.measured} ({claim.tolerance})")
     temporary = path.with_suffix(path.suffix + ".tmp")
     with temporary.open("w", newline="") as handle:
         writer = csv.DictWriter(handle, fieldnames=COLUMNS)

@@ -8,7 +8,7 @@ in x; a non-negative distance).
 
 import numpy as np
 import pytest
-from fuzzing import FUZZ, bad_array, bad_scalar, extreme, safe_call
+from fuzzing import FUZZ, bad_array, bad_scalar, extreme, naming, safe_call
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -43,20 +43,6 @@ def levels(mass):
                        st.sampled_from([0.0, 5e-324, 1e-300, 1e-17, 0.5 * mass, mass * (1 - 1e-16), mass]))
     outside = st.sampled_from([-1e-300, -1.0, mass * (1 + 1e-15), 2 * mass + 1, np.nan, np.inf])
     return st.one_of(st.lists(inside, min_size=0, max_size=6).map(np.array), inside, outside, bad_array)
-
-
-def naming(function, *names):
-    """``function``, whose ValueError/TypeError must name one of ``names`` (its parameters)."""
-
-    def call(*args):
-        try:
-            return function(*args)
-        except (ValueError, TypeError) as error:
-            assert any(name in str(error) for name in names), f"{function.__name__}: {error!r} names none of {names}"
-            raise
-
-    call.__name__ = getattr(function, "__name__", repr(function))
-    return call
 
 
 def check_cdf(solution, x, values):

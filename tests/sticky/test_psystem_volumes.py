@@ -456,3 +456,21 @@ def test_fuzz_entry_points(u0, v0, x_edges, t, cfl, system, left):
     if exact is not None:
         safe_call(exact.state, u0)
         safe_call(exact.cell_averages, x_edges, t)
+
+
+def test_step_counts_are_returned_on_request():
+    # The cost study counts cell updates: the same solution, and the number of steps taken.
+    edges = np.linspace(0.0, 1.0, 51)
+    u0 = 0.2 + 0.5 * (edges[:-1] > 0.5)
+    t = 0.3
+    w, steps = upwind_diagonal(BURGERS_LAW, u0[None], edges, t, return_steps=True)
+    np.testing.assert_array_equal(w, upwind_diagonal(BURGERS_LAW, u0[None], edges, t))
+    # Averaged speeds lie between that of the jump, (0.7^2 - 0.2^2) / (2 * 0.5) = 0.45, and max u = 0.7.
+    assert np.ceil(t * 0.45 / (0.9 * 0.02)) <= steps <= np.ceil(t * 0.7 / (0.9 * 0.02))
+    u, cells_steps = godunov(BURGERS, u0, edges, t, return_steps=True)
+    np.testing.assert_array_equal(u, godunov(BURGERS, u0, edges, t))
+    assert cells_steps == np.ceil(t / (0.9 * 0.02 / 0.7))
+    for call in (lambda: upwind_diagonal(BURGERS_LAW, u0[None], edges, t, return_steps="yes"),
+                 lambda: godunov(BURGERS, u0, edges, t, return_steps=1)):
+        with pytest.raises(TypeError, match="return_steps"):
+            call()

@@ -6,7 +6,7 @@ Each call must return finite values or raise ValueError/TypeError naming one of 
 
 import numpy as np
 import pytest
-from fuzzing import FUZZ, bad_array, bad_scalar, extreme, safe_call, watchdog
+from fuzzing import FUZZ, bad_array, bad_scalar, extreme, naming, safe_call, watchdog
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -60,20 +60,6 @@ def count(good):
 def array(good, ordered=False):
     drawn = st.one_of(finite_lists, huge_lists).map(sorted if ordered else list).map(np.array)
     return st.one_of(st.just(np.asarray(good, dtype=float)), bad_array, drawn)
-
-
-def naming(function, *names):
-    """``function``, whose ValueError/TypeError must name one of ``names`` (its parameters)."""
-
-    def call(*args):
-        try:
-            return function(*args)
-        except (ValueError, TypeError) as error:
-            assert any(name in str(error) for name in names), f"{function.__name__}: {error!r} names none of {names}"
-            raise
-
-    call.__name__ = function.__name__
-    return call
 
 
 class System:

@@ -136,7 +136,7 @@ def _hll_evolve(u, v, dx, dt, t, nu, kappa):
     return largest
 
 
-def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9, return_steps: bool = False):
+def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9) -> tuple[np.ndarray, np.ndarray]:
     """Cell averages (u, v) at time t of the HLL scheme for the p-system, from the averages (u0, v0).
 
     ``x_edges`` are the len(u0) + 1 uniformly spaced cell edges and u0 must lie in [0, nu].
@@ -145,11 +145,9 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9, return_st
     (the peak c(nu/2) as soon as the data have w^+ - w^- of both signs, as both data of
     section 5.2.2 do). A run whose face speeds S exceed dx/dt, possible only if its states
     leave that box towards nu/2, is refused. Nothing keeps the result in [0, nu]: see the
-    module docstring and :func:`invariants_from_conservative`. With ``return_steps`` the number
-    of time steps is returned as a third value (2 cells steps is the work).
+    module docstring and :func:`invariants_from_conservative`.
     """
     system = _checked_psystem(system)
-    return_steps = instance("return_steps", return_steps, (bool, np.bool_))
     u, v, edges = _conservative_data(system, u0, v0, x_edges)
     dx = _uniform_width(edges)
     t, cfl = _time_and_cfl(t, cfl)
@@ -165,7 +163,7 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9, return_st
                              "invariant region of the data and broke the CFL condition; reduce cfl")
     u, v = u_all[1:-1], v_all[1:-1]
     finite_result("the HLL solution", np.concatenate([u, v]), "the scheme overflowed")
-    return (u, v, int(math.ceil(t / dt))) if return_steps else (u, v)
+    return u, v
 
 
 def invariants_from_conservative(system: PSystem, u, v, tolerance: float = VOLUME_TOLERANCE):
