@@ -69,10 +69,13 @@ rule blob_newtonian_data:
         "results/blob/{figure}.npz",
     log:
         "logs/blob/{figure}_data.log",
+    benchmark:
+        "logs/benchmarks/blob_newtonian_data_{figure}.tsv"
     wildcard_constraints:
         figure="fig1|fig2|fig3",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=lambda wildcards: BLOB[wildcards.figure],
     script:
@@ -88,10 +91,13 @@ rule blob_newtonian_figure:
         **figure("figures/blob/{figure}"),
     log:
         "logs/blob/{figure}_plot.log",
+    benchmark:
+        "logs/benchmarks/blob_newtonian_figure_{figure}.tsv"
     wildcard_constraints:
         figure="fig1|fig2|fig3",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(BLOB_CAPTIONS),
         title=lambda wildcards: BLOB_TITLES[wildcards.figure],
@@ -107,10 +113,13 @@ rule blob_fig4_data:
         "results/blob/{figure}.npz",
     log:
         "logs/blob/{figure}_data.log",
+    benchmark:
+        "logs/benchmarks/blob_fig4_data_{figure}.tsv"
     wildcard_constraints:
         figure="fig4|fig4log",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=lambda wildcards: BLOB_FIG4_STUDIES[wildcards.figure],
     script:
@@ -127,8 +136,11 @@ rule blob_repulsive_data:
         "results/blob/repulsive.npz",
     log:
         "logs/blob/repulsive_data.log",
+    benchmark:
+        "logs/benchmarks/blob_repulsive_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg={**BLOB["fig4"], **BLOB["fig4"]["repulsive"]},
     script:
@@ -144,8 +156,11 @@ rule blob_repulsive:
         **figure("figures/blob/repulsive"),
     log:
         "logs/blob/repulsive_plot.log",
+    benchmark:
+        "logs/benchmarks/blob_repulsive.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(BLOB_CAPTIONS, "repulsive"),
     script:
@@ -161,10 +176,13 @@ rule blob_fig4:
         **figure("figures/blob/{figure}"),
     log:
         "logs/blob/{figure}_plot.log",
+    benchmark:
+        "logs/benchmarks/blob_fig4_{figure}.tsv"
     wildcard_constraints:
         figure="fig4|fig4log",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(BLOB_CAPTIONS),
     script:
@@ -190,8 +208,11 @@ rule blob_claims:
         rates="results/blob/rates.json",
     log:
         "logs/blob/claims.log",
+    benchmark:
+        "logs/benchmarks/blob_claims.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=BLOB,
     script:
@@ -206,8 +227,11 @@ rule blob_fig5_data:
         "results/blob/fig5.npz",
     log:
         "logs/blob/fig5_data.log",
+    benchmark:
+        "logs/benchmarks/blob_fig5_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=BLOB["fig5"],
     script:
@@ -223,8 +247,11 @@ rule blob_fig5:
         **figure("figures/blob/fig5"),
     log:
         "logs/blob/fig5_plot.log",
+    benchmark:
+        "logs/benchmarks/blob_fig5.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(BLOB_CAPTIONS, "fig5"),
     script:
@@ -239,8 +266,11 @@ rule blob_fig6_data:
         "results/blob/fig6.npz",
     log:
         "logs/blob/fig6_data.log",
+    benchmark:
+        "logs/benchmarks/blob_fig6_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=BLOB["fig6"],
     script:
@@ -256,8 +286,11 @@ rule blob_fig6:
         **figure("figures/blob/fig6"),
     log:
         "logs/blob/fig6_plot.log",
+    benchmark:
+        "logs/benchmarks/blob_fig6.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(BLOB_CAPTIONS, "fig6"),
         shown=BLOB["fig6"]["top"]["trajectories"],
@@ -273,10 +306,13 @@ rule blob_compare_data:
         "results/blob/{figure}.npz",
     log:
         "logs/blob/{figure}_data.log",
+    benchmark:
+        "logs/benchmarks/blob_compare_data_{figure}.tsv"
     wildcard_constraints:
         figure="fig7|fig8",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=lambda wildcards: BLOB[wildcards.figure],
     script:
@@ -292,10 +328,13 @@ rule blob_compare_figure:
         **figure("figures/blob/{figure}"),
     log:
         "logs/blob/{figure}_plot.log",
+    benchmark:
+        "logs/benchmarks/blob_compare_figure_{figure}.tsv"
     wildcard_constraints:
         figure="fig7|fig8",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(BLOB_CAPTIONS),
         title=lambda wildcards: BLOB_COMPARE_TITLES[wildcards.figure],

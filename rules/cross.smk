@@ -25,6 +25,8 @@ rule cross_study:
         "results/cross/study.npz",
     log:
         "logs/cross/study.log",
+    benchmark:
+        "logs/benchmarks/cross_study.tsv"
     conda:
         ENVIRONMENT
     threads: workflow.cores
@@ -42,8 +44,11 @@ rule cross_behaviour:
         "results/cross/behaviour.npz",
     log:
         "logs/cross/behaviour.log",
+    benchmark:
+        "logs/benchmarks/cross_behaviour.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=CROSS,
     script:
@@ -59,10 +64,13 @@ rule cross_figure:
         **figure("figures/cross/{figure}"),
     log:
         "logs/cross/{figure}.log",
+    benchmark:
+        "logs/benchmarks/cross_figure_{figure}.tsv"
     wildcard_constraints:
         figure="error_size|error_time",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(CROSS_CAPTIONS, None),
         cfg=CROSS,
@@ -83,8 +91,11 @@ rule cross_claims:
         table="results/cross/table.tex",
     log:
         "logs/cross/claims.log",
+    benchmark:
+        "logs/benchmarks/cross_claims.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=CROSS,
     script:

@@ -52,8 +52,11 @@ rule ltp_fig1:
         **figure("figures/ltp/fig1"),
     log:
         "logs/ltp/fig1.log",
+    benchmark:
+        "logs/benchmarks/ltp_fig1.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(LTP_CAPTIONS, "fig1"),
         cfg=LTP["fig1"],
@@ -69,8 +72,11 @@ rule ltp_quadratic_data:
         "results/ltp/quadratic.npz",
     log:
         "logs/ltp/quadratic.log",
+    benchmark:
+        "logs/benchmarks/ltp_quadratic_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=LTP["quadratic"],
     script:
@@ -89,8 +95,11 @@ rule ltp_quadratic_figures:
         fig3_png=report("figures/ltp/fig3.png", caption=CAPTION, category="ltp", subcategory="fig3"),
     log:
         "logs/ltp/quadratic_plot.log",
+    benchmark:
+        "logs/benchmarks/ltp_quadratic_figures.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=" ".join(caption(LTP_CAPTIONS, name) for name in ("fig2", "fig3")),
     script:
@@ -105,8 +114,11 @@ rule ltp_fig4_data:
         "results/ltp/fig4.npz",
     log:
         "logs/ltp/fig4_data.log",
+    benchmark:
+        "logs/benchmarks/ltp_fig4_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=LTP["fig4"],
     script:
@@ -122,8 +134,11 @@ rule ltp_fig4:
         **figure("figures/ltp/fig4"),
     log:
         "logs/ltp/fig4_plot.log",
+    benchmark:
+        "logs/benchmarks/ltp_fig4.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(LTP_CAPTIONS, "fig4"),
     script:
@@ -138,10 +153,13 @@ rule ltp_rows_data:
         "results/ltp/{figure}.npz",
     log:
         "logs/ltp/{figure}_data.log",
+    benchmark:
+        "logs/benchmarks/ltp_rows_data_{figure}.tsv"
     wildcard_constraints:
         figure="fig5|fig6",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=lambda wildcards: LTP[wildcards.figure],
         concentration=LTP["concentration"],
@@ -158,10 +176,13 @@ rule ltp_rows_figure:
         **figure("figures/ltp/{figure}"),
     log:
         "logs/ltp/{figure}_plot.log",
+    benchmark:
+        "logs/benchmarks/ltp_rows_figure_{figure}.tsv"
     wildcard_constraints:
         figure="fig5|fig6",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(LTP_CAPTIONS),
         title=lambda wildcards: LTP_ROW_TITLES[wildcards.figure],
@@ -177,8 +198,11 @@ rule ltp_fig7_data:
         "results/ltp/fig7.npz",
     log:
         "logs/ltp/fig7_data.log",
+    benchmark:
+        "logs/benchmarks/ltp_fig7_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=LTP["fig7"],
         concentration=LTP["concentration"],
@@ -195,8 +219,11 @@ rule ltp_fig7:
         **figure("figures/ltp/fig7"),
     log:
         "logs/ltp/fig7_plot.log",
+    benchmark:
+        "logs/benchmarks/ltp_fig7.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(LTP_CAPTIONS, "fig7"),
     script:
@@ -211,8 +238,11 @@ rule ltp_fig8_data:
         "results/ltp/fig8.npz",
     log:
         "logs/ltp/fig8_data.log",
+    benchmark:
+        "logs/benchmarks/ltp_fig8_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=LTP["fig8"],
     script:
@@ -228,8 +258,11 @@ rule ltp_fig8:
         **figure("figures/ltp/fig8"),
     log:
         "logs/ltp/fig8_plot.log",
+    benchmark:
+        "logs/benchmarks/ltp_fig8.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(LTP_CAPTIONS, "fig8"),
     script:
@@ -244,8 +277,11 @@ rule ltp_nonaffine_data:
         "results/ltp/nonaffine.npz",
     log:
         "logs/ltp/nonaffine_data.log",
+    benchmark:
+        "logs/benchmarks/ltp_nonaffine_data.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=LTP["nonaffine"],
     script:
@@ -261,8 +297,11 @@ rule ltp_nonaffine:
         **figure("figures/ltp/nonaffine"),
     log:
         "logs/ltp/nonaffine_plot.log",
+    benchmark:
+        "logs/benchmarks/ltp_nonaffine.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(LTP_CAPTIONS, "nonaffine"),
     script:
@@ -281,8 +320,11 @@ rule ltp_long_time:
         **figure("figures/ltp/long_time"),
     log:
         "logs/ltp/long_time_plot.log",
+    benchmark:
+        "logs/benchmarks/ltp_long_time.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(LTP_CAPTIONS, "long_time"),
         cfg=LTP,
@@ -306,8 +348,11 @@ rule ltp_claims:
         rates="results/ltp/rates.json",
     log:
         "logs/ltp/claims.log",
+    benchmark:
+        "logs/benchmarks/ltp_claims.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=LTP,
     script:

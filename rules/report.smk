@@ -26,8 +26,11 @@ rule claims_table:
         rates="results/rates.json",
     log:
         "logs/claims_table.log",
+    benchmark:
+        "logs/benchmarks/claims_table.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     shell:
         "python -m particle_methods.claims merge {input.sources} --rates {input.rates} "
         "--csv {output.csv} --markdown {output.markdown} --rates-output {output.rates} > {log} 2>&1"
@@ -42,8 +45,11 @@ rule verify:
         expected=VERDICTS,
     log:
         "logs/verify.log",
+    benchmark:
+        "logs/benchmarks/verify.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     shell:
         "python -m particle_methods.claims verify {input.claims} --expected {input.expected} 2>&1 "
         "| tee {log}; exit ${{PIPESTATUS[0]}}"
@@ -84,8 +90,11 @@ rule notebook:
         "notebooks/executed/{paper}.ipynb",
     log:
         "logs/notebooks/{paper}.log",
+    benchmark:
+        "logs/benchmarks/notebook_{paper}.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     shell:
         "PARTICLE_METHODS_WORKDIR=$PWD MPLBACKEND=module://matplotlib_inline.backend_inline "
         "jupytext --to ipynb --execute "
@@ -101,8 +110,11 @@ rule versions:
         "results/versions.md",
     log:
         "logs/versions.log",
+    benchmark:
+        "logs/benchmarks/versions.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         commit=COMMIT["hash"],
     shell:
@@ -147,8 +159,11 @@ rule report_snippets:
         SNIPPETS,
     log:
         "logs/report_snippets.log",
+    benchmark:
+        "logs/benchmarks/report_snippets.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         outdir=lambda wildcards, output: os.path.dirname(output[0]),
     script:
@@ -166,8 +181,11 @@ rule manuscript:
         "paper/ms.pdf",
     log:
         "logs/manuscript.log",
+    benchmark:
+        "logs/benchmarks/manuscript.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         epoch=COMMIT["epoch"],
     shell:

@@ -55,8 +55,11 @@ rule sticky_fig1:
         **figure("figures/sticky/fig1"),
     log:
         "logs/sticky/fig1.log",
+    benchmark:
+        "logs/benchmarks/sticky_fig1.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(STICKY_CAPTIONS, "fig1"),
         cfg=STICKY["fig1"],
@@ -72,10 +75,13 @@ rule sticky_scalar_data:
         "results/sticky/{figure}.npz",
     log:
         "logs/sticky/{figure}_data.log",
+    benchmark:
+        "logs/benchmarks/sticky_scalar_data_{figure}.tsv"
     wildcard_constraints:
         figure="fig2|fig3",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=lambda wildcards: STICKY[wildcards.figure],
     script:
@@ -91,10 +97,13 @@ rule sticky_scalar_figure:
         **figure("figures/sticky/{figure}"),
     log:
         "logs/sticky/{figure}_plot.log",
+    benchmark:
+        "logs/benchmarks/sticky_scalar_figure_{figure}.tsv"
     wildcard_constraints:
         figure="fig2|fig3",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(STICKY_CAPTIONS),
         case=lambda wildcards: STICKY[wildcards.figure]["case"],
@@ -110,10 +119,13 @@ rule sticky_psystem_data:
         "results/sticky/psystem_{case}.npz",
     log:
         "logs/sticky/psystem_{case}.log",
+    benchmark:
+        "logs/benchmarks/sticky_psystem_data_{case}.tsv"
     wildcard_constraints:
         case="rarefaction|shocks",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
         cfg=lambda wildcards: STICKY["psystem"][wildcards.case],
@@ -130,10 +142,13 @@ rule sticky_psystem_figure:
         **figure("figures/sticky/{figure}"),
     log:
         "logs/sticky/{figure}_plot.log",
+    benchmark:
+        "logs/benchmarks/sticky_psystem_figure_{figure}.tsv"
     wildcard_constraints:
         figure="fig4|fig5|fig6|fig7",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(STICKY_CAPTIONS),
         case=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][0],
@@ -151,8 +166,11 @@ rule sticky_lemma21:
         "results/sticky/lemma21.npz",
     log:
         "logs/sticky/lemma21.log",
+    benchmark:
+        "logs/benchmarks/sticky_lemma21.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=STICKY["lemma21"],
     script:
@@ -167,8 +185,11 @@ rule sticky_remark33:
         "results/sticky/remark33.npz",
     log:
         "logs/sticky/remark33.log",
+    benchmark:
+        "logs/benchmarks/sticky_remark33.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=STICKY["remark33"],
     script:
@@ -183,8 +204,11 @@ rule sticky_tspd_convergence:
         "results/sticky/tspd_convergence.npz",
     log:
         "logs/sticky/tspd_convergence.log",
+    benchmark:
+        "logs/benchmarks/sticky_tspd_convergence.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
         cases=lambda wildcards: {
@@ -204,6 +228,8 @@ rule sticky_cost:
         "results/sticky/cost.npz",
     log:
         "logs/sticky/cost.log",
+    benchmark:
+        "logs/benchmarks/sticky_cost.tsv"
     conda:
         ENVIRONMENT
     threads: workflow.cores
@@ -222,6 +248,8 @@ rule sticky_beyond:
         "results/sticky/beyond.npz",
     log:
         "logs/sticky/beyond.log",
+    benchmark:
+        "logs/benchmarks/sticky_beyond.tsv"
     conda:
         ENVIRONMENT
     threads: workflow.cores
@@ -244,10 +272,13 @@ rule sticky_beyond_figure:
         **figure("figures/sticky/{figure}"),
     log:
         "logs/sticky/{figure}_plot.log",
+    benchmark:
+        "logs/benchmarks/sticky_beyond_figure_{figure}.tsv"
     wildcard_constraints:
         figure="beyond_limits|beyond_cost",
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         caption=caption(STICKY_CAPTIONS),
         cfg=STICKY["beyond"],
@@ -273,8 +304,11 @@ rule sticky_claims:
         rates="results/sticky/rates.json",
     log:
         "logs/sticky/claims.log",
+    benchmark:
+        "logs/benchmarks/sticky_claims.tsv"
     conda:
         ENVIRONMENT
+    threads: 1
     params:
         cfg=STICKY,
     script:

@@ -17,5 +17,5 @@ def run(inputs, output, p):
     v.RATES.write(output.rates)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(snakemake.input, snakemake.output, snakemake.params.cfg)  # noqa: F821

@@ -36,6 +36,6 @@ def run(d, t, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(load_results(snakemake.input.data), float(snakemake.config["blob"]["fig5"]["t"]),  # noqa: F821
         snakemake.output)  # noqa: F821

@@ -140,6 +140,6 @@ def run(d, shown, cfg, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(load_results(snakemake.input.data), snakemake.params.shown,  # noqa: F821
         snakemake.config["blob"]["fig6"], snakemake.output)  # noqa: F821

@@ -84,6 +84,6 @@ def run(d, title, error_t, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(load_results(snakemake.input.data), snakemake.params.title,  # noqa: F821
         float(snakemake.config["blob"][snakemake.wildcards.figure]["error_t"]), snakemake.output)  # noqa: F821

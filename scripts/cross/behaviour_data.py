@@ -1,7 +1,6 @@
 """What the methods do at the blow-up: the particle method at its first collision and the ODE solver
 past it, the LTP method as the density blows up."""
 
-import numba
 import numpy as np
 from scipy.integrate import solve_ivp
 
@@ -52,8 +51,7 @@ def densest_particle(data, h, dt, t):
     return particles.centres[densest], particles.widths[densest] / h
 
 
-def run(p, threads, output):
-    numba.set_num_threads(threads)  # the rule's share of the cores: more threads would wait on each other
+def run(p, output):
     data_names, ltp = p["data"], p["ltp"]
     t_after = max(p["times"])
     predicted, measured = np.empty(len(data_names)), np.empty(len(data_names))
@@ -104,5 +102,5 @@ def run(p, threads, output):
                  stall_window=b["stall_window"])
 
 
-with logged(snakemake.log[0]):  # noqa: F821
-    run(snakemake.params.cfg, snakemake.threads, snakemake.output)  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+    run(snakemake.params.cfg, snakemake.output)  # noqa: F821

@@ -51,5 +51,5 @@ def run(inputs, cfg, output):
     rates.write(output.rates)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(snakemake.input, snakemake.params.cfg, snakemake.output)  # noqa: F821

@@ -52,6 +52,6 @@ def run(d, p, figure, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(load_results(snakemake.input.data), snakemake.params.cfg, snakemake.wildcards.figure,  # noqa: F821
         snakemake.output)  # noqa: F821

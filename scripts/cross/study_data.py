@@ -6,7 +6,6 @@ method's own output, and its wall time (initial discretisation plus evolution, a
 run that compiles every kernel) is the best of ``repeats`` runs when a run is short.
 """
 
-import numba
 import numpy as np
 
 from particle_methods.cross import distances, methods
@@ -80,8 +79,7 @@ def method_table(p):
     return table
 
 
-def run(p, threads, output):
-    numba.set_num_threads(threads)
+def run(p, output):
     table = method_table(p)
     times = sorted({t for entry in table.values() for t in entry[0]})
     rows, cases = [], []
@@ -113,5 +111,5 @@ def run(p, threads, output):
                  case_dirac=np.array(case_dirac))
 
 
-with logged(snakemake.log[0]):  # noqa: F821
-    run(snakemake.params.cfg, snakemake.threads, snakemake.output)  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+    run(snakemake.params.cfg, snakemake.output)  # noqa: F821

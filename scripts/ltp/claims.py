@@ -30,5 +30,5 @@ def run(inputs, output, p):
     rates.write(output.rates)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(snakemake.input, snakemake.output, snakemake.params.cfg)  # noqa: F821

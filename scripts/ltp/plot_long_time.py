@@ -60,5 +60,5 @@ def run(inputs, p, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(snakemake.input, snakemake.params.cfg, snakemake.output)  # noqa: F821

@@ -87,7 +87,7 @@ def figure3(d, output):
     save_figure(fig, output.fig3_pdf, output.fig3_png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     data = load_results(snakemake.input.data)  # noqa: F821
     figure2(data, snakemake.output)  # noqa: F821
     figure3(data, snakemake.output)  # noqa: F821

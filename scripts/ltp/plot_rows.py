@@ -50,5 +50,5 @@ def run(d, title, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(load_results(snakemake.input.data), snakemake.params.title, snakemake.output)  # noqa: F821

@@ -3,6 +3,6 @@
 from particle_methods.report import write_snippets
 from particle_methods.workflow import logged
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     write_snippets(snakemake.input.claims, snakemake.input.rates, snakemake.input.versions, dict(snakemake.config),  # noqa: F821
                    snakemake.params.outdir)  # noqa: F821

@@ -132,5 +132,5 @@ def run(system_params, cases, p, output):
     )
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

@@ -45,7 +45,7 @@ def fields(d, title, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     data = load_results(snakemake.input.data)  # noqa: F821
     heading = CASE_TITLES[snakemake.params.case].format(x0=snakemake.params.x0)  # noqa: F821
     {"trajectories": trajectories, "fields": fields}[snakemake.params.kind](data, heading, snakemake.output)  # noqa: F821

@@ -57,5 +57,5 @@ def run(d, case, output):
     save_figure(fig, output.pdf, output.png)
 
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(load_results(snakemake.input.data), snakemake.params.case, snakemake.output)  # noqa: F821

@@ -12,14 +12,20 @@ from pathlib import Path
 
 import numpy as np
 
+from .threads import available, use_threads
+
 
 @contextlib.contextmanager
-def logged(log_path):
-    """Send stdout and stderr to ``log_path`` and report the wall time at the end."""
+def logged(log_path, threads: int = 1):
+    """Send stdout and stderr to ``log_path``, run the compiled kernels and numerical libraries on
+    the job's ``threads`` (:func:`particle_methods.threads.use_threads`, clamped to what the
+    process may use), and report the threads and the wall time."""
     log_path = Path(log_path)
     log_path.parent.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
+    used = use_threads(threads)
     with log_path.open("w") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
+        print(f"threads: {used} (the job's {threads}, at most {available()} in this process)", flush=True)
         try:
             yield
         except BaseException:

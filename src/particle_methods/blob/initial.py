@@ -2,8 +2,9 @@
 
 (4.3) (1 - x^2)^20, (4.4) the indicator of [-1, 1], (4.5) (1 - x^2)^10, none normalised,
 as in the paper. Particles sit at the grid points jh of [-1, 1] with masses rho0(jh) h^d; the
-grids hold at most :data:`~particle_methods.blob.checks.MAX_PARTICLES` points (1D) or nodes
-around the data (2D, four times as many).
+grids hold at most :data:`~particle_methods.blob.checks.MAX_PARTICLES` points (1D) or four times
+:data:`~particle_methods.blob.checks.MAX_FMM_PARTICLES` nodes around the data (2D; a run then takes the
+limit of its kernel).
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ import numpy as np
 
 from ..jit import njit
 from ..validation import finite_values, instance, integer_at_least, one_of, positive
-from .checks import MAX_DATA_POWER, MAX_PARTICLES
+from .checks import MAX_DATA_POWER, MAX_FMM_PARTICLES, MAX_PARTICLES
 
 
 @njit
@@ -171,9 +172,9 @@ def grid_2d(h: float, data: Data2D) -> np.ndarray:
     if h > data.radius:
         raise ValueError(f"h = {h} must not exceed the radius {data.radius} of the data {data.name!r}")
     side = 2.0 * np.ceil(data.radius / h) + 3.0  # nodes on a side of the grid's box
-    if side > 2.0 * np.sqrt(MAX_PARTICLES):
-        raise ValueError(f"h = {h} gives {side:.4g}^2 grid nodes around the data, more than 4 MAX_PARTICLES = "
-                         f"{4 * MAX_PARTICLES} (a limit on the work of one run)")
+    if side > 2.0 * np.sqrt(MAX_FMM_PARTICLES):
+        raise ValueError(f"h = {h} gives {side:.4g}^2 grid nodes around the data, more than 4 MAX_FMM_PARTICLES = "
+                         f"{4 * MAX_FMM_PARTICLES} (a limit on the work of one run)")
     half = int(np.ceil(data.radius / h)) + 1
     axis = h * np.arange(-half, half + 1)
     points = np.stack(np.meshgrid(axis, axis, indexing="ij"), axis=-1).reshape(-1, 2)

@@ -32,16 +32,15 @@ are written once for any dimension.
 
 from __future__ import annotations
 
-import contextlib
 import functools
 import math
 from dataclasses import dataclass
 
-import numba
 import numpy as np
 from numba import prange
 
 from ..jit import njit
+from ..threads import threads_for
 from ..validation import (
     finite_array,
     finite_result,
@@ -53,8 +52,8 @@ from ..validation import (
     real_array,
     same_length,
 )
-from . import sums_1d
-from .checks import MAX_TABLE_WORK
+from . import newtonian_fmm, sums_1d
+from .checks import MAX_FMM_PARTICLES, MAX_PARTICLES, MAX_TABLE_WORK
 from .mollifiers import Mollifier
 from .radial import RadialTable, tabulate
 from .special import EULER_GAMMA, dawson_and_slope, exp1
@@ -210,21 +209,21 @@ def _profile_potential(kinds, coefficients, parameters, r):
 #: Rows are dealt to this many accumulators, round robin, whatever the number of threads: each
 #: pair is evaluated once, and the sums are added in the same order on any machine.
 _ACCUMULATORS = 16
-#: Below this many particles the sums run on one thread: a call is then a fraction of a millisecond,
-#: and waking threads (worse when two jobs share the cores) costs more than it saves. The sums are
-#: bit-identical on any number of threads.
+#: Below this many particles the direct sums run on one thread (:func:`particle_methods.threads.threads_for`,
+#: measured by benchmarks/bench_threads.py). The sums are bit-identical on any number of threads.
 PARALLEL_MIN_PARTICLES = 512
+#: From this many particles on, the 2D Newtonian sums mollified by (4.2) go through the fast multipole
+#: method (:mod:`.newtonian_fmm`): the crossover with the direct tiled sums measured by
+#: benchmarks/bench_fmm.py (about 3,300 particles on one thread, 4,000 on two; delta = h^0.9).
+FMM_MIN_PARTICLES = 4000
+#: The same for the raw kernel (the particle method), whose direct sums need no exponential: the
+#: crossover lies near 10,000 particles on one thread, 13,000 on two.
+FMM_MIN_PARTICLES_RAW = 12000
 
 
-@contextlib.contextmanager
 def _threads_for(particles):
     """All of numba's threads for large systems, one below :data:`PARALLEL_MIN_PARTICLES`."""
-    threads = numba.get_num_threads()
-    numba.set_num_threads(threads if particles >= PARALLEL_MIN_PARTICLES else 1)
-    try:
-        yield
-    finally:
-        numba.set_num_threads(threads)
+    return threads_for(particles, PARALLEL_MIN_PARTICLES)
 
 
 @njit
@@ -436,6 +435,13 @@ def _tiled_2d_sums(positions, masses, constants, terms, self_lap):
     return _reduce(np.stack([vx, vy], axis=-1), divergence)
 
 
+def is_newtonian_2d(kinds) -> bool:
+    """Whether 2D terms are the Newtonian kernel, raw (one LOG term) or mollified by (4.2) (two
+    GAUSS_LOG_2D terms): its sums have a path of their own (:func:`_newtonian_2d_sums`)."""
+    kinds = tuple(int(kind) for kind in kinds)
+    return kinds in ((LOG,), (GAUSS_LOG_2D, GAUSS_LOG_2D))
+
+
 def tiled_2d_supported(kinds, parameters) -> bool:
     """Whether a 2D kernel's terms are all even powers 2 and 4, Gaussian log terms or tables (the
     mollified kernels of section 4.4 other than the Newtonian one)."""
@@ -454,15 +460,30 @@ def _check_span(positions, widths):
 _NO_TERMS = (np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros((1, 2, 2)), np.ones(1))
 
 
-def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths):
+def _coincident(positions) -> bool:
+    """Whether two of the points (N, 2) are equal."""
+    order = np.lexsort((positions[:, 1], positions[:, 0]))
+    ordered = positions[order]
+    return bool(np.any(np.all(ordered[1:] == ordered[:-1], axis=1)))
+
+
+def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths, method):
     """Pair sums of the 2D Newtonian kernel, raw (one LOG term: the particle method) or mollified
-    (two GAUSS_LOG_2D terms, (4.2)), split into loops that vectorise: the forces of a row tile, then
-    the partners' share and the row's share (summed in a fixed order)."""
+    (two GAUSS_LOG_2D terms, (4.2)). From :data:`FMM_MIN_PARTICLES` (raw: :data:`FMM_MIN_PARTICLES_RAW`)
+    distinct points on, by the fast multipole method and a near-field cell list (:mod:`.newtonian_fmm`,
+    O(N)); below, or with coincident points, directly, split into loops that vectorise: the forces of a
+    row tile, then the partners' share and the row's share (summed in a fixed order)."""
+    if kinds[0] != LOG:
+        _check_span(positions, widths)
+    threshold = FMM_MIN_PARTICLES_RAW if kinds[0] == LOG else FMM_MIN_PARTICLES
+    fast = positions.shape[0] >= threshold if method == "auto" else method == "fmm"
+    if fast and not _coincident(positions):
+        return newtonian_fmm.newtonian_sums(positions, masses, coefficients,
+                                            np.zeros(0) if kinds[0] == LOG else widths)
     if kinds[0] == LOG:
         constants = (0.0, coefficients[0] / (2 * math.pi), 0.0, 0.0, 0.0, 0.0, 0.0)
         self_lap = 0.0
     else:
-        _check_span(positions, widths)
         inverse = 1.0 / widths**2
         constants = (1.0, coefficients[0] / (2 * math.pi), coefficients[1] / (2 * math.pi), inverse[0],
                      inverse[1], coefficients[0] * inverse[0] / math.pi, coefficients[1] * inverse[1] / math.pi)
@@ -470,7 +491,13 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths):
     return _tiled_2d_sums(positions, masses, constants, _NO_TERMS, self_lap)
 
 
-def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps):
+#: How :func:`pair_sums` takes the 2D Newtonian kernel's sums.
+NEWTONIAN_2D_METHODS = {"auto": "the fast multipole method from FMM_MIN_PARTICLES(_RAW) particles on, else direct",
+                        "fmm": "the fast multipole method (direct with coincident points)",
+                        "direct": "the direct tiled sums"}
+
+
+def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps, newtonian_2d="auto"):
     """Velocities -sum_j m_j grad K(X_i - X_j) (shape (N, d)) and divergences -sum_j m_j Delta K(X_i - X_j).
 
     grad K is odd and Delta K even, so each pair i < j is evaluated once and added to both rows,
@@ -478,18 +505,19 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps)
     and their partners; the accumulators are then summed in a fixed order, on one thread below
     :data:`PARALLEL_MIN_PARTICLES` particles and on all of them above (the same sums either way).
     The 2D Newtonian kernel, raw or mollified by (4.2), takes a vectorised path with the same
-    accumulators (:func:`_newtonian_2d_sums`, exponentials from :mod:`.vector_exp`).
+    accumulators (:func:`_newtonian_2d_sums`, exponentials from :mod:`.vector_exp`), or the fast multipole
+    method (:mod:`.newtonian_fmm`), as ``newtonian_2d`` says (:data:`NEWTONIAN_2D_METHODS`).
     The arrays are those of :meth:`Kernel.arrays`; ``positions`` (N, d) and ``masses`` (N,) are checked here.
     """
+    one_of("newtonian_2d", newtonian_2d, NEWTONIAN_2D_METHODS)
     positions = np.ascontiguousarray(positions, dtype=np.float64)
     masses = np.ascontiguousarray(masses, dtype=np.float64)
     if positions.ndim != 2 or masses.shape != positions.shape[:1]:
         raise ValueError(f"positions must have shape (N, d) and masses (N,), got {positions.shape} and {masses.shape}")
     if not (np.isfinite(positions).all() and np.isfinite(masses).all()):
         raise ValueError("positions and masses must be finite")
-    if positions.shape[1] == 2 and ((kinds.size == 2 and np.all(kinds == GAUSS_LOG_2D))
-                                    or (kinds.size == 1 and kinds[0] == LOG)):
-        return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters)
+    if positions.shape[1] == 2 and is_newtonian_2d(kinds):
+        return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters, newtonian_2d)
     if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > _TABLE_REACH * steps.min():
         raise ValueError("positions spread over more than 2^40 steps of the kernel's radial table")
     if positions.shape[1] == 2 and tiled_2d_supported(kinds, parameters):
@@ -570,6 +598,12 @@ class Kernel:
         """Whether grad K jumps or blows up at 0 (a raw |x|^a/a with a <= 1, log|x| or e^{-|x|/lambda}
         term): the particle method's ODE then stops being defined where two particles meet."""
         return any(kind in (LOG, EXP) or (kind == POWER and a <= 1.0) for kind, a in zip(self.kinds, self.parameters))
+
+    @property
+    def max_particles(self) -> int:
+        """The most particles of one ODE solve with this kernel: :data:`~.checks.MAX_FMM_PARTICLES` for the 2D
+        Newtonian kernel (O(N) sums by the fast multipole method), :data:`~.checks.MAX_PARTICLES` otherwise."""
+        return MAX_FMM_PARTICLES if self.dimension == 2 and is_newtonian_2d(self.kinds) else MAX_PARTICLES
 
     @property
     def has_potential(self) -> bool:

@@ -9,7 +9,8 @@ grad K(0) := 0 (its density exists only where Delta K is a function).
 The ODE system is solved by scipy's DOP853 (explicit Runge-Kutta of order 8 with
 step control) at tolerances far below the method's error: the claims check that
 tightening them does not change the measured errors. A run holds at most
-:data:`~particle_methods.blob.checks.MAX_PARTICLES` particles, ends by
+:data:`~particle_methods.blob.checks.MAX_PARTICLES` particles (``MAX_FMM_PARTICLES`` with the 2D
+Newtonian kernel, whose sums are O(N)), ends by
 :data:`~particle_methods.blob.checks.MAX_TIME` and is refused past
 :data:`~particle_methods.blob.checks.MAX_EVALUATIONS` right-hand sides. In 1D, the particle
 method with a kernel whose gradient jumps at 0 (|x|/2) is defined only up to the first
@@ -34,9 +35,9 @@ from ..validation import (
     positive,
     same_length,
 )
-from .checks import MAX_EVALUATIONS, MAX_PARTICLES, MAX_STORED, MIN_DELTA_OVER_H, output_times
+from .checks import MAX_EVALUATIONS, MAX_FMM_PARTICLES, MAX_STORED, MIN_DELTA_OVER_H, output_times
 from .initial import as_data_1d, as_data_2d, grid_1d, grid_2d
-from .kernels import Kernel, kernel_1d, kernel_2d, pair_energy, pair_sums
+from .kernels import NEWTONIAN_2D_METHODS, Kernel, kernel_1d, kernel_2d, pair_energy, pair_sums
 from .mollifiers import mollifier
 
 #: The two methods of :func:`run_1d` and :func:`run_2d`.
@@ -117,21 +118,25 @@ def _collision_event(points, kernel: Kernel):
 
 
 def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, with_density: bool = True,
-                        rtol: float = 1e-12, atol: float = 1e-14, h: float | None = None) -> BlobRun:
+                        rtol: float = 1e-12, atol: float = 1e-14, h: float | None = None,
+                        newtonian_2d: str = "auto") -> BlobRun:
     """Integrate Definition 2.2 for ``kernel`` from particles at ``points`` (N, d) with densities0 and
     masses (N,): dX_i/dt = -sum_j m_j grad K(X_i - X_j) and, ``with_density``,
     d rho_i/dt = -div v_i rho_i, at the output ``times`` (strictly increasing from t >= 0; a single
     time 0 returns the initial state). Raises ValueError beyond the limits of
     :mod:`~particle_methods.blob.checks` and at the first collision of a 1D particle method whose
-    kernel's gradient jumps at 0 (a :class:`CollisionError`, carrying the time)."""
+    kernel's gradient jumps at 0 (a :class:`CollisionError`, carrying the time). ``newtonian_2d`` chooses
+    how the 2D Newtonian kernel's sums are taken (:data:`~particle_methods.blob.kernels.NEWTONIAN_2D_METHODS`)."""
     kernel = instance("kernel", kernel, Kernel)
     points = finite_array("points", points, ndim=2)
     n, dimension = points.shape
     if dimension != kernel.dimension:
         raise ValueError(f"points must have shape (N, {kernel.dimension}) for the kernel {kernel.name}, "
                          f"got {points.shape}")
-    if not 1 <= n <= MAX_PARTICLES:
-        raise ValueError(f"a run takes 1 to MAX_PARTICLES = {MAX_PARTICLES} particles (a limit on its work), got {n}")
+    if not 1 <= n <= kernel.max_particles:
+        limit = "MAX_FMM_PARTICLES" if kernel.max_particles == MAX_FMM_PARTICLES else "MAX_PARTICLES"
+        raise ValueError(f"a run with the kernel {kernel.name} takes 1 to {limit} = {kernel.max_particles} particles "
+                         f"(a limit on its work), got {n}")
     densities0, masses = finite_array("densities0", densities0), finite_array("masses", masses)
     same_length(points=points[:, 0], densities0=densities0, masses=masses)
     if np.any(masses < 0):
@@ -146,6 +151,7 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
         raise ValueError(f"rtol must lie in [{RTOL_RANGE[0]:.3g}, {RTOL_RANGE[1]:g}], got {rtol}")
     atol = positive("atol", atol)
     h = None if h is None else positive("h", h)
+    one_of("newtonian_2d", newtonian_2d, NEWTONIAN_2D_METHODS)
     if times[-1] == 0.0:
         return BlobRun(kernel, h, times, points[None], densities0[None] if with_density else None, masses, 0)
 
@@ -160,7 +166,7 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
                              f"(stopped at t = {t:.6g} of {times[-1]:.6g}): the system is too stiff for these "
                              "tolerances or the solver stalls")
         x = state[: n * dimension].reshape(n, dimension)
-        velocity, divergence = pair_sums(x, masses, *arrays)
+        velocity, divergence = pair_sums(x, masses, *arrays, newtonian_2d=newtonian_2d)
         if not with_density:
             derivative = velocity.ravel()
         else:

@@ -19,6 +19,8 @@ Terms with a = 1, W = c|x| (the Newtonian potential in 1D), have W' = c sign(z) 
 distributional W'' = 2c delta, so both convolutions are exact without piece integrals:
 (W' * rho_h)(t) = c (2 F_h(t) - M) with M = sum_k omega_k and F_h(t) = sum_k omega_k Phi((t - x_k)/h_k)
 the cumulative mass (Phi the CDF of phi, exact on each cubic piece), and (W'' * rho_h)(t) = 2c rho_h(t).
+F_h and rho_h take a prefix sum and the particles whose support holds the point, O(N log N) in all
+rather than a sum over pairs.
 
 The public :func:`convolutions`, :func:`density_at` and :func:`cumulative_mass_at` check every
 array before the compiled loops read it (unchecked, they would read past mismatched arrays) and
@@ -31,6 +33,7 @@ import numpy as np
 from numba import prange
 
 from ..jit import njit
+from ..threads import threads_for
 from ..validation import finite_array, finite_result
 from .checks import particle_arrays, piece_arrays, power_arrays
 
@@ -140,8 +143,9 @@ def _shape_cdf(s, breaks, pieces):
 
 
 @njit(parallel=True)
-def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
-    """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i."""
+def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, cumulative, density):
+    """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i; the terms with a = 1 from F_h and rho_h
+    at the targets (``cumulative``, ``density``, computed once by :func:`_cumulative_and_density`)."""
     first = np.zeros(targets.size)
     second = np.zeros(targets.size)
     total_mass = 0.0
@@ -163,16 +167,8 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
                 continue
             if a == 1.0:
                 # W' = c sign(z) and W'' = 2c delta: the cumulative mass F_h and rho_h itself, no piece integrals.
-                cumulative = 0.0
-                density = 0.0
-                for k in range(centres.size):
-                    s = (targets[i] - centres[k]) / widths[k]
-                    cumulative += weights[k] * _shape_cdf(s, breaks, pieces)
-                    value = _shape_value(s, breaks, pieces)
-                    if value != 0.0:
-                        density += weights[k] * value / widths[k]
-                f += c * (2.0 * cumulative - total_mass)
-                s2 += 2.0 * c * density
+                f += c * (2.0 * cumulative[i] - total_mass)
+                s2 += 2.0 * c * density[i]
                 continue
             term_first = 0.0
             term_second = 0.0
@@ -207,30 +203,71 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
     return first, second
 
 
-@njit(parallel=True)
-def _density_at(points, centres, weights, widths, breaks, pieces):
-    """rho_h(points) = sum_k omega_k phi((x - x_k)/h_k)/h_k."""
-    values = np.zeros(points.size)
-    for i in prange(points.size):
-        total = 0.0
-        for k in range(centres.size):
-            value = _shape_value((points[i] - centres[k]) / widths[k], breaks, pieces)
-            if value != 0.0:  # most particles miss the point: skip their division
-                total += weights[k] * value / widths[k]
-        values[i] = total
-    return values
+@njit
+def _edges_and_prefix(centres, weights, widths, breaks):
+    """Particles sorted by centre (order), their right edges x_k + r h_k sorted (with the prefix sums of
+    the weights in that order, Neumaier-compensated) and the largest half-width r max h_k."""
+    order = np.argsort(centres)
+    right = centres + breaks[-1] * widths
+    by_right = np.argsort(right)
+    prefix = np.zeros(centres.size + 1)
+    total = 0.0
+    compensation = 0.0
+    for m in range(centres.size):
+        w = weights[by_right[m]]
+        t = total + w
+        compensation += (total - t) + w if abs(total) >= abs(w) else (w - t) + total
+        total = t
+        prefix[m + 1] = total + compensation
+    return order, right, right[by_right], prefix, breaks[-1] * widths.max()
 
 
 @njit(parallel=True)
-def _cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
-    """F_h(points) = sum_k omega_k Phi((x - x_k)/h_k) = int_{-inf}^x rho_h."""
-    values = np.zeros(points.size)
+def _cumulative_and_density(points, centres, weights, widths, breaks, pieces):
+    """(F_h, rho_h) at every point, (2.27) and its integral, in O((N + P) log N + P w) for w particles
+    within the widest support of a point. F_h(t) = sum over particles whose support ends left of t (a
+    prefix sum over the sorted right edges) + sum_k omega_k Phi((t - x_k)/h_k) over the particles whose
+    support contains t, all of them among the centres within r max h_k of t."""
+    order, right, right_sorted, prefix, reach = _edges_and_prefix(centres, weights, widths, breaks)
+    sorted_centres = centres[order]
+    cumulative = np.zeros(points.size)
+    density = np.zeros(points.size)
     for i in prange(points.size):
-        total = 0.0
-        for k in range(centres.size):
-            total += weights[k] * _shape_cdf((points[i] - centres[k]) / widths[k], breaks, pieces)
-        values[i] = total
-    return values
+        t = points[i]
+        total = prefix[np.searchsorted(right_sorted, t, side="right")]
+        value = 0.0
+        for m in range(np.searchsorted(sorted_centres, t - reach), np.searchsorted(sorted_centres, t + reach,
+                                                                                    side="right")):
+            k = order[m]
+            if right[k] > t:  # the others are in the prefix sum
+                s = (t - centres[k]) / widths[k]
+                total += weights[k] * _shape_cdf(s, breaks, pieces)
+                shape = _shape_value(s, breaks, pieces)
+                if shape != 0.0:
+                    value += weights[k] * shape / widths[k]
+        cumulative[i] = total
+        density[i] = value
+    return cumulative, density
+
+
+#: Below this many targets the compiled loops run on one thread (:func:`particle_methods.threads.threads_for`;
+#: measured by benchmarks/bench_threads.py: the repository's LTP runs have 50 to 800 particles, and a step
+#: of 200 takes tens of microseconds, less than waking a second thread).
+PARALLEL_MIN_TARGETS = 1000
+
+
+def convolution_sums(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
+    """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) for arrays already checked (by :func:`convolutions`, or
+    once before the time loop of :func:`particle_methods.ltp.solver.simulate`, which checks every step's
+    results): the terms with a = 1 from F_h and rho_h (:func:`_cumulative_and_density`), the others by
+    the pair sums of :func:`_convolutions`."""
+    with threads_for(targets.size, PARALLEL_MIN_TARGETS):
+        if np.any(exponents == 1.0):
+            cumulative, density = _cumulative_and_density(targets, centres, weights, widths, breaks, pieces)
+        else:
+            cumulative = density = targets
+        return _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces,
+                             cumulative, density)
 
 
 OVERFLOW = "overflow: the particles are too narrow or too far from the points for double precision"
@@ -243,7 +280,7 @@ def convolutions(targets, centres, weights, widths, coefficients, exponents, bre
     centres, weights, widths = particle_arrays(centres, weights, widths)
     coefficients, exponents = power_arrays(coefficients, exponents)
     breaks, pieces = piece_arrays(breaks, pieces)
-    first, second = _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces)
+    first, second = convolution_sums(targets, centres, weights, widths, coefficients, exponents, breaks, pieces)
     return finite_result("W' * rho_h", first, OVERFLOW), finite_result("W'' * rho_h", second, OVERFLOW)
 
 
@@ -252,7 +289,9 @@ def density_at(points, centres, weights, widths, breaks, pieces):
     points = np.ascontiguousarray(finite_array("points", points))
     centres, weights, widths = particle_arrays(centres, weights, widths)
     breaks, pieces = piece_arrays(breaks, pieces)
-    return finite_result("rho_h", _density_at(points, centres, weights, widths, breaks, pieces), OVERFLOW)
+    with threads_for(points.size, PARALLEL_MIN_TARGETS):
+        _, density = _cumulative_and_density(points, centres, weights, widths, breaks, pieces)
+    return finite_result("rho_h", density, OVERFLOW)
 
 
 def cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
@@ -261,4 +300,6 @@ def cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
     points = np.ascontiguousarray(finite_array("points", points))
     centres, weights, widths = particle_arrays(centres, weights, widths)
     breaks, pieces = piece_arrays(breaks, pieces)
-    return finite_result("F_h", _cumulative_mass_at(points, centres, weights, widths, breaks, pieces), OVERFLOW)
+    with threads_for(points.size, PARALLEL_MIN_TARGETS):
+        cumulative, _ = _cumulative_and_density(points, centres, weights, widths, breaks, pieces)
+    return finite_result("F_h", cumulative, OVERFLOW)

@@ -31,7 +31,7 @@ from ..validation import (
 )
 from .checks import particle_arrays
 from .initial import InitialDensity, density_named, grid_particles
-from .kernels import OVERFLOW, _convolutions, convolutions, cumulative_mass_at, density_at
+from .kernels import OVERFLOW, convolution_sums, convolutions, cumulative_mass_at, density_at
 from .potentials import Potential
 from .shapes import Shape, shape_named
 
@@ -266,8 +266,8 @@ def simulate(initial, potential: Potential, h: float, dt: float, t_final: float,
     centres_out, widths_out, velocity_out = [], [], []
     for n in range(steps + 1):
         # the arrays were checked: by grid_particles, Shape, Potential, and after every step below
-        first, second = _convolutions(x, x, omega, widths, coefficients, exponents, reference.breaks,
-                                      reference.coefficients)
+        first, second = convolution_sums(x, x, omega, widths, coefficients, exponents, reference.breaks,
+                                         reference.coefficients)
         if not (np.all(np.isfinite(first)) and np.all(np.isfinite(second))):
             raise ValueError(f"W' * rho_h or W'' * rho_h is not finite at step {n} (t = {n * dt:.6g}): {OVERFLOW}")
         if n % every == 0 or n == steps:

@@ -1,0 +1,252 @@
+"""The 2D Newtonian pair sums in O(N): far field by a fast multipole method, near field by a cell list.
+
+For K = log|x|/(2 pi), raw (the particle method) or mollified by psi4 of (4.2), psi = sum_k w_k G_{s_k},
+
+    grad K_delta(x) = x sum_k c_k (1 - e^{-|x|^2/s_k^2}) / (2 pi |x|^2),
+    Delta K_delta(x) = sum_k c_k e^{-|x|^2/s_k^2} / (pi s_k^2),
+
+(c_k the kernel's coefficient times w_k, sum_k c_k = C), so grad K_delta is the raw field
+C x/(2 pi |x|^2) minus Gaussian terms. The raw part, -C/(2 pi) sum_{j != i} m_j (X_i - X_j)/|X_i - X_j|^2,
+is the gradient of a 2D Laplace potential with charges m_j: FMMLIB2D's ``lfmm2dparttarg``
+(through pyfmmlib) computes it in O(N) at requested precision ``FMM_PRECISION`` (1e-14 relative to the
+largest field value: 12 digits asked, measured below 1e-15 on the Figure 5 grids, ``benchmarks/bench_fmm.py``).
+The Gaussian terms are below 1e-18 of the raw term beyond ``GAUSS_CUTOFF`` widths s_max
+(e^{-6.5^2} = 4.5e-19), so they are summed exactly over the pairs closer than that, found with a
+cell list of side 6.5 s_max; so is the whole divergence, since the Laplacian of the raw kernel is a
+Dirac mass (its only share, the self term of i = j, is included). With delta = h^q the pairs within
+6.5 sqrt(2) delta of a particle number about pi (9.2 h^{q-1})^2 ~ h^{-0.2}: the near field stays O(N).
+
+The result equals the direct sums of :func:`particle_methods.blob.kernels.pair_sums` to rounding
+(tested to 1e-13 relative to the largest value); each particle's near sum is taken in a fixed order,
+so the near field is bit-identical on any number of threads. Coincident particles (which the FMM
+cannot take) are left to the direct sums by the caller.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import ctypes
+import functools
+import math
+
+import numba
+import numpy as np
+from numba import prange
+
+from ..jit import njit
+from ..threads import numba_threads
+from .vector_exp import exp_minus_and_complement
+
+#: FMMLIB2D's precision flag: 4 asks for 12 digits (1e-12 relative to the field's size).
+FMM_PRECISION = 4
+#: Beyond this many widths of the widest Gaussian, e^{-r^2/s^2} < 4.5e-19: the mollified kernel is the
+#: raw one in double precision (the same cut-off as the direct sums').
+GAUSS_CUTOFF = 6.5
+#: Below this many particles the near-field loop runs on one thread (measured, benchmarks/bench_threads.py).
+PARALLEL_MIN_PARTICLES = 2000
+
+
+@functools.cache
+def _lfmm2dpartself():
+    """FMMLIB2D's ``lfmm2dpartself`` from pyfmmlib's compiled library, called through ctypes: unlike
+    pyfmmlib's f2py wrapper, a ctypes call releases the interpreter's lock, so the FMM runs beside the
+    compiled near field. Fortran arguments: every one by reference, integers of 4 bytes."""
+    import pyfmmlib._internal  # here: the package loads without it until a large 2D Newtonian sum is asked for
+
+    function = ctypes.CDLL(pyfmmlib._internal.__file__).lfmm2dpartself_
+    integer, array = ctypes.POINTER(ctypes.c_int), np.ctypeslib.ndpointer(flags="C_CONTIGUOUS")
+    # ier, iprec, nsource, source, ifcharge, charge, ifdipole, dipstr, dipvec, ifpot, pot, ifgrad, grad, ifhess, hess
+    function.argtypes = [integer, integer, integer, array, integer, array, integer, array, array, integer, array,
+                         integer, array, integer, array]
+    function.restype = None
+    return function
+
+
+def far_field(positions, masses) -> np.ndarray:
+    """sum_{j != i} m_j (X_i - X_j) / |X_i - X_j|^2, shape (N, 2), by FMMLIB2D's Laplace FMM: the gradient
+    of the potential sum_{j != i} m_j log|x - X_j| at the sources. ``positions`` (N, 2) are finite, distinct
+    points and ``masses`` (N,) finite (checked by the caller)."""
+    n = masses.size
+    flags = [ctypes.c_int(value) for value in (0, FMM_PRECISION, n, 1, 0, 0, 1, 0)]
+    ier, iprec, count, yes, no = flags[0], flags[1], flags[2], flags[3], flags[4]
+    gradient = np.zeros((n, 2), dtype=np.complex128)
+    unused = np.zeros(max(3 * n, 1), dtype=np.complex128)
+    _lfmm2dpartself()(ctypes.byref(ier), ctypes.byref(iprec), ctypes.byref(count), np.ascontiguousarray(positions),
+                      ctypes.byref(yes), masses.astype(np.complex128), ctypes.byref(no), unused, np.zeros((n, 2)),
+                      ctypes.byref(no), unused, ctypes.byref(yes), gradient, ctypes.byref(no), unused)
+    if ier.value != 0:
+        raise RuntimeError(f"FMMLIB2D's lfmm2dpartself failed with error code {ier.value} (out of memory)")
+    return np.ascontiguousarray(gradient.real)
+
+
+@njit
+def _cell_keys(x, y, side):
+    """(key, column count) of each point's cell of the given side: key = row * columns + column (the
+    caller bounds the span of the points to 2^25 widths of the mollifier, :func:`kernels._check_span`, so
+    keys stay below 2^52)."""
+    x0, y0 = x.min(), y.min()
+    columns = int((x.max() - x0) / side) + 1
+    keys = np.empty(x.size, dtype=np.int64)
+    for i in range(x.size):
+        keys[i] = int((y[i] - y0) / side) * columns + int((x[i] - x0) / side)
+    return keys, columns
+
+
+#: Cells of the near-field list are 1/CELL_SPLIT of the cut-off wide: a particle's partners lie in the
+#: (2 CELL_SPLIT + 1)^2 cells around its own, 6.25 cut-off^2 of area for 2 against pi cut-off^2 needed.
+CELL_SPLIT = 2
+#: Particles are dealt to this many accumulators, round robin, whatever the number of threads.
+ACCUMULATORS = 16
+#: Largest number of particles in one row of (2 CELL_SPLIT + 1) cells (the buffers of a row's terms).
+_ROW_BUFFER = 4096
+
+
+@njit
+def _row_terms(xi, yi, x, y, lo, hi, g_weights, l_weights, inverse, cutoff2, wx, wy, wd, r2):
+    """Partners lo <= j < hi of a particle at (xi, yi): sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j) into (wx, wy)
+    and sum_k l_k e^{-a_k r^2} into wd, zero beyond the cut-off; loops without branches, so that LLVM
+    vectorises them (r2 is a buffer)."""
+    count = hi - lo
+    for j in range(count):
+        dx = xi - x[lo + j]
+        dy = yi - y[lo + j]
+        r2[j] = dx * dx + dy * dy
+        wx[j] = 0.0
+        wd[j] = 0.0
+    for k in range(inverse.size):
+        a, g, lap = inverse[k], g_weights[k], l_weights[k]
+        for j in range(count):
+            e, _ = exp_minus_and_complement(r2[j] * a)
+            wx[j] += g * e
+            wd[j] += lap * e
+    for j in range(count):
+        inside = 1.0 if r2[j] < cutoff2 else 0.0
+        g = inside * wx[j] / (r2[j] + 1e-300)
+        wx[j] = g * (xi - x[lo + j])
+        wy[j] = g * (yi - y[lo + j])
+        wd[j] *= inside
+
+
+@njit
+def _row_share(masses, start, count, wx, wy, wd):
+    """sum_j m_j (wx_j, wy_j, wd_j) over a row, in two interleaved partial sums (even and odd j: a fixed
+    order that does not wait on the latency of one chain of additions)."""
+    x0 = x1 = y0 = y1 = d0 = d1 = 0.0
+    k = 0
+    while k + 1 < count:
+        m0, m1 = masses[start + k], masses[start + k + 1]
+        x0 += m0 * wx[k]
+        y0 += m0 * wy[k]
+        d0 += m0 * wd[k]
+        x1 += m1 * wx[k + 1]
+        y1 += m1 * wy[k + 1]
+        d1 += m1 * wd[k + 1]
+        k += 2
+    if k < count:
+        m0 = masses[start + k]
+        x0 += m0 * wx[k]
+        y0 += m0 * wy[k]
+        d0 += m0 * wd[k]
+    return x0 + x1, y0 + y1, d0 + d1
+
+
+@njit
+def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div):
+    """Accumulator c: the particles i = c mod ACCUMULATORS (sorted by cell key) and their partners j > i in
+    the cells of their own and the next CELL_SPLIT rows; each pair is evaluated once and added to both."""
+    n = x.size
+    wx = np.empty(_ROW_BUFFER)
+    wy = np.empty(_ROW_BUFFER)
+    wd = np.empty(_ROW_BUFFER)
+    r2 = np.empty(_ROW_BUFFER)
+    self_term = 0.0
+    for k in range(l_weights.size):
+        self_term += l_weights[k]
+    for i in range(c, n, ACCUMULATORS):
+        row, column = keys[i] // columns, keys[i] % columns
+        mi = masses[i]
+        sx = sy = sd = 0.0
+        for r in range(row, row + CELL_SPLIT + 1):
+            stop = np.searchsorted(keys, r * columns + min(column + CELL_SPLIT, columns - 1), side="right")
+            lo = i + 1 if r == row else np.searchsorted(keys, r * columns + max(column - CELL_SPLIT, 0))
+            for start in range(lo, stop, _ROW_BUFFER):
+                hi = min(start + _ROW_BUFFER, stop)
+                _row_terms(x[i], y[i], x, y, start, hi, g_weights, l_weights, inverse, cutoff2, wx, wy, wd, r2)
+                tx, ty, td = _row_share(masses, start, hi - start, wx, wy, wd)
+                sx += tx
+                sy += ty
+                sd += td
+                for j in range(hi - start):
+                    vx[c, start + j] -= mi * wx[j]
+                    vy[c, start + j] -= mi * wy[j]
+                    div[c, start + j] -= mi * wd[j]
+        vx[c, i] += sx
+        vy[c, i] += sy
+        div[c, i] -= sd + mi * self_term
+
+
+@njit(parallel=True)
+def _near_sums(x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2):
+    """Gaussian share of grad K_delta and the divergence, for points sorted by cell key:
+    v_i = sum_j m_j sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j), div_i = -sum_j m_j sum_k l_k e^{-a_k r^2}
+    over the pairs with r^2 < cutoff2 (i = j included in div), each pair evaluated once, in
+    ACCUMULATORS accumulators summed in a fixed order: the same sums on any number of threads."""
+    n = x.size
+    vx = np.zeros((ACCUMULATORS, n))
+    vy = np.zeros((ACCUMULATORS, n))
+    div = np.zeros((ACCUMULATORS, n))
+    for c in prange(ACCUMULATORS):
+        _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div)
+    sx, sy, sd = np.zeros(n), np.zeros(n), np.zeros(n)
+    for c in range(ACCUMULATORS):
+        sx += vx[c]
+        sy += vy[c]
+        sd += div[c]
+    return sx, sy, sd
+
+
+@functools.cache
+def _fmm_pool() -> concurrent.futures.ThreadPoolExecutor:
+    """The one thread that runs the FMM beside the near field, started on first use."""
+    return concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="fmm")
+
+
+def newtonian_sums(positions, masses, coefficients, widths):
+    """Velocities -sum_j m_j grad K(X_i - X_j) (N, 2) and divergences -sum_j m_j Delta K(X_i - X_j) of the
+    2D Newtonian kernel: raw C log|x|/(2 pi) when ``widths`` is empty (``coefficients`` = (C,)), else the
+    Gaussian terms (c_k, s_k) of its mollification (4.2). Inputs are checked by the caller
+    (:func:`particle_methods.blob.kernels.pair_sums`): finite (N, 2) positions without coincident
+    points, finite masses, widths within the vectorised exponential's range.
+
+    With two threads or more (and :data:`PARALLEL_MIN_PARTICLES` particles), the FMM runs on one thread
+    while the near field runs on the others: the two take about the same time."""
+    total = float(np.sum(coefficients))
+    if widths.size == 0:
+        return (-total / (2 * math.pi)) * far_field(positions, masses), np.zeros(masses.size)
+    inverse = 1.0 / np.asarray(widths, dtype=np.float64) ** 2
+    g_weights = np.asarray(coefficients, dtype=np.float64) / (2 * math.pi)
+    l_weights = np.asarray(coefficients, dtype=np.float64) * inverse / math.pi
+    cutoff = GAUSS_CUTOFF * float(np.max(widths))
+    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
+    keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
+    order = np.argsort(keys, kind="stable")
+    arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
+                 cutoff * cutoff)
+    threads = numba.get_num_threads() if x.size >= PARALLEL_MIN_PARTICLES else 1
+    if threads == 1:
+        field = far_field(positions, masses)
+        with numba_threads(1):
+            vx, vy, div = _near_sums(*arguments)
+    else:
+        # The FMM holds the interpreter's lock all along, in the pool's thread; this thread enters the
+        # compiled near field (nogil) microseconds later, before the pool's thread can take the lock.
+        far = _fmm_pool().submit(far_field, positions, masses)
+        with numba_threads(threads - 1):
+            vx, vy, div = _near_sums(*arguments)
+        field = far.result()
+    velocity = (-total / (2 * math.pi)) * field
+    velocity[order, 0] += vx
+    velocity[order, 1] += vy
+    divergence = np.empty(masses.size)
+    divergence[order] = div
+    return velocity, divergence
