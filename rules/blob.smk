@@ -219,10 +219,32 @@ rule blob_claims:
         "../scripts/blob/claims.py"
 
 
-rule blob_fig5_data:
-    """Figure 5: 2D errors for the Newtonian kernel, blob and particle methods."""
+rule blob_fig5_case:
+    """Figure 5, one of its cases (blob or particle method, regular or disk data) at every h: one
+    job per case, so that the three run side by side with other jobs."""
     input:
         code=imports("blob/fig5_data.py"),
+    output:
+        "results/blob/fig5/case{index}.npz",
+    log:
+        "logs/blob/fig5_case{index}.log",
+    benchmark:
+        "logs/benchmarks/blob_fig5_case_{index}.tsv"
+    conda:
+        ENVIRONMENT
+    threads: 1
+    params:
+        cfg=BLOB["fig5"],
+        index=lambda wildcards: int(wildcards.index),
+    script:
+        "../scripts/blob/fig5_data.py"
+
+
+rule blob_fig5_data:
+    """Figure 5: the errors of its cases in one result."""
+    input:
+        cases=expand("results/blob/fig5/case{index}.npz", index=range(len(BLOB["fig5"]["cases"]))),
+        code=imports("blob/fig5_merge.py"),
     output:
         "results/blob/fig5.npz",
     log:
@@ -235,7 +257,7 @@ rule blob_fig5_data:
     params:
         cfg=BLOB["fig5"],
     script:
-        "../scripts/blob/fig5_data.py"
+        "../scripts/blob/fig5_merge.py"
 
 
 rule blob_fig5:
@@ -256,6 +278,27 @@ rule blob_fig5:
         caption=caption(BLOB_CAPTIONS, "fig5"),
     script:
         "../scripts/blob/plot_fig5.py"
+
+
+rule blob_fig5_orders:
+    """Figure 5's pairwise orders for the report, with those of the opt-in overlay
+    config/fig5-extended.yaml when its results exist (rerun this rule after running the overlay)."""
+    input:
+        data="results/blob/fig5.npz",
+        code=imports("blob/fig5_orders.py"),
+    output:
+        "results/blob/fig5_orders.tex",
+    log:
+        "logs/blob/fig5_orders.log",
+    benchmark:
+        "logs/benchmarks/blob_fig5_orders.tsv"
+    conda:
+        ENVIRONMENT
+    threads: 1
+    params:
+        extended=source(ROOT / "runs" / "fig5-extended" / "results" / "blob" / "fig5.npz"),
+    script:
+        "../scripts/blob/fig5_orders.py"
 
 
 rule blob_fig6_data:

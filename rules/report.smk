@@ -45,8 +45,6 @@ rule verify:
         expected=VERDICTS,
     log:
         "logs/verify.log",
-    benchmark:
-        "logs/benchmarks/verify.tsv"
     conda:
         ENVIRONMENT
     threads: 1
@@ -176,7 +174,7 @@ rule manuscript:
         source=source(ROOT / "paper" / "ms.tex"),
         snippets=SNIPPETS,
         figures=[*STICKY_FIGURES, *LTP_FIGURES, *BLOB_FIGURES, *CROSS_FIGURES],
-        tables=["results/cross/table.tex"],
+        tables=["results/cross/table.tex", "results/blob/fig5_orders.tex"],
     output:
         "paper/ms.pdf",
     log:

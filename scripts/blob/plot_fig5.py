@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from particle_methods.convergence import fit_order
+from particle_methods.convergence import fit_order, pairwise_orders
 from particle_methods.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure
 from particle_methods.workflow import load_results, logged
 
@@ -16,11 +16,16 @@ def run(d, t, output):
     k = int(d["fit_points"])
     h = d["h_values"]
     for index, (ax, label) in enumerate(zip(np.atleast_1d(axes), labels)):
-        for part, style in (("trajectory", "o-"), ("density", "s--")):
+        for part, style, offset in (("trajectory", "o-", -9), ("density", "s--", 5)):
             errors = d[f"case{index}_{part}"]
             if np.all(np.isnan(errors)):
                 continue
-            ax.loglog(h, errors, style, ms=3.5, label=f"{part} {fit_order(h[-k:], errors[-k:]):.2f}")
+            (line,) = ax.loglog(h, errors, style, ms=3.5, label=f"{part} {fit_order(h[-k:], errors[-k:]):.2f}")
+            # the pairwise order of each step, at the middle of its segment
+            for (h0, h1), (e0, e1), value in zip(zip(h[:-1], h[1:]), zip(errors[:-1], errors[1:]),
+                                                 pairwise_orders(h, errors)):
+                ax.annotate(f"{value:.2f}", (np.sqrt(h0 * h1), np.sqrt(e0 * e1)), xytext=(0, offset),
+                            textcoords="offset points", ha="center", fontsize=5.5, color=line.get_color())
         ax.set(xlabel="$h$")
         label_h_axis(ax, h)
         ax.tick_params(axis="x", labelsize=8)
@@ -32,7 +37,7 @@ def run(d, t, output):
     first.set_ylim(low, high * (high / low) ** 0.4)   # room for the legends above the data
     first.set_ylabel(f"$L^1_h$ error at $t = {t:g}$")
     fig.suptitle(rf"2D, $K = \log|x|/(2\pi)$, $\delta = h^{{{float(d['q']):g}}}$; legends: orders fitted on the {k} "
-                 "finest $h$")
+                 "finest $h$; small numbers: pairwise orders")
     save_figure(fig, output.pdf, output.png)
 
 

@@ -471,15 +471,17 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths, method):
     """Pair sums of the 2D Newtonian kernel, raw (one LOG term: the particle method) or mollified
     (two GAUSS_LOG_2D terms, (4.2)). From :data:`FMM_MIN_PARTICLES` (raw: :data:`FMM_MIN_PARTICLES_RAW`)
     distinct points on, by the fast multipole method and a near-field cell list (:mod:`.newtonian_fmm`,
-    O(N)); below, or with coincident points, directly, split into loops that vectorise: the forces of a
-    row tile, then the partners' share and the row's share (summed in a fixed order)."""
+    O(N)); below, or with coincident or nearly coincident points, directly, split into loops that
+    vectorise: the forces of a row tile, then the partners' share and the row's share (summed in a
+    fixed order)."""
     if kinds[0] != LOG:
         _check_span(positions, widths)
     threshold = FMM_MIN_PARTICLES_RAW if kinds[0] == LOG else FMM_MIN_PARTICLES
     fast = positions.shape[0] >= threshold if method == "auto" else method == "fmm"
     if fast and not _coincident(positions):
-        return newtonian_fmm.newtonian_sums(positions, masses, coefficients,
-                                            np.zeros(0) if kinds[0] == LOG else widths)
+        sums = newtonian_fmm.newtonian_sums(positions, masses, coefficients, np.zeros(0) if kinds[0] == LOG else widths)
+        if sums is not None:  # None: two particles far closer than the mollifier's width (see newtonian_sums)
+            return sums
     if kinds[0] == LOG:
         constants = (0.0, coefficients[0] / (2 * math.pi), 0.0, 0.0, 0.0, 0.0, 0.0)
         self_lap = 0.0

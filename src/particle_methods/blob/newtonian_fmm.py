@@ -42,6 +42,10 @@ FMM_PRECISION = 4
 #: Beyond this many widths of the widest Gaussian, e^{-r^2/s^2} < 4.5e-19: the mollified kernel is the
 #: raw one in double precision (the same cut-off as the direct sums').
 GAUSS_CUTOFF = 6.5
+#: Two particles closer than this fraction of the narrowest Gaussian's width send the sums to the direct
+#: path: the raw field of the pair and its correction cancel, leaving about eps s / (N r) of the field
+#: (3e-12 at r = 1e-8 for N = 1,246, delta = h^0.9, h = 1/20; below 1e-15 at r = 1e-3 s on the grids of Figure 5).
+CLOSE_FRACTION = 1.0e-3
 #: Below this many particles the near-field loop runs on one thread (measured, benchmarks/bench_threads.py).
 PARALLEL_MIN_PARTICLES = 2000
 
@@ -151,9 +155,10 @@ def _row_share(masses, start, count, wx, wy, wd):
 
 
 @njit
-def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div):
+def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div, closest):
     """Accumulator c: the particles i = c mod ACCUMULATORS (sorted by cell key) and their partners j > i in
-    the cells of their own and the next CELL_SPLIT rows; each pair is evaluated once and added to both."""
+    the cells of their own and the next CELL_SPLIT rows; each pair is evaluated once and added to both.
+    closest[c] gets the smallest squared distance of these pairs."""
     n = x.size
     wx = np.empty(_ROW_BUFFER)
     wy = np.empty(_ROW_BUFFER)
@@ -173,6 +178,8 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
                 hi = min(start + _ROW_BUFFER, stop)
                 _row_terms(x[i], y[i], x, y, start, hi, g_weights, l_weights, inverse, cutoff2, wx, wy, wd, r2)
                 tx, ty, td = _row_share(masses, start, hi - start, wx, wy, wd)
+                for j in range(hi - start):
+                    closest[c] = min(closest[c], r2[j])
                 sx += tx
                 sy += ty
                 sd += td
@@ -190,19 +197,22 @@ def _near_sums(x, y, masses, keys, columns, g_weights, l_weights, inverse, cutof
     """Gaussian share of grad K_delta and the divergence, for points sorted by cell key:
     v_i = sum_j m_j sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j), div_i = -sum_j m_j sum_k l_k e^{-a_k r^2}
     over the pairs with r^2 < cutoff2 (i = j included in div), each pair evaluated once, in
-    ACCUMULATORS accumulators summed in a fixed order: the same sums on any number of threads."""
+    ACCUMULATORS accumulators summed in a fixed order: the same sums on any number of threads. Also the
+    smallest squared distance between two particles closer than the cut-off (inf when there is none)."""
     n = x.size
+    closest = np.full(ACCUMULATORS, np.inf)
     vx = np.zeros((ACCUMULATORS, n))
     vy = np.zeros((ACCUMULATORS, n))
     div = np.zeros((ACCUMULATORS, n))
     for c in prange(ACCUMULATORS):
-        _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div)
+        _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div,
+                         closest)
     sx, sy, sd = np.zeros(n), np.zeros(n), np.zeros(n)
     for c in range(ACCUMULATORS):
         sx += vx[c]
         sy += vy[c]
         sd += div[c]
-    return sx, sy, sd
+    return sx, sy, sd, closest.min()
 
 
 @functools.cache
@@ -219,7 +229,11 @@ def newtonian_sums(positions, masses, coefficients, widths):
     points, finite masses, widths within the vectorised exponential's range.
 
     With two threads or more (and :data:`PARALLEL_MIN_PARTICLES` particles), the FMM runs on one thread
-    while the near field runs on the others: the two take about the same time."""
+    while the near field runs on the others: the two take about the same time.
+
+    Returns None when two particles are closer than :data:`CLOSE_FRACTION` times the narrowest width: the
+    raw field of the pair, m/(2 pi r), and its Gaussian correction then cancel to a few digits, and the
+    caller takes the direct sums, which compute 1 - e^{-r^2/s^2} without cancellation."""
     total = float(np.sum(coefficients))
     if widths.size == 0:
         return (-total / (2 * math.pi)) * far_field(positions, masses), np.zeros(masses.size)
@@ -236,14 +250,16 @@ def newtonian_sums(positions, masses, coefficients, widths):
     if threads == 1:
         field = far_field(positions, masses)
         with numba_threads(1):
-            vx, vy, div = _near_sums(*arguments)
+            vx, vy, div, closest = _near_sums(*arguments)
     else:
         # The FMM holds the interpreter's lock all along, in the pool's thread; this thread enters the
         # compiled near field (nogil) microseconds later, before the pool's thread can take the lock.
         far = _fmm_pool().submit(far_field, positions, masses)
         with numba_threads(threads - 1):
-            vx, vy, div = _near_sums(*arguments)
+            vx, vy, div, closest = _near_sums(*arguments)
         field = far.result()
+    if closest < (CLOSE_FRACTION * float(np.min(widths))) ** 2:
+        return None
     velocity = (-total / (2 * math.pi)) * field
     velocity[order, 0] += vx
     velocity[order, 1] += vy

@@ -1,0 +1,45 @@
+"""Figure 5's pairwise orders as a LaTeX table for the report: the run's own, and those of the opt-in
+overlay config/fig5-extended.yaml (h down to 1/160) when its results exist."""
+
+from pathlib import Path
+
+import numpy as np
+
+from particle_methods.convergence import fit_order, pairwise_orders
+from particle_methods.report import tex
+from particle_methods.workflow import load_results, logged, progress
+
+PARTS = ("trajectory", "density")
+
+
+def table(d, title) -> str:
+    """One tabular: a row per case and quantity, the pairwise order of each step of h, the fit on the finest."""
+    h, k = d["h_values"], int(d["fit_points"])
+    steps = " & ".join(f"{1 / a:.0f}--{1 / b:.0f}" for a, b in zip(h[:-1], h[1:]))
+    rows = []
+    for index, label in enumerate(d["labels"]):
+        for part in PARTS:
+            errors = d[f"case{index}_{part}"]
+            if np.all(np.isnan(errors)):
+                continue
+            cells = " & ".join(f"{value:.2f}" for value in pairwise_orders(h, errors))
+            rows.append(f"{tex(str(label))}, {part} & {cells} & {fit_order(h[-k:], errors[-k:]):.2f} \\\\\n")
+    columns = "l" + "r" * h.size
+    return (f"\\noindent {title}\\par\\nopagebreak\n{{\\footnotesize\\begin{{tabular}}{{@{{}}{columns}@{{}}}}"
+            f"\\toprule case & \\multicolumn{{{h.size - 1}}}{{c}}{{pairwise order, $1/h$ from -- to}} & fit \\\\\n"
+            f" & {steps} & {k} finest \\\\ \\midrule\n" + "".join(rows) + "\\bottomrule\\end{tabular}}\\par\\medskip\n")
+
+
+def run(data, extended, output):
+    text = table(load_results(data), "This run:")
+    if Path(extended).exists():
+        progress(f"overlay results found: {extended}")
+        text += table(load_results(extended), "The overlay \\texttt{config/fig5-extended.yaml}:")
+    else:
+        text += ("\\noindent The overlay \\texttt{config/fig5-extended.yaml} (to $h = 1/160$) has not been run "
+                 "with this build.\\par\n")
+    Path(output).write_text(text)
+
+
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+    run(snakemake.input.data, snakemake.params.extended, snakemake.output[0])  # noqa: F821

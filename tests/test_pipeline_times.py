@@ -1,0 +1,93 @@
+"""The pure functions of benchmarks/pipeline_times.py: benchmark files, job graph, critical path."""
+
+import importlib.util
+from pathlib import Path
+
+import pytest
+
+SCRIPT = Path(__file__).resolve().parent.parent / "benchmarks" / "pipeline_times.py"
+spec = importlib.util.spec_from_file_location("pipeline_times", SCRIPT)
+pipeline_times = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(pipeline_times)
+
+HEADER = "s\th:m:s\tmax_rss\tmax_vms\tmax_uss\tmax_pss\tio_in\tio_out\tmean_load\tcpu_time\n"
+
+
+def row(seconds):
+    return f"{seconds:.2f}\t0:00:00\t120.5\t800.1\t100.0\t110.0\t0.00\t1.20\t95.00\t{seconds:.2f}\n"
+
+
+def test_read_benchmarks(tmp_path):
+    (tmp_path / "blob_newtonian_data_fig2.tsv").write_text(HEADER + row(12.5))
+    (tmp_path / "sticky_cost.tsv").write_text(HEADER + row(3.0) + row(5.0))  # benchmark: repeat(..., 2)
+    (tmp_path / "empty.tsv").write_text(HEADER)
+    (tmp_path / "notes.txt").write_text("not a benchmark")
+    assert pipeline_times.read_benchmarks(tmp_path) == {"blob_newtonian_data_fig2": 12.5, "sticky_cost": 4.0}
+    assert pipeline_times.read_benchmarks(tmp_path / "missing") == {}
+
+
+def test_benchmark_name_sorts_wildcards_by_name():
+    assert pipeline_times.benchmark_name("all", {}) == "all"
+    assert pipeline_times.benchmark_name("rule", {"size": "80", "case": "shocks"}) == "rule_shocks_80"
+
+
+DRY_RUN = """\
+Building DAG of jobs...
+[Tue Dec  1 21:18:49 2026]
+rule sticky_psystem_data:
+    input: ../../src/particle_methods/sticky/psystem.py
+    output: results/sticky/shocks.npz
+    log: logs/sticky/shocks_data.log
+    jobid: 7
+    benchmark: logs/benchmarks/sticky_psystem_data_shocks.tsv
+    reason: Forced execution
+    wildcards: case=shocks
+    resources: tmpdir=/tmp
+[Tue Dec  1 21:18:49 2026]
+rule sticky_psystem_figure:
+    input: results/sticky/shocks.npz, ../../src/particle_methods/plotting.py
+    output: figures/sticky/fig6.pdf, figures/sticky/fig6.png
+    jobid: 9
+    wildcards: case=shocks, figure=fig6
+[Tue Dec  1 21:18:49 2026]
+localrule all:
+    input: figures/sticky/fig6.pdf, figures/sticky/fig6.png, results/sticky/shocks.npz
+    jobid: 0
+    reason: Forced execution
+Job stats:
+job                        count
+"""
+
+
+def test_parse_dry_run():
+    jobs, edges = pipeline_times.parse_dry_run(DRY_RUN)
+    assert jobs == {7: ("sticky_psystem_data", {"case": "shocks"}),
+                    9: ("sticky_psystem_figure", {"case": "shocks", "figure": "fig6"}),
+                    0: ("all", {})}
+    assert edges == [(7, 0), (7, 9), (9, 0)]
+
+
+def test_critical_path_of_a_diamond_and_a_chain():
+    # a -> (b | c) -> d -> e, and the separate chain x -> y: the slow branch b wins, the chain is shorter
+    durations = {"a": 1.0, "b": 5.0, "c": 2.0, "d": 1.0, "e": 1.0, "x": 3.0, "y": 4.0}
+    edges = [("a", "b"), ("a", "c"), ("b", "d"), ("c", "d"), ("d", "e"), ("x", "y")]
+    assert pipeline_times.critical_path(durations, edges) == (8.0, ["a", "b", "d", "e"])
+    assert pipeline_times.lower_bound(sum(durations.values()), 8.0, cores=2) == 17.0 / 2
+    assert pipeline_times.lower_bound(sum(durations.values()), 8.0, cores=4) == 8.0
+
+
+def test_critical_path_follows_edges_against_the_order_of_the_durations():
+    # Taking jobs in the order given (c before its predecessors), or dropping edges, would give 5 s (a alone).
+    durations = {"c": 1.0, "b": 1.0, "a": 5.0}
+    assert pipeline_times.critical_path(durations, [("b", "c"), ("a", "b")]) == (7.0, ["a", "b", "c"])
+
+
+def test_critical_path_counts_jobs_without_benchmark_as_zero():
+    assert pipeline_times.critical_path({"data": 2.0, "figure": 3.0}, [("data", "figure"), ("figure", "all")]) == (
+        5.0, ["data", "figure", "all"])
+    assert pipeline_times.critical_path({}, []) == (0.0, [])
+
+
+def test_critical_path_rejects_a_cycle():
+    with pytest.raises(ValueError, match="cycle"):
+        pipeline_times.critical_path({"a": 1.0, "b": 1.0}, [("a", "b"), ("b", "a")])
