@@ -5,10 +5,11 @@
 1. The LTP workload of issue 25 (three runs of rho1 with W = x^2/2, h = 0.04, 0.02, 0.01, dt = 1e-4, to
    t = 0.5), in a fresh process with the default threads, timed after a warm-up run: alone, then two
    such processes started together. Each should take at most 1.3 times as long as one alone.
-2. The compiled kernels on one thread and on all (numba's threads), against the problem size: the LTP
-   convolutions (W = |x|^3/3, pair sums), the direct 2D blob sums (mollified Newtonian kernel) and the
-   FMM's near field. The PARALLEL_MIN_* constant of each family is read off where two threads start to
-   pay (they are printed beside the table).
+2. The compiled kernels on one thread and on two, against the problem size, alone and with a second
+   process running the same beside it: the LTP convolutions (W = |x|^3/3, pair sums), the direct 2D blob
+   sums (mollified Newtonian kernel) and the FMM path (FMM beside the near field). Alone, two threads pay
+   almost from the smallest size; under load, two threads per process fight over two cores and lose
+   below some size: the PARALLEL_MIN_* constant of each family is read off there.
 """
 
 import subprocess
@@ -44,26 +45,49 @@ def side_by_side():
           f"{together[1]:.3f} s: {max(together) / alone:.2f} times one alone (at most 1.3 wanted)")
 
 
-def scaling(name, module, constant, make, sizes):
-    """Times of one kernel family on one thread and on all, with its threshold set to 1 meanwhile (so that
-    the kernel really runs on the threads asked for)."""
-    threads, threshold = numba.get_num_threads(), getattr(module, constant)
+FAMILIES = {}
+
+
+def family(module, constant):
+    """Register a kernel family: its module, the name of its threshold constant, and a function of the size
+    that makes a call."""
+    def register(make):
+        FAMILIES[make.__name__] = (module, constant, make)
+        return make
+    return register
+
+
+def worker(name, threads, sizes):
+    """Times of one family at each size on ``threads`` threads, with its threshold set to 1 (so that the kernel
+    really runs on the threads asked for); printed on one line."""
+    import importlib
+
+    module_name, constant, make = FAMILIES[name]
+    module = importlib.import_module(module_name)
     setattr(module, constant, 1)
-    cells = []
-    try:
-        for size in sizes:
-            call = make(size)
-            times = []
-            for count in (1, threads):
-                numba.set_num_threads(count)
-                times.append(best_time(call, 5)[0])
-            numba.set_num_threads(threads)
-            cells.append(f"{size}: {1e3 * times[0]:.3g}/{1e3 * times[1]:.3g}")
-    finally:
-        setattr(module, constant, threshold)
-    print(f"{name} (ms on 1/{threads} threads; {constant} = {threshold}):\n  " + ", ".join(cells))
+    numba.set_num_threads(threads)
+    print(" ".join(f"{best_time(make(size), 5)[0]:.6g}" for size in sizes), flush=True)
 
 
+def scaling(name, sizes):
+    """One family alone (one process) and under load (two processes side by side), on one thread and on two:
+    the threshold is where two threads still pay under load."""
+    module_name, constant, _ = FAMILIES[name]
+    threshold = getattr(__import__(module_name, fromlist=[constant]), constant)
+
+    def run(threads, processes):
+        command = [sys.executable, __file__, "--worker", name, str(threads), *map(str, sizes)]
+        started = [subprocess.Popen(command, stdout=subprocess.PIPE, text=True) for _ in range(processes)]
+        return np.max([[float(v) for v in p.communicate()[0].split()] for p in started], axis=0)
+
+    print(f"{name} ({module_name}.{constant} = {threshold}); ms on 1/2 threads, alone | two processes side by side:")
+    alone = (run(1, 1), run(2, 1))
+    loaded = (run(1, 2), run(2, 2))
+    print("  " + ", ".join(f"{size}: {1e3 * a1:.3g}/{1e3 * a2:.3g} | {1e3 * l1:.3g}/{1e3 * l2:.3g}"
+                           for size, a1, a2, l1, l2 in zip(sizes, *alone, *loaded)))
+
+
+@family("particle_methods.ltp.kernels", "PARALLEL_MIN_TARGETS")
 def ltp_convolutions(size):
     from particle_methods.ltp import kernels
     from particle_methods.ltp.shapes import shape_named
@@ -76,6 +100,7 @@ def ltp_convolutions(size):
                                         shape.coefficients)
 
 
+@family("particle_methods.blob.kernels", "PARALLEL_MIN_PARTICLES")
 def blob_direct(size):
     from particle_methods.blob.kernels import kernel_2d, pair_sums
     from particle_methods.blob.mollifiers import mollifier
@@ -87,6 +112,7 @@ def blob_direct(size):
     return lambda: pair_sums(points, masses, *arrays, newtonian_2d="direct")
 
 
+@family("particle_methods.blob.newtonian_fmm", "PARALLEL_MIN_PARTICLES")
 def fmm_near(size):
     from particle_methods.blob.kernels import kernel_2d, pair_sums
     from particle_methods.blob.mollifiers import mollifier
@@ -101,18 +127,14 @@ def fmm_near(size):
 
 
 def main():
-    from particle_methods.blob import kernels as blob_kernels
-    from particle_methods.blob import newtonian_fmm
-    from particle_methods.ltp import kernels as ltp_kernels
-
+    if len(sys.argv) > 1 and sys.argv[1] == "--worker":
+        worker(sys.argv[2], int(sys.argv[3]), [int(v) for v in sys.argv[4:]])
+        return
     side_by_side()
     start = time.perf_counter()
-    scaling("LTP convolutions, |x|^3/3", ltp_kernels, "PARALLEL_MIN_TARGETS", ltp_convolutions,
-            (50, 100, 200, 400, 800, 1600, 3200))
-    scaling("blob direct 2D sums, Newtonian m = 4", blob_kernels, "PARALLEL_MIN_PARTICLES", blob_direct,
-            (128, 256, 512, 1024, 2048))
-    scaling("2D Newtonian sums by the FMM (near field on the threads but one)", newtonian_fmm,
-            "PARALLEL_MIN_PARTICLES", fmm_near, (500, 1000, 2000, 4000, 8000))
+    scaling("ltp_convolutions", (50, 100, 200, 400, 800, 1600, 3200))
+    scaling("blob_direct", (128, 256, 512, 1024, 2048))
+    scaling("fmm_near", (1000, 2000, 4000, 8000))
     print(f"({time.perf_counter() - start:.1f} s)")
 
 

@@ -1,10 +1,13 @@
 """Threads of the compiled kernels and of the numerical libraries: one mechanism for the package.
 
-Numba's parallel kernels, BLAS and OpenMP libraries (pyfmmlib's FMM) each start a pool of
-threads as large as the machine. Two processes sharing the cores then run twice as many busy
-threads as there are cores, and each parallel region waits for a thread that is not scheduled:
-on 2 cores, three short LTP runs took 20x to 126x longer side by side than alone. Hence:
+Numba's parallel kernels, BLAS and OpenMP libraries each start a pool of threads as large as the
+machine. Two processes sharing the cores then run twice as many busy threads as there are cores, and
+each parallel region waits for a thread that is not scheduled: on 2 cores, three short LTP runs took
+20x to 126x longer side by side than alone. Hence:
 
+- OpenMP's threads sleep rather than spin while they wait (``OMP_WAIT_POLICY=PASSIVE`` unless set,
+  :mod:`particle_methods.jit`): a parallel call under load then costs what it costs alone, not a time
+  slice of the other process;
 - :func:`use_threads` sets the threads of numba and of every loaded BLAS/OpenMP library at once,
   clamped to what the process may use (``NUMBA_NUM_THREADS`` when the user set it, else the
   cores). Every pipeline script calls it first with the rule's ``threads`` (:func:`from_rule`).
