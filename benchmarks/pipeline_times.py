@@ -11,8 +11,9 @@ when a rule benchmarks several repeats). The job graph comes from a dry run,
 every job with its rule, wildcards, input and output files, and a job depends on the jobs that write
 its input files. (`--d3dag` and `--dag` print the same graph, but without all of a job's wildcards.)
 Printed: each job's wall time, largest first (`-`: no benchmark file, counted as 0 s, e.g. `all`),
-their sum, the critical path (the chain of dependent jobs with the largest total wall time) and the
-lower bound max(critical path, sum / cores) on the run's wall time with --cores cores.
+their sum, the core-seconds (a job that holds several cores counts that many times), the critical path
+(the chain of dependent jobs with the largest total wall time) and the lower bound
+max(critical path, core-seconds / cores) on the run's wall time with --cores cores.
 """
 
 import argparse
@@ -44,7 +45,8 @@ def benchmark_name(rule, wildcards) -> str:
 
 
 def parse_dry_run(text):
-    """Jobs {jobid: (rule, wildcards)} and edges [(producer, consumer)] from `snakemake -n` output."""
+    """Jobs {jobid: (rule, wildcards)}, edges [(producer, consumer)] and threads {jobid: threads} from
+    `snakemake -n` output (a job prints its threads when it has more than one)."""
     blocks, fields = [], None
     for line in text.splitlines():
         header = JOB_HEADER.match(line)
@@ -55,16 +57,17 @@ def parse_dry_run(text):
             fields[field.group(1)] = field.group(2)
         else:
             fields = None
-    jobs, producer = {}, {}
+    jobs, producer, threads = {}, {}, {}
     for fields in blocks:
         jobid = int(fields["jobid"])
+        threads[jobid] = int(fields.get("threads", 1))
         wildcards = dict(item.split("=", 1) for item in fields.get("wildcards", "").split(", ") if item)
         jobs[jobid] = (fields["rule"], wildcards)
         for path in fields.get("output", "").split(", "):
             producer[path] = jobid
     edges = sorted({(producer[path], int(fields["jobid"])) for fields in blocks
                     for path in fields.get("input", "").split(", ") if path in producer})
-    return jobs, edges
+    return jobs, edges, threads
 
 
 def critical_path(durations, edges) -> tuple[float, list]:
@@ -104,7 +107,8 @@ def critical_path(durations, edges) -> tuple[float, list]:
 
 
 def lower_bound(total, path_total, cores) -> float:
-    """No schedule on ``cores`` cores beats the critical path, nor the total work spread evenly."""
+    """No schedule on ``cores`` cores beats the critical path, nor the total work (core-seconds: a job
+    holding several cores counts that many times) spread evenly."""
     return max(path_total, total / cores)
 
 
@@ -119,31 +123,45 @@ def job_graph(configfile=None):
     return parse_dry_run(result.stdout + result.stderr)
 
 
-def report(jobs, edges, seconds, cores, markdown=False):
-    """The table, sum, critical path and lower bound, as text lines."""
+def report(jobs, edges, seconds, cores, markdown=False, threads=None, top=None):
+    """The table (the ``top`` longest jobs and those on the critical path, when ``top`` is given), sum,
+    core-seconds, critical path and lower bound, as text lines."""
+    threads = threads or {}
     names = {jobid: benchmark_name(rule, wildcards) for jobid, (rule, wildcards) in jobs.items()}
     durations = {jobid: seconds.get(name, 0.0) for jobid, name in names.items()}
     total = sum(durations.values())
+    work = sum(threads.get(jobid, 1) * time for jobid, time in durations.items())
     path_total, path = critical_path(durations, edges)
     on_path = set(path)
     order = sorted(jobs, key=lambda jobid: (-durations[jobid], names[jobid]))
+    if top is not None:
+        order = [jobid for rank, jobid in enumerate(order) if rank < top or jobid in on_path]
     width = max(map(len, names.values()), default=3)
     lines = []
     if markdown:
         lines += ["| job | wall time [s] | critical path |", "|---|---:|:---:|"]
         for jobid in order:
             time = f"{durations[jobid]:.1f}" if names[jobid] in seconds else "–"
-            lines.append(f"| `{names[jobid]}` | {time} | {'✓' if jobid in on_path else ''} |")
+            cores_held = f" ({threads[jobid]} cores)" if threads.get(jobid, 1) > 1 else ""
+            lines.append(f"| `{names[jobid]}`{cores_held} | {time} | {'✓' if jobid in on_path else ''} |")
+        if len(order) < len(jobs):
+            rest = sum(durations[jobid] for jobid in jobs if jobid not in order)
+            lines.append(f"| {len(jobs) - len(order)} other jobs | {rest:.1f} | |")
         lines.append(f"| **sum** | **{total:.1f}** | |")
     else:
         lines.append(f"{'job':<{width}} {'wall [s]':>10}  critical path")
         for jobid in order:
             time = f"{durations[jobid]:10.1f}" if names[jobid] in seconds else f"{'-':>10}"
-            lines.append(f"{names[jobid]:<{width}} {time}  {'*' if jobid in on_path else ''}".rstrip())
+            cores_held = f"  ({threads[jobid]} cores)" if threads.get(jobid, 1) > 1 else ""
+            lines.append(f"{names[jobid]:<{width}} {time}  {'*' if jobid in on_path else ''}{cores_held}".rstrip())
+        if len(order) < len(jobs):
+            rest = sum(durations[jobid] for jobid in jobs if jobid not in order)
+            lines.append(f"{f'{len(jobs) - len(order)} other jobs':<{width}} {rest:10.1f}")
         lines.append(f"{'sum':<{width}} {total:10.1f}")
     lines += ["", f"Critical path ({path_total:.1f} s): {' -> '.join(names[jobid] for jobid in path)}",
-              f"Lower bound on {cores} cores: max({path_total:.1f}, {total:.1f} / {cores}) = "
-              f"{lower_bound(total, path_total, cores):.1f} s"]
+              f"Core-seconds (wall time x cores held): {work:.1f}",
+              f"Lower bound on {cores} cores: max({path_total:.1f}, {work:.1f} / {cores}) = "
+              f"{lower_bound(work, path_total, cores):.1f} s"]
     return lines
 
 
@@ -153,16 +171,17 @@ def main():
     parser.add_argument("--configfile", help="the configuration the run used (default: config/config.yaml)")
     parser.add_argument("--cores", type=int, default=2)
     parser.add_argument("--markdown", action="store_true", help="print a Markdown table")
+    parser.add_argument("--top", type=int, help="list only the TOP longest jobs and those on the critical path")
     args = parser.parse_args()
     directory = Path(args.root) / "logs" / "benchmarks"
     seconds = read_benchmarks(directory)
-    jobs, edges = job_graph(args.configfile)
+    jobs, edges, threads = job_graph(args.configfile)
     if not seconds:
         print(f"No benchmark files found in {directory}: every job counts as 0 s.\n")
     names = {benchmark_name(rule, wildcards) for rule, wildcards in jobs.values()}
     if unmatched := sorted(set(seconds) - names):
         print(f"Benchmark files of no job in the graph (left out): {', '.join(unmatched)}\n")
-    print("\n".join(report(jobs, edges, seconds, args.cores, args.markdown)))
+    print("\n".join(report(jobs, edges, seconds, args.cores, args.markdown, threads, args.top)))
 
 
 if __name__ == "__main__":

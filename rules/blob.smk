@@ -220,30 +220,35 @@ rule blob_claims:
 
 
 rule blob_fig5_case:
-    """Figure 5, one of its cases (blob or particle method, regular or disk data) at every h: one
-    job per case, so that the three run side by side with other jobs."""
+    """Figure 5, one of its cases (blob or particle method, regular or disk data) at one h: one job
+    per run, so that the runs share the cores with every other job."""
     input:
         code=imports("blob/fig5_data.py"),
     output:
-        "results/blob/fig5/case{index}.npz",
+        "results/blob/fig5/case{index}_h{inverse_h}.npz",
     log:
-        "logs/blob/fig5_case{index}.log",
+        "logs/blob/fig5_case{index}_h{inverse_h}.log",
     benchmark:
-        "logs/benchmarks/blob_fig5_case_{index}.tsv"
+        "logs/benchmarks/blob_fig5_case_{index}_{inverse_h}.tsv"
     conda:
         ENVIRONMENT
     threads: 1
     params:
         cfg=BLOB["fig5"],
         index=lambda wildcards: int(wildcards.index),
+        inverse_h=lambda wildcards: int(wildcards.inverse_h),
     script:
         "../scripts/blob/fig5_data.py"
 
 
 rule blob_fig5_data:
-    """Figure 5: the errors of its cases in one result."""
+    """Figure 5: the errors of its runs in one result, case by case."""
     input:
-        cases=expand("results/blob/fig5/case{index}.npz", index=range(len(BLOB["fig5"]["cases"]))),
+        runs=expand(
+            "results/blob/fig5/case{index}_h{inverse_h}.npz",
+            index=range(len(BLOB["fig5"]["cases"])),
+            inverse_h=BLOB["fig5"]["inverse_h"],
+        ),
         code=imports("blob/fig5_merge.py"),
     output:
         "results/blob/fig5.npz",

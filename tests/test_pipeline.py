@@ -302,7 +302,7 @@ def test_slurm_profile_parses(workdir):
     pytest.importorskip("snakemake_executor_plugin_slurm")
     result = snakemake(workdir, "--dry-run", "--forceall", "--profile", str(ROOT / "profiles" / "slurm"))
     assert result.returncode == 0, result.stderr[-2000:]
-    assert "blob_fig5_data" in result.stdout + result.stderr
+    assert "blob_fig5_case" in result.stdout + result.stderr
 
 
 def test_report_pdf_is_built_where_latex_is_installed(workdir):

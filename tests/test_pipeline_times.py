@@ -60,7 +60,7 @@ job                        count
 
 
 def test_parse_dry_run():
-    jobs, edges = pipeline_times.parse_dry_run(DRY_RUN)
+    jobs, edges, _ = pipeline_times.parse_dry_run(DRY_RUN)
     assert jobs == {7: ("sticky_psystem_data", {"case": "shocks"}),
                     9: ("sticky_psystem_figure", {"case": "shocks", "figure": "fig6"}),
                     0: ("all", {})}

@@ -195,19 +195,24 @@ def test_blowup_time_names_the_kernel_and_the_valid_ones():
 @pytest.mark.parametrize("make", [lambda: run_1d("smooth20", "cubic", 1e-300, [0, 1]),
                                   lambda: run_2d("regular", "newtonian", 1e-300, [0, 1]),
                                   lambda: mass_defect(np.zeros((6000, 2)), np.ones(6000), np.ones(6000),
+                                                      kernel_2d("quadratic"), 0.1),
+                                  lambda: mass_defect(np.zeros((90000, 2)), np.ones(90000), np.ones(90000),
                                                       kernel_2d("newtonian"), 0.1)])
 def test_particle_counts_beyond_the_limit_are_refused(make):
-    with pytest.raises(ValueError, match="MAX_PARTICLES"):
+    """MAX_PARTICLES in general, MAX_FMM_PARTICLES for the 2D Newtonian kernel (its sums are O(N))."""
+    with pytest.raises(ValueError, match="MAX_(FMM_)?PARTICLES"):
         make()
 
 
 def test_the_limits_cover_the_repository_runs():
-    """Figure 5 extended to h = 1/80 (20,069 particles) and the longest runs (Figure 8, t = 400)."""
+    """Figure 5 extended to h = 1/160 (80,369 particles, within MAX_FMM_PARTICLES: its kernel is the Newtonian
+    one) and the longest runs (Figure 8, t = 400)."""
     config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["blob"]
     extended = yaml.safe_load((ROOT / "config" / "fig5-extended.yaml").read_text())["blob"]["fig5"]
     finest = max(extended["inverse_h"] + config["fig5"]["inverse_h"])
     for case in config["fig5"]["cases"]:
-        assert len(grid_2d(1.0 / finest, case["data"])) <= checks.MAX_PARTICLES
+        assert len(grid_2d(1.0 / finest, case["data"])) <= checks.MAX_FMM_PARTICLES
+        assert kernel_2d(config["fig5"]["kernel"]).max_particles == checks.MAX_FMM_PARTICLES
     fig4 = config["fig4"]
     assert 2 * max(fig4["inverse_h"]) * fig4["reference_factor"] + 1 <= checks.MAX_PARTICLES
     t_max = [case["t_max"] for fig in ("fig7", "fig8") for case in config[fig]["cases"]]

@@ -96,9 +96,14 @@ def _cell_keys(x, y, side):
     return keys, columns
 
 
-#: Cells of the near-field list are 1/CELL_SPLIT of the cut-off wide: a particle's partners lie in the
-#: (2 CELL_SPLIT + 1)^2 cells around its own, 6.25 cut-off^2 of area for 2 against pi cut-off^2 needed.
-CELL_SPLIT = 2
+#: Cells of the near-field list are 1/CELL_SPLIT of the cut-off wide: a particle's partners j > i lie in its own
+#: row of cells and the next CELL_SPLIT rows, within _REACH cells to either side (about 2.8 cut-off^2 of area
+#: for 3, against pi cut-off^2 / 2 needed; 2 to 5 measured within 10 % of each other at 80,000 particles).
+CELL_SPLIT = 3
+#: Cells a partner can lie in, to either side, in the row d rows away: a cell d >= 2 rows away is at least
+#: (d - 1) sides away, so columns beyond sqrt(CELL_SPLIT^2 - (d - 1)^2) sides hold no pair within the cut-off.
+_REACH = np.array([CELL_SPLIT, CELL_SPLIT] + [int(np.ceil(np.sqrt(CELL_SPLIT**2 - (d - 1) ** 2)))
+                                              for d in range(2, CELL_SPLIT + 1)], dtype=np.int64)
 #: Particles are dealt to this many accumulators, round robin, whatever the number of threads.
 ACCUMULATORS = 16
 #: Largest number of particles in one row of (2 CELL_SPLIT + 1) cells (the buffers of a row's terms).
@@ -172,8 +177,9 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
         mi = masses[i]
         sx = sy = sd = 0.0
         for r in range(row, row + CELL_SPLIT + 1):
-            stop = np.searchsorted(keys, r * columns + min(column + CELL_SPLIT, columns - 1), side="right")
-            lo = i + 1 if r == row else np.searchsorted(keys, r * columns + max(column - CELL_SPLIT, 0))
+            reach = _REACH[r - row]
+            stop = np.searchsorted(keys, r * columns + min(column + reach, columns - 1), side="right")
+            lo = i + 1 if r == row else np.searchsorted(keys, r * columns + max(column - reach, 0))
             for start in range(lo, stop, _ROW_BUFFER):
                 hi = min(start + _ROW_BUFFER, stop)
                 _row_terms(x[i], y[i], x, y, start, hi, g_weights, l_weights, inverse, cutoff2, wx, wy, wd, r2)
