@@ -23,15 +23,6 @@ from particle_methods.workflow import load_results, logged, progress, save_resul
 KERNEL = "newtonian_repulsive"
 
 
-def mollified_sum(targets, sources, weights, psi, delta, chunk=256):
-    """sum_j weights_j psi_delta(targets_i - sources_j), in chunks of targets."""
-    out = np.empty(targets.size)
-    for start in range(0, targets.size, chunk):
-        block = targets[start:start + chunk, None] - sources[None, :]
-        out[start:start + chunk] = psi(np.abs(block), delta) @ weights
-    return out
-
-
 def parts(data, n, order, q, t_final, nodes, fine_factor):
     """L1_h norms of the quadrature part, the regularisation part and their sum, the density error
     they predict at t_final."""
@@ -48,8 +39,8 @@ def parts(data, n, order, q, t_final, nodes, fine_factor):
     for t, w in zip(times, weights):
         x, rho = newtonian_exact(data, KERNEL, alpha, t)
         x_fine = newtonian_exact(data, KERNEL, fine, t)[0]
-        particle_sum = mollified_sum(x, x, masses, psi, delta)
-        convolution = mollified_sum(x, x_fine, fine_masses, psi, delta)
+        particle_sum = psi.sums_1d(x, x, masses, delta)
+        convolution = psi.sums_1d(x, x_fine, fine_masses, delta)
         quadrature += w * (particle_sum - convolution)
         regularisation += w * (convolution - rho)
     rho_final = newtonian_exact(data, KERNEL, alpha, t_final)[1]
