@@ -42,7 +42,7 @@ def edited(path, value):
         ("blob.fig4.q", float("inf"), "must be finite"),
         ("blob.fig5.inverse_h", [5, 10, 10, 40], "distinct and ordered"),
         ("ltp.quadratic.h_values", [0.1, 0.05, 0.1], "distinct and ordered"),
-        ("blob.fig5.fit_points", 5, "longer than blob.fig5.inverse_h"),
+        ("blob.fig5.fit_points", 6, "longer than blob.fig5.inverse_h"),
         ("sticky.fig3.decay_window", 16, "longer than sticky.fig3.error_p + sticky.fig3.rate_p"),
         ("blob.fig1.zoom", [-0.06, 0.06, 1.0, 0.8], "low < high"),
         ("sticky.cost.band", [1.2, 0.8], "low < high"),
