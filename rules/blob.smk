@@ -45,6 +45,18 @@ BLOB_FIG4_STUDIES = {
     },
 }
 
+# Figure 5's runs in jobs: 1/h below FIG5_OWN_JOB together (a few seconds), each finer grid alone (5,000
+# particles and more: tens of seconds to minutes), in the order of the config's inverse_h (increasing).
+FIG5_OWN_JOB = 40
+FIG5_GROUPS = {
+    **(
+        {"coarse": [n for n in BLOB["fig5"]["inverse_h"] if n < FIG5_OWN_JOB]}
+        if min(BLOB["fig5"]["inverse_h"]) < FIG5_OWN_JOB
+        else {}
+    ),
+    **{f"h{n}": [n] for n in BLOB["fig5"]["inverse_h"] if n >= FIG5_OWN_JOB},
+}
+
 BLOB_FIGURES = expand(
     "figures/blob/{name}.{ext}",
     name=[*(f"fig{number}" for number in range(1, 9)), "fig4log", "repulsive"],
@@ -220,23 +232,24 @@ rule blob_claims:
 
 
 rule blob_fig5_case:
-    """Figure 5, one of its cases (blob or particle method, regular or disk data) at one h: one job
-    per run, so that the runs share the cores with every other job."""
+    """Figure 5, one of its cases (blob or particle method, regular or disk data) on a group of grids:
+    the coarse ones together, each fine one alone, so that the long runs share the cores with every
+    other job."""
     input:
         code=imports("blob/fig5_data.py"),
     output:
-        "results/blob/fig5/case{index}_h{inverse_h}.npz",
+        "results/blob/fig5/case{index}_{group}.npz",
     log:
-        "logs/blob/fig5_case{index}_h{inverse_h}.log",
+        "logs/blob/fig5_case{index}_{group}.log",
     benchmark:
-        "logs/benchmarks/blob_fig5_case_{index}_{inverse_h}.tsv"
+        "logs/benchmarks/blob_fig5_case_{group}_{index}.tsv"
     conda:
         ENVIRONMENT
     threads: 1
     params:
         cfg=BLOB["fig5"],
         index=lambda wildcards: int(wildcards.index),
-        inverse_h=lambda wildcards: int(wildcards.inverse_h),
+        inverse_h=lambda wildcards: FIG5_GROUPS[wildcards.group],
     script:
         "../scripts/blob/fig5_data.py"
 
@@ -245,9 +258,9 @@ rule blob_fig5_data:
     """Figure 5: the errors of its runs in one result, case by case."""
     input:
         runs=expand(
-            "results/blob/fig5/case{index}_h{inverse_h}.npz",
+            "results/blob/fig5/case{index}_{group}.npz",
             index=range(len(BLOB["fig5"]["cases"])),
-            inverse_h=BLOB["fig5"]["inverse_h"],
+            group=FIG5_GROUPS,
         ),
         code=imports("blob/fig5_merge.py"),
     output:

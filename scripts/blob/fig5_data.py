@@ -1,6 +1,6 @@
-"""Figure 5, one run: the 2D L1_h errors at t = 0.5 for K = log|x|/(2 pi) of one case (the blob method,
-m = 4, or the particle method, with regular data (1 - |x|^2)_+^2 or the indicator of the unit disk) at
-one grid step h = 1/inverse_h."""
+"""Figure 5, one group of runs: the 2D L1_h errors at t = 0.5 for K = log|x|/(2 pi) of one case (the blob
+method, m = 4, or the particle method, with regular data (1 - |x|^2)_+^2 or the indicator of the unit disk)
+on the grid steps h = 1/inverse_h of the group."""
 
 import time
 
@@ -12,9 +12,10 @@ from particle_methods.blob.solver import run_2d
 from particle_methods.norms import discrete_l1
 from particle_methods.workflow import logged, progress, save_results
 
+KEYS = ("trajectory", "density", "particles", "evaluations")
 
-def run(p, index, inverse_h, output):
-    case = p["cases"][index]
+
+def one_run(p, case, inverse_h):
     data, h = data_2d(case["data"]), 1.0 / inverse_h
     start = time.perf_counter()
     sim = run_2d(data, p["kernel"], h, [0.0, p["t"]], method=case["method"], q=p["q"], rtol=p["rtol"],
@@ -25,8 +26,14 @@ def run(p, index, inverse_h, output):
     density = discrete_l1(sim.densities[-1], exact_rho, h, 2) if sim.densities is not None else np.nan
     progress(f"{case['data']} {case['method']}: h = 1/{inverse_h}, {sim.masses.size} particles, {sim.evaluations} "
              f"right-hand sides in {seconds:.2f} s: trajectory error {trajectory:.4e}, density error {density:.4e}")
-    save_results(output, label=f"{case['data']}, {case['method']}", trajectory=trajectory, density=density,
-                 particles=sim.masses.size, evaluations=sim.evaluations)
+    return trajectory, density, sim.masses.size, sim.evaluations
+
+
+def run(p, index, inverse_h, output):
+    case = p["cases"][index]
+    rows = [one_run(p, case, n) for n in inverse_h]
+    save_results(output, label=f"{case['data']}, {case['method']}", inverse_h=np.array(inverse_h),
+                 **{key: np.array(column) for key, column in zip(KEYS, zip(*rows))})
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
