@@ -112,11 +112,11 @@ def lower_bound(total, path_total, cores) -> float:
     return max(path_total, total / cores)
 
 
-def job_graph(configfile=None):
-    """Jobs and edges of the whole workflow, from a dry run in the repository root."""
+def job_graph(configfiles=()):
+    """Jobs, edges and threads of the whole workflow, from a dry run in the repository root."""
     command = [sys.executable, "-m", "snakemake", "-n", "--forceall"]
-    if configfile:
-        command += ["--configfile", str(Path(configfile).resolve())]
+    if configfiles:
+        command += ["--configfile", *(str(Path(path).resolve()) for path in configfiles)]
     result = subprocess.run(command, cwd=REPOSITORY, capture_output=True, text=True)
     if result.returncode:
         sys.exit(f"{' '.join(command)} failed:\n{result.stderr}{result.stdout}")
@@ -168,7 +168,8 @@ def report(jobs, edges, seconds, cores, markdown=False, threads=None, top=None):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--root", default=".", help="the run's output root (output_root of its configuration)")
-    parser.add_argument("--configfile", help="the configuration the run used (default: config/config.yaml)")
+    parser.add_argument("--configfile", nargs="+", default=(),
+                        help="the configuration files of the run, as given to snakemake (default: config/config.yaml)")
     parser.add_argument("--cores", type=int, default=2)
     parser.add_argument("--markdown", action="store_true", help="print a Markdown table")
     parser.add_argument("--top", type=int, help="list only the TOP longest jobs and those on the critical path")
