@@ -79,7 +79,7 @@ def crossover():
     for count in sorted({1, threads}):
         numba.set_num_threads(count)
         line = []
-        for inverse_h in (10, 20, 30, 35, 40):
+        for inverse_h in (10, 20, 25, 30, 35, 40):
             points, _, masses, kernel, _ = setup_2d("regular", "newtonian", 1.0 / inverse_h, method="blob", q=0.9)
             direct_time, _ = sums(points, masses, kernel, "direct", repeats=5)
             fmm_time, _ = sums(points, masses, kernel, "fmm", repeats=5)

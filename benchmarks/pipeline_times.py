@@ -112,9 +112,10 @@ def lower_bound(total, path_total, cores) -> float:
     return max(path_total, total / cores)
 
 
-def job_graph(configfiles=()):
-    """Jobs, edges and threads of the whole workflow, from a dry run in the repository root."""
-    command = [sys.executable, "-m", "snakemake", "-n", "--forceall"]
+def job_graph(configfiles=(), cores=2):
+    """Jobs, edges and threads of the whole workflow, from a dry run in the repository root with ``cores``
+    cores (the rules that take all the cores then show how many the run gave them)."""
+    command = [sys.executable, "-m", "snakemake", "-n", "--forceall", "--cores", str(cores)]
     if configfiles:
         command += ["--configfile", *(str(Path(path).resolve()) for path in configfiles)]
     result = subprocess.run(command, cwd=REPOSITORY, capture_output=True, text=True)
@@ -176,7 +177,7 @@ def main():
     args = parser.parse_args()
     directory = Path(args.root) / "logs" / "benchmarks"
     seconds = read_benchmarks(directory)
-    jobs, edges, threads = job_graph(args.configfile)
+    jobs, edges, threads = job_graph(args.configfile, args.cores)
     if not seconds:
         print(f"No benchmark files found in {directory}: every job counts as 0 s.\n")
     names = {benchmark_name(rule, wildcards) for rule, wildcards in jobs.values()}

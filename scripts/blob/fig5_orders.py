@@ -32,13 +32,15 @@ def table(d, title) -> str:
 
 def run(data, extended, output):
     text = table(load_results(data), "This run:")
-    if Path(extended).exists():
+    if Path(extended).exists() and not Path(extended).samefile(data):
         progress(f"overlay results found: {extended}")
         text += table(load_results(extended), "The overlay \\texttt{config/fig5-extended.yaml}:")
     else:
         text += ("\\noindent The overlay \\texttt{config/fig5-extended.yaml} (to $h = 1/160$) has not been run "
-                 "with this build.\\par\n")
-    Path(output).write_text(text)
+                 "in this clone.\\par\n")
+    temporary = Path(output).with_name(Path(output).name + ".tmp")
+    temporary.write_text(text)
+    temporary.replace(output)
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821

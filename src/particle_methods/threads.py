@@ -10,7 +10,8 @@ each parallel region waits for a thread that is not scheduled: on 2 cores, three
   slice of the other process;
 - :func:`use_threads` sets the threads of numba and of every loaded BLAS/OpenMP library at once,
   clamped to what the process may use (``NUMBA_NUM_THREADS`` when the user set it, else the
-  cores). Every pipeline script calls it first with the rule's ``threads`` (:func:`from_rule`).
+  cores). Every pipeline script calls it with the rule's ``threads``, through
+  :func:`particle_methods.workflow.logged`.
 - :func:`threads_for` runs a kernel on the current threads only when its problem is at least a
   size where that pays off, and on one thread below it. Each kernel family keeps that size as
   one named constant next to its kernels (``PARALLEL_MIN_...``), measured by
@@ -37,8 +38,8 @@ def available() -> int:
 
 
 def use_threads(count) -> int:
-    """Run numba's kernels and the BLAS/OpenMP libraries on ``count`` threads, clamped to
-    [1, :func:`available`]; returns the count used. Libraries loaded later read it from the
+    """Run numba's kernels and the BLAS/OpenMP libraries on ``count`` >= 1 threads, at most
+    :func:`available`; returns the count used. Libraries loaded later read it from the
     environment; those already loaded are set through threadpoolctl."""
     count = min(integer_at_least("threads", count, 1), available())
     numba.set_num_threads(count)
@@ -48,11 +49,6 @@ def use_threads(count) -> int:
 
     threadpool_limits(limits=count)
     return count
-
-
-def from_rule(snakemake) -> int:
-    """:func:`use_threads` with a Snakemake job's ``threads``; the count used is logged by the caller."""
-    return use_threads(snakemake.threads)
 
 
 @contextlib.contextmanager

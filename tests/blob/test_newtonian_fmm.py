@@ -121,7 +121,7 @@ def test_auto_switches_to_the_fmm_at_its_thresholds(grid_blob_20):
     small = pair_sums(points, masses, *arrays)
     for got, expected in zip(small, pair_sums(points, masses, *arrays, newtonian_2d="direct")):
         np.testing.assert_array_equal(got, expected)
-    points, _, masses, kernel, _ = setup_2d("regular", "newtonian", 1 / 40, method="blob", q=0.9)
+    points, _, masses, kernel, _ = setup_2d("regular", "newtonian", 1 / 30, method="blob", q=0.9)
     assert FMM_MIN_PARTICLES <= points.shape[0] < FMM_MIN_PARTICLES_RAW
     large = pair_sums(points, masses, *kernel.arrays())
     for got, expected in zip(large, pair_sums(points, masses, *kernel.arrays(), newtonian_2d="fmm")):

@@ -214,11 +214,11 @@ _ACCUMULATORS = 16
 PARALLEL_MIN_PARTICLES = 512
 #: From this many particles on, the 2D Newtonian sums mollified by (4.2) go through the fast multipole
 #: method (:mod:`.newtonian_fmm`): the crossover with the direct tiled sums measured by
-#: benchmarks/bench_fmm.py (about 3,300 particles on one thread, 4,000 on two; delta = h^0.9).
-FMM_MIN_PARTICLES = 4000
+#: benchmarks/bench_fmm.py (about 2,500 particles on one thread, 2,800 on two; delta = h^0.9).
+FMM_MIN_PARTICLES = 2500
 #: The same for the raw kernel (the particle method), whose direct sums need no exponential: the
-#: crossover lies near 10,000 particles on one thread, 13,000 on two.
-FMM_MIN_PARTICLES_RAW = 12000
+#: crossover lies near 3,500 particles on one thread, 4,000 to 5,000 on two.
+FMM_MIN_PARTICLES_RAW = 4000
 
 
 def _threads_for(particles):
@@ -478,7 +478,7 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths, method):
         _check_span(positions, widths)
     threshold = FMM_MIN_PARTICLES_RAW if kinds[0] == LOG else FMM_MIN_PARTICLES
     fast = positions.shape[0] >= threshold if method == "auto" else method == "fmm"
-    if fast and not _coincident(positions):
+    if fast and positions.shape[0] >= 2 and not _coincident(positions):
         sums = newtonian_fmm.newtonian_sums(positions, masses, coefficients, np.zeros(0) if kinds[0] == LOG else widths)
         if sums is not None:  # None: two particles far closer than the mollifier's width (see newtonian_sums)
             return sums
@@ -495,7 +495,8 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths, method):
 
 #: How :func:`pair_sums` takes the 2D Newtonian kernel's sums.
 NEWTONIAN_2D_METHODS = {"auto": "the fast multipole method from FMM_MIN_PARTICLES(_RAW) particles on, else direct",
-                        "fmm": "the fast multipole method (direct with coincident points)",
+                        "fmm": "the fast multipole method (direct below 2 particles and with coincident or nearly "
+                               "coincident points)",
                         "direct": "the direct tiled sums"}
 
 

@@ -7,14 +7,16 @@ For K = log|x|/(2 pi), raw (the particle method) or mollified by psi4 of (4.2), 
 
 (c_k the kernel's coefficient times w_k, sum_k c_k = C), so grad K_delta is the raw field
 C x/(2 pi |x|^2) minus Gaussian terms. The raw part, -C/(2 pi) sum_{j != i} m_j (X_i - X_j)/|X_i - X_j|^2,
-is the gradient of a 2D Laplace potential with charges m_j: FMMLIB2D's ``lfmm2dparttarg``
-(through pyfmmlib) computes it in O(N) at requested precision ``FMM_PRECISION`` (1e-14 relative to the
-largest field value: 12 digits asked, measured below 1e-15 on the Figure 5 grids, ``benchmarks/bench_fmm.py``).
+is the gradient of a 2D Laplace potential with charges m_j: FMMLIB2D's Cauchy FMM ``cfmm2dpartself``
+(pyfmmlib's compiled library) computes it in O(N) at precision ``FMM_PRECISION`` (12 digits asked; the
+sums agree with the direct ones to 2.8e-15 of their largest value on the Figure 5 grids,
+``benchmarks/bench_fmm.py``).
 The Gaussian terms are below 1e-18 of the raw term beyond ``GAUSS_CUTOFF`` widths s_max
 (e^{-6.5^2} = 4.5e-19), so they are summed exactly over the pairs closer than that, found with a
 cell list of side 6.5 s_max; so is the whole divergence, since the Laplacian of the raw kernel is a
 Dirac mass (its only share, the self term of i = j, is included). With delta = h^q the pairs within
-6.5 sqrt(2) delta of a particle number about pi (9.2 h^{q-1})^2 ~ h^{-0.2}: the near field stays O(N).
+6.5 sqrt(2) delta of a particle number about pi (9.2 h^{q-1})^2 ~ h^{-0.2} (about 730 at h = 1/160): the
+near field grows like N^{1.1}.
 
 The result equals the direct sums of :func:`particle_methods.blob.kernels.pair_sums` to rounding
 (tested to 1e-13 relative to the largest value); each particle's near sum is taken in a fixed order,
@@ -51,36 +53,41 @@ PARALLEL_MIN_PARTICLES = 2000
 
 
 @functools.cache
-def _lfmm2dpartself():
-    """FMMLIB2D's ``lfmm2dpartself`` from pyfmmlib's compiled library, called through ctypes: unlike
-    pyfmmlib's f2py wrapper, a ctypes call releases the interpreter's lock, so the FMM runs beside the
-    compiled near field. Fortran arguments: every one by reference, integers of 4 bytes."""
+def _cfmm2dpartself():
+    """FMMLIB2D's Cauchy FMM ``cfmm2dpartself`` from pyfmmlib's compiled library, called through ctypes:
+    unlike pyfmmlib's f2py wrappers, a ctypes call releases the interpreter's lock, so the FMM runs beside
+    the compiled near field. (The Laplace routine ``lfmm2dpartself`` takes complex charges and runs this
+    one twice, once for their imaginary part; with real masses once is enough.) Fortran arguments: every
+    one by reference, integers of 4 bytes."""
     import pyfmmlib._internal  # here: the package loads without it until a large 2D Newtonian sum is asked for
 
-    function = ctypes.CDLL(pyfmmlib._internal.__file__).lfmm2dpartself_
-    integer, array = ctypes.POINTER(ctypes.c_int), np.ctypeslib.ndpointer(flags="C_CONTIGUOUS")
-    # ier, iprec, nsource, source, ifcharge, charge, ifdipole, dipstr, dipvec, ifpot, pot, ifgrad, grad, ifhess, hess
-    function.argtypes = [integer, integer, integer, array, integer, array, integer, array, array, integer, array,
-                         integer, array, integer, array]
+    function = ctypes.CDLL(pyfmmlib._internal.__file__).cfmm2dpartself_
+    integer = ctypes.POINTER(ctypes.c_int)
+    real = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
+    complex_ = np.ctypeslib.ndpointer(dtype=np.complex128, flags="C_CONTIGUOUS")
+    # ier, iprec, nsource, source, ifcharge, charge, ifdipole, dipstr, ifpot, pot, ifgrad, grad, ifhess, hess
+    function.argtypes = [integer, integer, integer, real, integer, complex_, integer, complex_, integer, complex_,
+                         integer, complex_, integer, complex_]
     function.restype = None
     return function
 
 
 def far_field(positions, masses) -> np.ndarray:
-    """sum_{j != i} m_j (X_i - X_j) / |X_i - X_j|^2, shape (N, 2), by FMMLIB2D's Laplace FMM: the gradient
-    of the potential sum_{j != i} m_j log|x - X_j| at the sources. ``positions`` (N, 2) are finite, distinct
-    points and ``masses`` (N,) finite (checked by the caller)."""
+    """sum_{j != i} m_j (X_i - X_j) / |X_i - X_j|^2, shape (N, 2), by FMMLIB2D's FMM: with z = x + iy, the
+    Cauchy sum g_i = sum_{j != i} m_j / (z_i - z_j) = sum_{j != i} m_j ((x_i - x_j) - i (y_i - y_j)) / r^2,
+    so the field is (Re g, -Im g). ``positions`` (N, 2) are at least two finite, distinct points and
+    ``masses`` (N,) finite (checked by the caller)."""
     n = masses.size
-    flags = [ctypes.c_int(value) for value in (0, FMM_PRECISION, n, 1, 0, 0, 1, 0)]
-    ier, iprec, count, yes, no = flags[0], flags[1], flags[2], flags[3], flags[4]
-    gradient = np.zeros((n, 2), dtype=np.complex128)
-    unused = np.zeros(max(3 * n, 1), dtype=np.complex128)
-    _lfmm2dpartself()(ctypes.byref(ier), ctypes.byref(iprec), ctypes.byref(count), np.ascontiguousarray(positions),
-                      ctypes.byref(yes), masses.astype(np.complex128), ctypes.byref(no), unused, np.zeros((n, 2)),
-                      ctypes.byref(no), unused, ctypes.byref(yes), gradient, ctypes.byref(no), unused)
+    ier, iprec, count, yes, no = (ctypes.c_int(value) for value in (0, FMM_PRECISION, n, 1, 0))
+    gradient = np.zeros(n, dtype=np.complex128)
+    unused = np.zeros(max(2 * n, 1), dtype=np.complex128)
+    _cfmm2dpartself()(ctypes.byref(ier), ctypes.byref(iprec), ctypes.byref(count),
+                      np.ascontiguousarray(positions, dtype=np.float64), ctypes.byref(yes),
+                      masses.astype(np.complex128), ctypes.byref(no), unused, ctypes.byref(no), unused,
+                      ctypes.byref(yes), gradient, ctypes.byref(no), unused)
     if ier.value != 0:
-        raise RuntimeError(f"FMMLIB2D's lfmm2dpartself failed with error code {ier.value} (out of memory)")
-    return np.ascontiguousarray(gradient.real)
+        raise RuntimeError(f"FMMLIB2D's cfmm2dpartself failed with error code {ier.value} (out of memory)")
+    return np.stack([gradient.real, -gradient.imag], axis=1)
 
 
 @njit
@@ -106,7 +113,7 @@ _REACH = np.array([CELL_SPLIT, CELL_SPLIT] + [int(np.ceil(np.sqrt(CELL_SPLIT**2 
                                               for d in range(2, CELL_SPLIT + 1)], dtype=np.int64)
 #: Particles are dealt to this many accumulators, round robin, whatever the number of threads.
 ACCUMULATORS = 16
-#: Largest number of particles in one row of (2 CELL_SPLIT + 1) cells (the buffers of a row's terms).
+#: Partners are taken in chunks of this many (the buffers of a row's terms; longer rows take several).
 _ROW_BUFFER = 4096
 
 
@@ -258,8 +265,8 @@ def newtonian_sums(positions, masses, coefficients, widths):
         with numba_threads(1):
             vx, vy, div, closest = _near_sums(*arguments)
     else:
-        # The FMM holds the interpreter's lock all along, in the pool's thread; this thread enters the
-        # compiled near field (nogil) microseconds later, before the pool's thread can take the lock.
+        # The FMM runs in the pool's thread (its ctypes call releases the interpreter's lock), the compiled
+        # near field (nogil) in this one.
         far = _fmm_pool().submit(far_field, positions, masses)
         with numba_threads(threads - 1):
             vx, vy, div, closest = _near_sums(*arguments)

@@ -267,8 +267,8 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
 
     J_i = det(dX~/dalpha) at particle i comes from massless tracers at alpha_i +- offset e_k,
     which follow the off-grid trajectory map of Definition 2.3; particles with rho0 below
-    ``threshold`` are skipped (relative errors there say nothing). The tracers count towards
-    MAX_PARTICLES: (2d + 1) N in all.
+    ``threshold`` are skipped (relative errors there say nothing). The tracers count towards the
+    kernel's limit (:attr:`Kernel.max_particles`): (2d + 1) N in all.
     """
     points = finite_array("points", points, ndim=2)
     rho0, masses = finite_array("rho0", rho0), finite_array("masses", masses)

@@ -251,8 +251,8 @@ def _cumulative_and_density(points, centres, weights, widths, breaks, pieces):
 
 
 #: Below this many targets the compiled loops run on one thread (:func:`particle_methods.threads.threads_for`;
-#: measured by benchmarks/bench_threads.py: the repository's LTP runs have 50 to 800 particles, and a step
-#: of 200 takes tens of microseconds, less than waking a second thread).
+#: measured by benchmarks/bench_threads.py: alone, two threads pay from about 200 targets; with a second
+#: process on the other core they lose up to 800 (1.4x slower at 400) and break even near 1600).
 PARALLEL_MIN_TARGETS = 1000
 
 
