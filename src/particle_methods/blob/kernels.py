@@ -57,6 +57,7 @@ from .checks import MAX_FMM_PARTICLES, MAX_PARTICLES, MAX_TABLE_WORK
 from .mollifiers import Mollifier
 from .radial import RadialTable, tabulate
 from .special import EULER_GAMMA, dawson_and_slope, exp1
+from .tile_sums import row_share
 from .vector_exp import Z_LIMIT, exp_minus_and_complement
 
 GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER, LOG, GAUSS_LOG_2D, TABLE, EXP, GAUSS_LOG_1D = 0, 1, 2, 3, 4, 5, 6, 7
@@ -365,29 +366,6 @@ def _partners_share(start, stop, mi, wx, wy, lap, vx, vy, divergence):
 
 
 @njit
-def _row_share(start, stop, masses, wx, wy, lap):
-    """The row's own share over a tile, sum_j m_j (grad K, Delta K), in a fixed order: two interleaved
-    partial sums per quantity (even and odd j), added at the end."""
-    sx0 = sx1 = sy0 = sy1 = sd0 = sd1 = 0.0
-    count = stop - start
-    k = 0
-    while k + 1 < count:
-        m0, m1 = masses[start + k], masses[start + k + 1]
-        sx0 += m0 * wx[k]
-        sy0 += m0 * wy[k]
-        sd0 += m0 * lap[k]
-        sx1 += m1 * wx[k + 1]
-        sy1 += m1 * wy[k + 1]
-        sd1 += m1 * lap[k + 1]
-        k += 2
-    if k < count:
-        sx0 += masses[start + k] * wx[k]
-        sy0 += masses[start + k] * wy[k]
-        sd0 += masses[start + k] * lap[k]
-    return sx0 + sx1, sy0 + sy1, sd0 + sd1
-
-
-@njit
 def _tiled_2d_accumulate(c, x, y, masses, constants, terms, self_lap, vx, vy, divergence):
     """Accumulator c of a tiled 2D path: rows i = c mod 16 and their partners j > i, tile by tile. The
     Newtonian kernel (:func:`_newtonian_2d_forces`, ``constants``) when ``terms`` has no kind, else the
@@ -409,7 +387,7 @@ def _tiled_2d_accumulate(c, x, y, masses, constants, terms, self_lap, vx, vy, di
                 _terms_2d_forces(x[i], y[i], x, y, start, stop, kinds, coefficients, parameters, tables, steps,
                                  wx, wy, lap, buffer)
             _partners_share(start, stop, mi, wx, wy, lap, vx[c], vy[c], divergence[c])
-            tx, ty, td = _row_share(start, stop, masses, wx, wy, lap)
+            tx, ty, td = row_share(start, stop, masses, wx, wy, lap)
             sx += tx
             sy += ty
             sd += td

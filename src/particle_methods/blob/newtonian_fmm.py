@@ -37,6 +37,7 @@ from numba import prange
 
 from ..jit import njit
 from ..threads import numba_threads
+from .tile_sums import row_share
 from .vector_exp import exp_minus_and_complement
 
 #: FMMLIB2D's precision flag: 4 asks for 12 digits (1e-12 relative to the field's size).
@@ -144,29 +145,6 @@ def _row_terms(xi, yi, x, y, lo, hi, g_weights, l_weights, inverse, cutoff2, wx,
 
 
 @njit
-def _row_share(masses, start, count, wx, wy, wd):
-    """sum_j m_j (wx_j, wy_j, wd_j) over a row, in two interleaved partial sums (even and odd j: a fixed
-    order that does not wait on the latency of one chain of additions)."""
-    x0 = x1 = y0 = y1 = d0 = d1 = 0.0
-    k = 0
-    while k + 1 < count:
-        m0, m1 = masses[start + k], masses[start + k + 1]
-        x0 += m0 * wx[k]
-        y0 += m0 * wy[k]
-        d0 += m0 * wd[k]
-        x1 += m1 * wx[k + 1]
-        y1 += m1 * wy[k + 1]
-        d1 += m1 * wd[k + 1]
-        k += 2
-    if k < count:
-        m0 = masses[start + k]
-        x0 += m0 * wx[k]
-        y0 += m0 * wy[k]
-        d0 += m0 * wd[k]
-    return x0 + x1, y0 + y1, d0 + d1
-
-
-@njit
 def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div, closest):
     """Accumulator c: the particles i = c mod ACCUMULATORS (sorted by cell key) and their partners j > i in
     the cells of their own and the next CELL_SPLIT rows; each pair is evaluated once and added to both.
@@ -190,7 +168,7 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
             for start in range(lo, stop, _ROW_BUFFER):
                 hi = min(start + _ROW_BUFFER, stop)
                 _row_terms(x[i], y[i], x, y, start, hi, g_weights, l_weights, inverse, cutoff2, wx, wy, wd, r2)
-                tx, ty, td = _row_share(masses, start, hi - start, wx, wy, wd)
+                tx, ty, td = row_share(start, hi, masses, wx, wy, wd)
                 for j in range(hi - start):
                     closest[c] = min(closest[c], r2[j])
                 sx += tx
