@@ -37,6 +37,7 @@ from numba import prange
 
 from ..jit import njit
 from ..threads import numba_threads
+from ..validation import finite_array, finite_result, same_length
 from .tile_sums import row_share
 from .vector_exp import exp_minus_and_complement
 
@@ -73,11 +74,23 @@ def _cfmm2dpartself():
     return function
 
 
+def _points_and_masses(positions, masses):
+    """``positions`` as finite float64 (N, 2) with N >= 2 and ``masses`` as finite float64 (N,), or a ValueError
+    (ParameterTypeError) naming the parameter."""
+    positions = np.ascontiguousarray(finite_array("positions", positions, ndim=2))
+    masses = np.ascontiguousarray(finite_array("masses", masses))
+    if positions.shape[1:] != (2,) or positions.shape[0] < 2:
+        raise ValueError(f"positions must have shape (N, 2) with N >= 2, got {positions.shape}")
+    same_length(positions=positions[:, 0], masses=masses)
+    return positions, masses
+
+
 def far_field(positions, masses) -> np.ndarray:
     """sum_{j != i} m_j (X_i - X_j) / |X_i - X_j|^2, shape (N, 2), by FMMLIB2D's FMM: with z = x + iy, the
     Cauchy sum g_i = sum_{j != i} m_j / (z_i - z_j) = sum_{j != i} m_j ((x_i - x_j) - i (y_i - y_j)) / r^2,
-    so the field is (Re g, -Im g). ``positions`` (N, 2) are at least two finite, distinct points and
-    ``masses`` (N,) finite (checked by the caller)."""
+    so the field is (Re g, -Im g). ``positions`` (N >= 2, 2) and ``masses`` (N,) are finite; coincident
+    points make the field infinite, which raises a ValueError."""
+    positions, masses = _points_and_masses(positions, masses)
     n = masses.size
     ier, iprec, count, yes, no = (ctypes.c_int(value) for value in (0, FMM_PRECISION, n, 1, 0))
     gradient = np.zeros(n, dtype=np.complex128)
@@ -88,7 +101,8 @@ def far_field(positions, masses) -> np.ndarray:
                       ctypes.byref(yes), gradient, ctypes.byref(no), unused)
     if ier.value != 0:
         raise RuntimeError(f"FMMLIB2D's cfmm2dpartself failed with error code {ier.value} (out of memory)")
-    return np.stack([gradient.real, -gradient.imag], axis=1)
+    return finite_result("the far field", np.stack([gradient.real, -gradient.imag], axis=1),
+                         "two positions coincide or the masses overflow")
 
 
 @njit
@@ -216,8 +230,8 @@ def newtonian_sums(positions, masses, coefficients, widths):
     """Velocities -sum_j m_j grad K(X_i - X_j) (N, 2) and divergences -sum_j m_j Delta K(X_i - X_j) of the
     2D Newtonian kernel: raw C log|x|/(2 pi) when ``widths`` is empty (``coefficients`` = (C,)), else the
     Gaussian terms (c_k, s_k) of its mollification (4.2). Inputs are checked by the caller
-    (:func:`particle_methods.blob.kernels.pair_sums`): finite (N, 2) positions without coincident
-    points, finite masses, widths within the vectorised exponential's range.
+    (:func:`particle_methods.blob.kernels.pair_sums`) and again here: finite (N >= 2, 2) positions, finite
+    masses, positive widths, a spread of at most 2^25 widths.
 
     With two threads or more (and :data:`PARALLEL_MIN_PARTICLES` particles), the FMM runs on one thread
     while the near field runs on the others: the two take about the same time.
@@ -225,6 +239,12 @@ def newtonian_sums(positions, masses, coefficients, widths):
     Returns None when two particles are closer than :data:`CLOSE_FRACTION` times the narrowest width: the
     raw field of the pair, m/(2 pi r), and its Gaussian correction then cancel to a few digits, and the
     caller takes the direct sums, which compute 1 - e^{-r^2/s^2} without cancellation."""
+    positions, masses = _points_and_masses(positions, masses)
+    coefficients, widths = finite_array("coefficients", coefficients), finite_array("widths", widths)
+    if widths.size and (coefficients.size != widths.size or np.any(widths <= 0)):
+        raise ValueError("widths must be positive, one for each of the coefficients")
+    if widths.size and np.ptp(positions, axis=0).max() > 2.0**25 * widths.min():
+        raise ValueError("positions spread over more than 2^25 widths of the mollifier (the cell list's keys)")
     total = float(np.sum(coefficients))
     if widths.size == 0:
         return (-total / (2 * math.pi)) * far_field(positions, masses), np.zeros(masses.size)
