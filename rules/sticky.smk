@@ -239,10 +239,34 @@ rule sticky_cost:
         "../scripts/sticky/cost_data.py"
 
 
-rule sticky_beyond:
-    """Beyond the paper: exact MSPD against conservative and upwind finite volumes, and the cost study.
-    Runs alone (all cores reserved) so that its timings are not disturbed by other jobs."""
+rule sticky_beyond_limits:
+    """Beyond the paper: the exact MSPD against conservative and upwind finite volumes (untimed)."""
     input:
+        code=imports("sticky/beyond_limits.py"),
+    output:
+        "results/sticky/beyond_limits.npz",
+    log:
+        "logs/sticky/beyond_limits.log",
+    benchmark:
+        "logs/benchmarks/sticky_beyond_limits.tsv"
+    conda:
+        ENVIRONMENT
+    threads: 1
+    params:
+        system=lambda wildcards: {key: STICKY["psystem"][key] for key in ("nu", "kappa")},
+        cases=lambda wildcards: {
+            case: STICKY["psystem"][case] for case in ("rarefaction", "shocks")
+        },
+        cfg=STICKY["beyond"],
+    script:
+        "../scripts/sticky/beyond_limits.py"
+
+
+rule sticky_beyond:
+    """Beyond the paper: the cost study (timed runs only), merged with the limits. Runs alone (all
+    cores reserved) so that its timings are not disturbed by other jobs."""
+    input:
+        limits="results/sticky/beyond_limits.npz",
         code=imports("sticky/beyond_data.py"),
     output:
         "results/sticky/beyond.npz",

@@ -8,8 +8,12 @@ reference is also compared with a run of half its resolution, to show its own er
 
 import numpy as np
 
-from particle_methods.norms import w1_between_samples, w1_to_measure
-from particle_methods.sticky.cases import psystem_initial_configuration, psystem_initial_measures
+from particle_methods.norms import w1_to_measure
+from particle_methods.sticky.cases import (
+    configuration_distance,
+    psystem_initial_configuration,
+    psystem_initial_measures,
+)
 from particle_methods.sticky.mspd import mspd_positions
 from particle_methods.sticky.psystem import PSystem
 from particle_methods.workflow import logged, progress, save_results
@@ -28,10 +32,6 @@ def snapshots(case, x0, system, n, delta, times):
     return out
 
 
-def distance(a, b):
-    """W1^(d): sum over types of the W1 distances between the empirical measures."""
-    return sum(w1_between_samples(x, y) for x, y in zip(a, b))
-
 
 def run(system_params, cases, p, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
@@ -48,19 +48,19 @@ def run(system_params, cases, p, output):
             progress(f"{name}: Delta sweep, n = {n}, reference Delta = {p['reference_delta']:g}")
             reference = snapshots(name, x0, system, int(n), p["reference_delta"], times)
             coarser = snapshots(name, x0, system, int(n), 2 * p["reference_delta"], times)
-            gaps.append([distance(a, b) for a, b in zip(reference, coarser)])
+            gaps.append([configuration_distance(a, b) for a, b in zip(reference, coarser)])
             for j, delta in enumerate(deltas):
                 run_ = snapshots(name, x0, system, int(n), delta, times)
-                delta_errors[c, m, :, j] = [distance(a, b) for a, b in zip(run_, reference)]
+                delta_errors[c, m, :, j] = [configuration_distance(a, b) for a, b in zip(run_, reference)]
         delta_reference_gap[c] = np.max(gaps, axis=0)
         progress(f"{name}: n sweep, Delta = {p['n_delta']:g}, reference n = {p['reference_n']}")
         reference = snapshots(name, x0, system, p["reference_n"], p["n_delta"], times)
         coarser = snapshots(name, x0, system, p["reference_n"] // 2, p["n_delta"], times)
-        n_reference_gap[c] = [distance(a, b) for a, b in zip(reference, coarser)]
+        n_reference_gap[c] = [configuration_distance(a, b) for a, b in zip(reference, coarser)]
         measures = psystem_initial_measures(name, x0)
         for j, n in enumerate(n_values.astype(np.int64)):
             run_ = snapshots(name, x0, system, int(n), p["n_delta"], times)
-            n_errors[c, :, j] = [distance(a, b) for a, b in zip(run_, reference)]
+            n_errors[c, :, j] = [configuration_distance(a, b) for a, b in zip(run_, reference)]
             initial = sum(w1_to_measure(m, x) for m, x in zip(measures, psystem_initial_configuration(name, x0, n)))
             # Theorem 4.4 without its constants: W1^(d)(m, mu_0[x(n)]) + t d L_LC / n.
             bounds[c, :, j] = initial + times * system.d * system.speed_lipschitz / n

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import hashlib
 import os
+from pathlib import Path
 
 import numba
 
@@ -12,6 +14,47 @@ import numba
 # Passive threads sleep at once. Read when the OpenMP library starts, at the first parallel call; a value
 # the user set is kept.
 os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+
+#: Where the package's numba caches are stamped with the sources they were compiled from.
+SOURCES_STAMP = Path(__file__).parent / "__pycache__" / "numba-sources.sha256"
+
+
+def sources_digest(root: Path = Path(__file__).parent) -> str:
+    """SHA-256 of every Python source of the package (paths and contents)."""
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        digest.update(path.relative_to(root).as_posix().encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def clear_stale_caches(root: Path = Path(__file__).parent, stamp: Path = SOURCES_STAMP) -> bool:
+    """Remove the package's numba caches (``__pycache__/*.nbi``, ``*.nbc``) if any source changed since
+    they were written; returns whether it did.
+
+    numba keys a cached kernel by the modification time and size of the file that defines it only: a
+    kernel that calls a compiled function of another module keeps its old machine code when only that
+    module changes (a flux formula edited in ``sticky/exact.py`` left ``finite_volume``'s cached scheme
+    unchanged). One digest of all sources makes any edit recompile everything once."""
+    digest = sources_digest(root)
+    try:
+        if stamp.read_text() == digest:
+            return False
+    except OSError:
+        pass
+    for cache in [*root.rglob("__pycache__/*.nbi"), *root.rglob("__pycache__/*.nbc")]:
+        cache.unlink(missing_ok=True)
+    try:
+        stamp.parent.mkdir(exist_ok=True)
+        temporary = stamp.with_name(f"{stamp.name}.{os.getpid()}")
+        temporary.write_text(digest)
+        temporary.replace(stamp)
+    except OSError:  # a read-only installation: numba then keeps its caches elsewhere
+        pass
+    return True
+
+
+clear_stale_caches()
 
 #: Options passed to :func:`numba.njit` for every kernel. ``cache=True`` keeps the
 #: compiled machine code on disk so that pipeline steps do not pay the JIT again.

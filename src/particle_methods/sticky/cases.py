@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..finite_volume import l1_distance_to_step_cdf
-from ..norms import cdf_antiderivative, w1_to_measure
+from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
 from ..validation import finite_array, finite_number, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux, concave_flux
 from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
@@ -100,6 +100,15 @@ def distance_to_cells(configuration, w, x_edges) -> float:
         raise ValueError(f"the particles span [{configuration.min():.6g}, {configuration.max():.6g}], beyond the grid "
                          f"[{edges[0]:.6g}, {edges[-1]:.6g}]: widen x_edges")
     return sum(l1_distance_to_step_cdf(values, edges, points) for values, points in zip(w, configuration))
+
+
+def configuration_distance(a, b) -> float:
+    """W1^(d) (1.10) between two configurations (d, n) and (d, m) of equal-mass particles: the sum over
+    types of the W1 distances between their empirical measures."""
+    a, b = finite_array("a", a, ndim=2), finite_array("b", b, ndim=2)
+    if a.shape[0] != b.shape[0]:
+        raise ValueError(f"a and b must be configurations (d, n) with the same d, got shapes {a.shape} and {b.shape}")
+    return float(sum(w1_between_samples(x, y) for x, y in zip(a, b)))
 
 
 def empirical_cdf(points, x) -> np.ndarray:

@@ -15,13 +15,14 @@ from .measures import Laplace, QuantileMeasure, checked_measure
 
 
 def _burgers_formula(u):
-    """u^2/2 without checks, for compiled kernels given finite states."""
-    return 0.5 * np.asarray(u, dtype=np.float64) ** 2
+    """u^2/2 without checks, for finite float states or arrays of them (compiled kernels call it on
+    scalars: no array is made)."""
+    return 0.5 * u ** 2
 
 
 def _concave_formula(u):
-    """u(1 - u)/2 without checks, for compiled kernels given finite states."""
-    u = np.asarray(u, dtype=np.float64)
+    """u(1 - u)/2 without checks, for finite float states or arrays of them (compiled kernels call it
+    on scalars: no array is made)."""
     return 0.5 * u * (1.0 - u)
 
 

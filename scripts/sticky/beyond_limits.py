@@ -1,0 +1,70 @@
+"""Beyond the paper (section 5.2), part 1: the exact MSPD's limit, untimed.
+
+For both p-system cases the exact MSPD with n particles per type is compared, at one time t, with a
+conservative HLL solution of the p-system at ``reference_cells`` (mapped to Riemann invariants) and
+with the upwind scheme for (1.7) at the same resolution; each reference is also compared with itself
+at half its resolution. The exact MSPD with the largest n is kept: the cost study
+(``beyond_data.py``) measures its errors against it. Nothing here is timed, so this job holds one
+core while the timed runs hold them all.
+"""
+
+import numpy as np
+
+from particle_methods.finite_volume import l1_between_cell_functions
+from particle_methods.sticky.cases import (
+    configuration_distance,
+    distance_to_cells,
+    psystem_initial_cells,
+    psystem_initial_configuration,
+)
+from particle_methods.sticky.multitype_events import mspd_exact
+from particle_methods.sticky.psystem import PSystem
+from particle_methods.sticky.psystem_volumes import hll_psystem, invariants_from_conservative, upwind_diagonal
+from particle_methods.workflow import logged, progress, save_results
+
+PSYSTEM_CASES = ("rarefaction", "shocks")
+
+
+
+def cell_distance(a, b, edges_a, edges_b):
+    return sum(l1_between_cell_functions(x, edges_a, y, edges_b) for x, y in zip(a, b))
+
+
+def hll_invariants(system, case, x0, edges, t, cfl):
+    """Riemann invariants (w-, w+) of the conservative HLL run, shape (2, cells)."""
+    u0, v0 = system.physical_variables(*psystem_initial_cells(case, x0, edges))
+    return np.array(invariants_from_conservative(system, *hll_psystem(system, u0, v0, edges, t, cfl)))
+
+
+def upwind_invariants(system, case, x0, edges, t, cfl):
+    """Riemann invariants of the upwind scheme for (1.7), shape (2, cells)."""
+    return upwind_diagonal(system, psystem_initial_cells(case, x0, edges), edges, t, cfl)
+
+
+def run(system_params, cases, p, output):
+    system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
+    t, cfl = p["t"], p["cfl"]
+    limit_n = np.asarray(p["limit_n"])
+    results = {}
+    for name in PSYSTEM_CASES:
+        x0 = cases[name]["x0"]
+        fine = np.linspace(*p["domain"], p["reference_cells"] + 1)
+        coarse = np.linspace(*p["domain"], p["reference_cells"] // 2 + 1)
+        hll, hll_half = (hll_invariants(system, name, x0, edges, t, cfl) for edges in (fine, coarse))
+        up, up_half = (upwind_invariants(system, name, x0, edges, t, cfl) for edges in (fine, coarse))
+        progress(f"{name}: references on {p['reference_cells']} cells done")
+        exact = {n: mspd_exact(psystem_initial_configuration(name, x0, int(n)), system, [t])[0] for n in limit_n}
+        to_hll = [distance_to_cells(exact[n], hll, fine) for n in limit_n]
+        to_upwind = [distance_to_cells(exact[n], up, fine) for n in limit_n]
+        progress(f"{name}: MSPD to HLL {np.array(to_hll)}, to upwind {np.array(to_upwind)}")
+        results[name] = dict(
+            limit_to_hll=to_hll, limit_to_upwind=to_upwind,
+            mspd_gap=configuration_distance(exact[limit_n[-1]], exact[limit_n[-2]]),
+            hll_gap=cell_distance(hll, hll_half, fine, coarse), upwind_gap=cell_distance(up, up_half, fine, coarse),
+            hll_to_upwind=cell_distance(hll, up, fine, fine), hll_w=hll, upwind_w=up, mspd=exact[limit_n[-1]])
+    save_results(output, t=t, cases=np.array(PSYSTEM_CASES), limit_n=limit_n, reference_cells=p["reference_cells"],
+                 **{f"{case}_{key}": np.asarray(value) for case, r in results.items() for key, value in r.items()})
+
+
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+    run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.output[0])  # noqa: F821
