@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import prange
 
-from ..jit import njit
+from ..jit import njit, njit_threaded
 from ..threads import threads_for
 from ..validation import (
     finite_array,
@@ -248,7 +248,7 @@ def _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, s
             divergences[c, j] -= masses[i] * lap
 
 
-@njit(parallel=True)
+@njit_threaded
 def _accumulators_parallel(positions, masses, kinds, coefficients, parameters, tables, steps):
     n, dimension = positions.shape
     velocities = np.zeros((_ACCUMULATORS, n, dimension))
@@ -396,7 +396,7 @@ def _tiled_2d_accumulate(c, x, y, masses, constants, terms, self_lap, vx, vy, di
         divergence[c, i] -= sd + mi * self_lap
 
 
-@njit(parallel=True)
+@njit_threaded
 def _tiled_2d_parallel(x, y, masses, constants, terms, self_lap):
     vx = np.zeros((_ACCUMULATORS, x.size))
     vy = np.zeros((_ACCUMULATORS, x.size))
@@ -513,7 +513,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
         return _reduce(*_accumulators_parallel(positions, masses, kinds, coefficients, parameters, tables, steps))
 
 
-@njit(parallel=True)
+@njit_threaded
 def pair_energy(positions, masses, kinds, coefficients, parameters, tables, steps):
     """E_delta = 1/2 sum_{i,j} K(X_i - X_j) m_i m_j, (2.4) on the particle system (2.3)."""
     n, dimension = positions.shape

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import prange
 
-from ..jit import njit
+from ..jit import njit, njit_threaded
 from ..threads import threads_for
 from ..validation import finite_array, finite_result, finite_values, integer_at_least, positive, same_length
 
@@ -82,7 +82,7 @@ REACH = 8.5
 PARALLEL_MIN_TARGETS = 1000
 
 
-@njit(parallel=True)
+@njit_threaded
 def _windowed_sums(targets, sources, weights, scales, inverse, reach):
     """sum over the sorted sources within ``reach`` of each target of weights_j sum_k scales_k e^{-inverse_k r^2}."""
     out = np.zeros(targets.size)

@@ -35,7 +35,7 @@ import numba
 import numpy as np
 from numba import prange
 
-from ..jit import njit
+from ..jit import njit, njit_threaded
 from ..threads import numba_threads
 from ..validation import finite_array, finite_result, same_length
 from .tile_sums import row_share
@@ -197,7 +197,7 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
         div[c, i] -= sd + mi * self_term
 
 
-@njit(parallel=True)
+@njit_threaded
 def _near_sums(x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2):
     """Gaussian share of grad K_delta and the divergence, for points sorted by cell key:
     v_i = sum_j m_j sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j), div_i = -sum_j m_j sum_k l_k e^{-a_k r^2}

@@ -26,7 +26,7 @@ import math
 import numpy as np
 from numba import prange
 
-from ..jit import njit
+from ..jit import njit, njit_threaded
 from .vector_erfc import erfc_and_gauss
 
 #: Term kinds this path takes (the values of :mod:`.kernels`, repeated here to avoid a cycle).
@@ -137,7 +137,7 @@ def _weighted(start, stop, masses, g, lap_tile):
     return g0 + g1, l0 + l1
 
 
-@njit(parallel=True)
+@njit_threaded
 def sorted_sums(x, masses, kinds, coefficients, widths, far, radius):
     """Velocities and divergences (-sum_j m_j grad K, -sum_j m_j Delta K) of positions ``x`` sorted
     increasingly; ``far`` = (a, b, c) of :func:`far_coefficients`, ``radius`` the window half-width."""

@@ -32,7 +32,7 @@ from __future__ import annotations
 import numpy as np
 from numba import prange
 
-from ..jit import njit
+from ..jit import njit, njit_threaded
 from ..threads import threads_for
 from ..validation import finite_array, finite_result
 from .checks import particle_arrays, piece_arrays, power_arrays
@@ -142,7 +142,7 @@ def _shape_cdf(s, breaks, pieces):
     return total
 
 
-@njit(parallel=True)
+@njit_threaded
 def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, cumulative, density):
     """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i; the terms with a = 1 from F_h and rho_h
     at the targets (``cumulative``, ``density``, computed once by :func:`_cumulative_and_density`)."""
@@ -204,31 +204,32 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
 
 
 @njit
-def _edges_and_prefix(centres, weights, widths, breaks):
-    """Particles sorted by centre (order), their right edges x_k + r h_k sorted (with the prefix sums of
-    the weights in that order, Neumaier-compensated) and the largest half-width r max h_k."""
-    order = np.argsort(centres)
-    right = centres + breaks[-1] * widths
-    by_right = np.argsort(right)
-    prefix = np.zeros(centres.size + 1)
+def _prefix_by_right_edge(weights, by_right):
+    """Prefix sums of the weights in the order ``by_right`` of the particles' right edges,
+    Neumaier-compensated."""
+    prefix = np.zeros(weights.size + 1)
     total = 0.0
     compensation = 0.0
-    for m in range(centres.size):
+    for m in range(weights.size):
         w = weights[by_right[m]]
         t = total + w
         compensation += (total - t) + w if abs(total) >= abs(w) else (w - t) + total
         total = t
         prefix[m + 1] = total + compensation
-    return order, right, right[by_right], prefix, breaks[-1] * widths.max()
+    return prefix
 
 
-@njit(parallel=True)
-def _cumulative_and_density(points, centres, weights, widths, breaks, pieces):
+@njit_threaded
+def _cumulative_and_density(points, centres, weights, widths, breaks, pieces, order, by_right):
     """(F_h, rho_h) at every point, (2.27) and its integral, in O((N + P) log N + P w) for w particles
     within the widest support of a point. F_h(t) = sum over particles whose support ends left of t (a
     prefix sum over the sorted right edges) + sum_k omega_k Phi((t - x_k)/h_k) over the particles whose
-    support contains t, all of them among the centres within r max h_k of t."""
-    order, right, right_sorted, prefix, reach = _edges_and_prefix(centres, weights, widths, breaks)
+    support contains t, all of them among the centres within r max h_k of t. ``order`` sorts the centres,
+    ``by_right`` the right edges x_k + r h_k (:func:`_cumulative_and_density_of`)."""
+    right = centres + breaks[-1] * widths
+    right_sorted = right[by_right]
+    prefix = _prefix_by_right_edge(weights, by_right)
+    reach = breaks[-1] * widths.max()
     sorted_centres = centres[order]
     cumulative = np.zeros(points.size)
     density = np.zeros(points.size)
@@ -256,6 +257,14 @@ def _cumulative_and_density(points, centres, weights, widths, breaks, pieces):
 PARALLEL_MIN_TARGETS = 1000
 
 
+def _cumulative_and_density_of(points, centres, weights, widths, breaks, pieces):
+    """:func:`_cumulative_and_density`, the particles sorted by NumPy (a sort compiled by numba costs
+    about 3 s of compilation in every cold process)."""
+    order = np.argsort(centres, kind="stable")
+    by_right = np.argsort(centres + breaks[-1] * widths, kind="stable")
+    return _cumulative_and_density(points, centres, weights, widths, breaks, pieces, order, by_right)
+
+
 def convolution_sums(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
     """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) for arrays already checked (by :func:`convolutions`, or
     once before the time loop of :func:`particle_methods.ltp.solver.simulate`, which checks every step's
@@ -263,7 +272,7 @@ def convolution_sums(targets, centres, weights, widths, coefficients, exponents,
     the pair sums of :func:`_convolutions`."""
     with threads_for(targets.size, PARALLEL_MIN_TARGETS):
         if np.any(exponents == 1.0):
-            cumulative, density = _cumulative_and_density(targets, centres, weights, widths, breaks, pieces)
+            cumulative, density = _cumulative_and_density_of(targets, centres, weights, widths, breaks, pieces)
         else:
             cumulative = density = targets
         return _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces,
@@ -290,7 +299,7 @@ def density_at(points, centres, weights, widths, breaks, pieces):
     centres, weights, widths = particle_arrays(centres, weights, widths)
     breaks, pieces = piece_arrays(breaks, pieces)
     with threads_for(points.size, PARALLEL_MIN_TARGETS):
-        _, density = _cumulative_and_density(points, centres, weights, widths, breaks, pieces)
+        _, density = _cumulative_and_density_of(points, centres, weights, widths, breaks, pieces)
     return finite_result("rho_h", density, OVERFLOW)
 
 
@@ -301,5 +310,5 @@ def cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
     centres, weights, widths = particle_arrays(centres, weights, widths)
     breaks, pieces = piece_arrays(breaks, pieces)
     with threads_for(points.size, PARALLEL_MIN_TARGETS):
-        cumulative, _ = _cumulative_and_density(points, centres, weights, widths, breaks, pieces)
+        cumulative, _ = _cumulative_and_density_of(points, centres, weights, widths, breaks, pieces)
     return finite_result("F_h", cumulative, OVERFLOW)
