@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import prange
 
-from ..jit import njit, njit_threaded
+from ..jit import njit_threaded
 from ..threads import threads_for
 from ..validation import finite_array, finite_result, finite_values, integer_at_least, positive, same_length
 
