@@ -16,10 +16,31 @@ CROSS_FIGURES = expand(
 )
 
 
-rule cross_study:
-    """Every method at every size on both data and times: W1 errors and wall times. It takes every
-    core, so that no other rule runs while it times."""
+rule cross_errors:
+    """Every method at every size on both data and times, each run once: W1 errors and diagnostics."""
     input:
+        code=imports("cross/study_data.py"),
+    output:
+        "results/cross/study_errors.npz",
+    log:
+        "logs/cross/study_errors.log",
+    benchmark:
+        "logs/benchmarks/cross_errors.tsv"
+    conda:
+        ENVIRONMENT
+    threads: 1
+    params:
+        cfg=CROSS,
+        part="errors",
+    script:
+        "../scripts/cross/study_data.py"
+
+
+rule cross_study:
+    """The same runs timed, merged with their errors. It takes every core, so that no other rule runs
+    while it times."""
+    input:
+        errors="results/cross/study_errors.npz",
         code=imports("cross/study_data.py"),
     output:
         "results/cross/study.npz",
@@ -32,6 +53,7 @@ rule cross_study:
     threads: workflow.cores
     params:
         cfg=CROSS,
+        part="times",
     script:
         "../scripts/cross/study_data.py"
 

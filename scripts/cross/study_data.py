@@ -1,9 +1,12 @@
 """One equation, every method: W1 errors and wall times on the 1D aggregation equation with K = |x|/2.
 
-For each data and time of the config, every method runs at each of its sizes; the W1 distance of
-its output to the exact solution (:mod:`particle_methods.cross.exact`) is computed on the
-method's own output, and its wall time (initial discretisation plus evolution, after a warm-up
-run that compiles every kernel) is the best of ``repeats`` runs when a run is short.
+For each data and time of the config, every method runs at each of its sizes. Two jobs run this script:
+
+- ``part: errors`` (one core): each run once; the W1 distance of its output to the exact solution
+  (:mod:`particle_methods.cross.exact`), computed on the method's own output, and the diagnostics;
+- ``part: times`` (every core, so that no other job disturbs it): the same runs timed, initial
+  discretisation plus evolution, after a warm-up run that compiles every kernel, the best of
+  ``repeats`` runs when a run is short; merged with the errors into the study's results.
 """
 
 import numpy as np
@@ -79,37 +82,66 @@ def method_table(p):
     return table
 
 
-def run(p, output):
+def runs(p):
+    """(data index, data, time index, time, method index, method name, sizes, method, W1) of every
+    method at every data and time where it runs, in the order of the results."""
     table = method_table(p)
     times = sorted({t for entry in table.values() for t in entry[0]})
-    rows, cases = [], []
     for d_index, data in enumerate(p["data"]):
         for t_index, t in enumerate(times):
-            solution = AggregationSolution(data, t)
+            for m_index, (name, (method_times, sizes, method, w1)) in enumerate(table.items()):
+                if t in method_times:
+                    yield d_index, data, t_index, t, m_index, name, sizes[t] if isinstance(sizes, dict) else sizes, \
+                        method, w1
+
+
+def errors(p, output):
+    """Every run once: W1 errors and diagnostics (untimed)."""
+    table = method_table(p)
+    times = sorted({t for entry in table.values() for t in entry[0]})
+    cases, solutions = [], {}
+    for data in p["data"]:
+        for t in times:
+            solution = solutions[data, t] = AggregationSolution(data, t)
             cases.append((data, t, solution.mass, solution.dirac_mass))
             progress(f"{data}, t = {t:g}: mass {solution.mass:.6g}, Dirac mass {solution.dirac_mass:.6g}")
-            for m_index, (name, (method_times, sizes, method, w1)) in enumerate(table.items()):
-                if t not in method_times:
-                    continue
-                if isinstance(sizes, dict):
-                    sizes = sizes[t]
-                method(data, sizes[0], t)  # warm-up: compile and fill caches
-                for size in sizes:
-                    seconds, out = timed(lambda m=method, d=data, s=size, t=t: m(d, s, t), p["repeats"])
-                    error = w1(solution, out)
-                    rows.append((d_index, t_index, m_index, size, count(out), error, seconds,
-                                 dirac_width(solution, out), spd_difference(name, data, size, t, out)))
-                    progress(f"  {name:18} size {size:7d} ({count(out)}): W1 {error:.4g} in {seconds:.4g} s")
+    rows = []
+    for d_index, data, t_index, t, m_index, name, sizes, method, w1 in runs(p):
+        solution = solutions[data, t]
+        for size in sizes:
+            out = method(data, size, t)
+            error = w1(solution, out)
+            rows.append((d_index, t_index, m_index, size, count(out), error, dirac_width(solution, out),
+                         spd_difference(name, data, size, t, out)))
+            progress(f"  {data}, t = {t:g}, {name:18} size {size:7d} ({count(out)}): W1 {error:.4g}")
     rows = np.array(rows)
     case_data, case_times, case_mass, case_dirac = zip(*cases)
-    save_results(output[0], data=np.array(p["data"]), times=np.array(times, dtype=float),
+    save_results(output, data=np.array(p["data"]), times=np.array(times, dtype=float),
                  methods=np.array(list(table)), data_index=rows[:, 0].astype(int),
                  time_index=rows[:, 1].astype(int), method_index=rows[:, 2].astype(int),
-                 size=rows[:, 3].astype(int), count=rows[:, 4].astype(int), error=rows[:, 5], seconds=rows[:, 6],
-                 dirac_width=rows[:, 7], spd_difference=rows[:, 8],
+                 size=rows[:, 3].astype(int), count=rows[:, 4].astype(int), error=rows[:, 5],
+                 dirac_width=rows[:, 6], spd_difference=rows[:, 7],
                  case_data=np.array(case_data), case_times=np.array(case_times), case_mass=np.array(case_mass),
                  case_dirac=np.array(case_dirac))
 
 
+def times(p, errors_path, output):
+    """Every run timed (after a warm-up per method, data and time), merged with the errors."""
+    results = dict(np.load(errors_path))
+    seconds = []
+    for _, data, _, t, _, name, sizes, method, _ in runs(p):
+        method(data, sizes[0], t)  # warm-up: compile and fill caches
+        for size in sizes:
+            best, _ = timed(lambda m=method, d=data, s=size, t=t: m(d, s, t), p["repeats"])
+            seconds.append(best)
+            progress(f"  {data}, t = {t:g}, {name:18} size {size:7d}: {best:.4g} s")
+    if len(seconds) != results["size"].size:
+        raise RuntimeError(f"{len(seconds)} timed runs for {results['size'].size} measured ones: the errors are stale")
+    save_results(output, **results, seconds=np.array(seconds))
+
+
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(snakemake.params.cfg, snakemake.output)  # noqa: F821
+    if snakemake.params.part == "errors":  # noqa: F821
+        errors(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+    else:
+        times(snakemake.params.cfg, snakemake.input.errors, snakemake.output[0])  # noqa: F821
