@@ -68,3 +68,29 @@ def test_density_matches_the_sum_of_shapes():
     expected = sum(w * B3((x - c) / h) / h for c, w, h in zip(CENTRES, WEIGHTS, WIDTHS))
     np.testing.assert_allclose(density_at(x, CENTRES, WEIGHTS, WIDTHS, B3.breaks, B3.coefficients), expected,
                                atol=1e-12)
+
+
+@pytest.mark.parametrize("shape", [HAT, B3], ids=lambda s: s.name)
+@pytest.mark.parametrize("a", [1.2, 1.5, 2.5, 3.5])
+def test_far_particles_by_the_binomial_series_match_a_fine_gauss_rule(shape, a):
+    """Particles 12 piece lengths or more from every target take the binomial series of the module
+    docstring; against 30 Gauss nodes per piece (exact to rounding so far from z = 0) the sums agree to
+    1e-12 relative (the 3- and 4-node rules it replaced were off by up to 1.5e-11 here)."""
+    rng = np.random.default_rng(2)
+    h, n = 0.01, 200
+    centres = np.sort(rng.uniform(-1, 1, n))
+    weights = rng.uniform(0.5, 1.5, n) * h
+    widths = h * rng.uniform(0.5, 3, n)
+    targets = np.concatenate([np.linspace(-2.1, -1.2, 50), np.linspace(1.2, 2.1, 50)])
+    first, second = convolutions(targets, centres, weights, widths, np.array([1.0]), np.array([a]), shape.breaks,
+                                 shape.coefficients)
+    nodes, gauss_weights = np.polynomial.legendre.leggauss(30)
+    expected_first, expected_second = np.zeros(targets.size), np.zeros(targets.size)
+    for lo, hi, c in zip(shape.breaks[:-1], shape.breaks[1:], shape.coefficients):
+        s = 0.5 * (hi + lo) + 0.5 * (hi - lo) * nodes
+        phi = 0.5 * (hi - lo) * gauss_weights * (c[0] + s * (c[1] + s * (c[2] + s * c[3])))
+        z = targets[:, None, None] - centres[None, :, None] - widths[None, :, None] * s
+        expected_first += np.sum(weights[:, None] * phi * np.sign(z) * np.abs(z) ** (a - 1), axis=(1, 2))
+        expected_second += (a - 1) * np.sum(weights[:, None] * phi * np.abs(z) ** (a - 2), axis=(1, 2))
+    assert np.max(np.abs(first - expected_first)) <= 1e-12 * np.max(np.abs(expected_first))
+    assert np.max(np.abs(second - expected_second)) <= 1e-12 * np.max(np.abs(expected_second))

@@ -13,7 +13,15 @@ z = 0 exceeds NEAR times its length, K is analytic over the piece and a Gauss-Le
 rule is used instead, where the monomial expansion would cancel badly. Its error decays
 like rho^(-2n) with rho ~ 2 D / L the Bernstein-ellipse parameter (D the distance from
 the piece's middle to the singularity, L its half-length): 6 nodes beyond 4 lengths,
-4 beyond 12 and 3 beyond 40 keep every piece below about 1e-13 relative error.
+4 beyond 12 and 3 beyond 40 keep every piece below about 1e-13 relative error. A particle whose
+whole support lies beyond EXPANSION = 12 piece lengths from t takes one series instead of its pieces:
+with u = |d|, sigma = sign(d) and mu_m = int s^m phi(s) ds the moments of the shape (support [-r, r]),
+
+    int |d - h_k s|^q phi(s) ds = u^q sum_m binom(q, m) (-sigma h_k / u)^m mu_m,
+
+a binomial series whose terms are at most |binom(q, m)| (r h_k / u)^m <= (r / (12 + r))^m (phi >= 0, so
+|mu_m| <= r^m): the FAR_MOMENTS = 16 terms (m = 0..15) leave about 3e-14 relative for the cubic
+B-spline (r = 2), with one power per pair instead of one per Gauss node (2 to 4 times faster).
 Terms with a = 2 need no pair sums: (c z) * rho_h and c * rho_h are moments.
 Terms with a = 1, W = c|x| (the Newtonian potential in 1D), have W' = c sign(z) and the
 distributional W'' = 2c delta, so both convolutions are exact without piece integrals:
@@ -29,6 +37,8 @@ check that the results are finite.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from numba import prange
 
@@ -42,6 +52,11 @@ NEAR = 4.0
 GAUSS_TIERS = ((40.0, 3), (12.0, 4), (NEAR, 6))
 _RULES = [np.polynomial.legendre.leggauss(points) for _, points in GAUSS_TIERS]
 _FAR, _MIDDLE = GAUSS_TIERS[0][0], GAUSS_TIERS[1][0]
+#: A particle whose support lies beyond this many piece lengths from the target takes the binomial series.
+EXPANSION = _MIDDLE
+#: Terms of the binomial series (moments m = 0 .. FAR_MOMENTS - 1 of the shape).
+FAR_MOMENTS = 16
+_NO_MOMENTS = np.zeros(FAR_MOMENTS)  # for sums without power terms, which never read them
 _NODES_FAR, _WEIGHTS_FAR = _RULES[0]
 _NODES_MIDDLE, _WEIGHTS_MIDDLE = _RULES[1]
 _NODES_NEAR, _WEIGHTS_NEAR = _RULES[2]
@@ -111,6 +126,45 @@ def _piece_gauss(d, width, lo, hi, coefficients, a, nodes, weights):
 
 
 @njit
+def _particle_far(d, width, a, moments):
+    """int sign(z)|z|^{a-1} phi(s) ds and int |z|^{a-2} phi(s) ds, z = d - width s, for a particle whose
+    support lies far from z = 0: the binomial series of the module docstring on the shape's moments."""
+    u = abs(d)
+    sigma = 1.0 if d > 0.0 else -1.0
+    ratio = -sigma * width / u
+    q1 = a - 1.0
+    q2 = a - 2.0
+    b1 = 1.0
+    b2 = 1.0
+    power_of_ratio = 1.0
+    s1 = 0.0
+    s2 = 0.0
+    for m in range(moments.size):
+        s1 += b1 * power_of_ratio * moments[m]
+        s2 += b2 * power_of_ratio * moments[m]
+        b1 *= (q1 - m) / (m + 1.0)
+        b2 *= (q2 - m) / (m + 1.0)
+        power_of_ratio *= ratio
+    power = _power(u, q2)
+    return sigma * power * u * s1, power * s2
+
+
+def shape_moments(breaks, pieces, count: int = FAR_MOMENTS) -> np.ndarray:
+    """mu_m = int s^m phi(s) ds for m < count, exact piece by piece (arrays already checked); computed once
+    per shape (the time loops ask for them at every step)."""
+    breaks, pieces = np.asarray(breaks, dtype=np.float64), np.asarray(pieces, dtype=np.float64)
+    return _moments(breaks.tobytes(), pieces.tobytes(), pieces.shape, count).copy()
+
+
+@functools.lru_cache(maxsize=64)
+def _moments(breaks, pieces, shape, count):
+    breaks, pieces = np.frombuffer(breaks), np.frombuffer(pieces).reshape(shape)
+    m = np.arange(count)[:, None] + np.arange(4)[None, :] + 1.0  # powers of s after integration
+    lo, hi = breaks[:-1, None, None], breaks[1:, None, None]
+    return np.sum(pieces[:, None, :] * (hi**m - lo**m) / m, axis=(0, 2))
+
+
+@njit
 def _shape_value(s, breaks, pieces):
     """phi(s) of the piecewise cubic shape, 0 outside the open support (-r, r)."""
     if s <= breaks[0] or s >= breaks[-1]:
@@ -143,7 +197,8 @@ def _shape_cdf(s, breaks, pieces):
 
 
 @njit_threaded
-def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, cumulative, density):
+def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, moments, cumulative,
+                  density):
     """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i; the terms with a = 1 from F_h and rho_h
     at the targets (``cumulative``, ``density``, computed once by :func:`_cumulative_and_density`)."""
     first = np.zeros(targets.size)
@@ -153,6 +208,9 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
     for k in range(centres.size):
         total_mass += weights[k]
         first_moment += weights[k] * centres[k]
+    longest = 0.0
+    for j in range(pieces.shape[0]):
+        longest = max(longest, breaks[j + 1] - breaks[j])
     for i in prange(targets.size):
         buffer = np.empty(4)
         f = 0.0
@@ -175,6 +233,11 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
             for k in range(centres.size):
                 d = targets[i] - centres[k]
                 width = widths[k]
+                if max(d - width * breaks[-1], width * breaks[0] - d) > EXPANSION * width * longest:
+                    p1, p2 = _particle_far(d, width, a, moments)
+                    term_first += weights[k] * p1
+                    term_second += weights[k] * p2
+                    continue
                 pair_first = 0.0
                 pair_second = 0.0
                 for j in range(pieces.shape[0]):
@@ -275,7 +338,8 @@ def convolution_sums(targets, centres, weights, widths, coefficients, exponents,
             cumulative, density = _cumulative_and_density_of(targets, centres, weights, widths, breaks, pieces)
         else:
             cumulative = density = targets
-        return _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces,
+        series = shape_moments(breaks, pieces) if np.any((exponents != 1.0) & (exponents != 2.0)) else _NO_MOMENTS
+        return _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, series,
                              cumulative, density)
 
 
