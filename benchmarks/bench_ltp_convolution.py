@@ -5,8 +5,9 @@
 For particles spread like those of Figures 5-8 (N on [-1, 1], widths h = 2/N) it
 times one evaluation of W' * rho_h and W'' * rho_h at every centre, reports pair
 interactions per second, counts the kernel evaluations the piecewise rule needs
-per pair (Gauss-Legendre nodes on far pieces, two antiderivative ends on near
-ones) and compares the time per evaluation with a compiled loop doing nothing but
+per pair (one power for a particle beyond EXPANSION piece lengths, which takes the
+binomial series; else Gauss-Legendre nodes on far pieces, two antiderivative ends on
+near ones) and compares the time per evaluation with a compiled loop doing nothing but
 the same power function: the ratio says how close the kernel is to its floor.
 """
 
@@ -15,7 +16,7 @@ import numpy as np
 from timing import best_time
 
 from particle_methods.ltp import B3, potential
-from particle_methods.ltp.kernels import GAUSS_TIERS, NEAR, convolutions
+from particle_methods.ltp.kernels import EXPANSION, GAUSS_TIERS, NEAR, convolutions
 
 
 @numba.njit(parallel=True, cache=True)
@@ -38,6 +39,8 @@ def evaluations_per_pair(centres, widths):
         for threshold, points in reversed(GAUSS_TIERS):
             nodes = np.where(distance > threshold * length, points, nodes)
         count += np.where(distance > NEAR * length, nodes, 2.0)
+    support = np.maximum(d - widths[None, :] * B3.breaks[-1], widths[None, :] * B3.breaks[0] - d)
+    count = np.where(support > EXPANSION * widths[None, :] * np.diff(B3.breaks).max(), 1.0, count)
     return float(count.mean())
 
 
