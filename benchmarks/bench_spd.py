@@ -69,7 +69,7 @@ def main():
 
 def hull_against_bandwidth(n, repeats):
     """ns per particle of the compiled hull against the memory-bandwidth estimate of its pass."""
-    from particle_methods.sticky.spd import _hull_positions
+    from particle_methods.sticky.spd import hull_positions_kernel
 
     rng = np.random.default_rng(1)
     x = np.sort(rng.normal(size=n))
@@ -83,7 +83,7 @@ def hull_against_bandwidth(n, repeats):
              ("sorted velocities (no collision)", np.sort(rng.normal(size=n))),
              ("one cluster (every particle collides)", -100 * np.sort(rng.normal(size=n))))
     for name, v in cases:
-        seconds, _ = best_time(lambda v=v: _hull_positions(x, v, 1.0, out), repeats)
+        seconds, _ = best_time(lambda v=v: hull_positions_kernel(x, v, 1.0, out), repeats)
         print(f"  {name:40} {seconds / n * 1e9:6.2f} ns per particle")
 
 

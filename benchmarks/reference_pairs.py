@@ -1,7 +1,7 @@
 """The pair sums of the build before issue 14, kept here as the reference the benchmarks compare with.
 
 One generic loop for every kernel: each pair i < j evaluated once through the kernel's term list
-(``_profile_forces``: a branch per term kind, scalar ``math.exp`` and ``math.erf``), dealt to 16
+(``profile_forces_kernel``: a branch per term kind, scalar ``math.exp`` and ``math.erf``), dealt to 16
 round-robin accumulators over ``prange``. The package now takes vectorised paths where it has
 them (see ``particle_methods.blob.kernels.pair_sums``).
 """
@@ -11,7 +11,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from particle_methods.blob.kernels import _profile_forces
+from particle_methods.blob.kernels import profile_forces_kernel
 
 ACCUMULATORS = 16
 
@@ -23,7 +23,7 @@ def reference_pair_sums(positions, masses, kinds, coefficients, parameters, tabl
     divergences = np.zeros((ACCUMULATORS, n))
     for c in prange(ACCUMULATORS):
         diff = np.empty(dimension)
-        _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, dimension, tables, steps)
+        _, self_lap = profile_forces_kernel(kinds, coefficients, parameters, 0.0, dimension, tables, steps)
         for i in range(c, n, ACCUMULATORS):
             divergences[c, i] -= masses[i] * self_lap
             for j in range(i + 1, n):
@@ -31,7 +31,7 @@ def reference_pair_sums(positions, masses, kinds, coefficients, parameters, tabl
                 for axis in range(dimension):
                     diff[axis] = positions[i, axis] - positions[j, axis]
                     r2 += diff[axis] * diff[axis]
-                g, lap = _profile_forces(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
+                g, lap = profile_forces_kernel(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
                 for axis in range(dimension):
                     velocities[c, i, axis] -= masses[j] * g * diff[axis]
                     velocities[c, j, axis] += masses[i] * g * diff[axis]

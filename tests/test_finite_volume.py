@@ -10,12 +10,13 @@ from particle_methods.finite_volume import (
     BURGERS,
     CONCAVE,
     ScalarFlux,
+    burgers_flux,
     cell_averages_of_step_cdf,
+    concave_flux,
     godunov,
     godunov_flux,
     l1_distance_to_step_cdf,
 )
-from particle_methods.sticky.exact import burgers_flux, concave_flux
 
 FLUXES = [(BURGERS, (-2.0, 2.0)), (CONCAVE, (-1.0, 2.0))]
 

@@ -19,9 +19,9 @@ import time
 import numpy as np
 
 from particle_methods.sticky.cases import psystem_initial_configuration
-from particle_methods.sticky.mspd import _ranks, mspd_positions
+from particle_methods.sticky.mspd import mspd_positions, ranks_kernel
 from particle_methods.sticky.psystem import PSystem
-from particle_methods.sticky.spd import _hull_positions
+from particle_methods.sticky.spd import hull_positions_kernel
 from particle_methods.workflow import logged, progress, save_results
 
 
@@ -54,14 +54,14 @@ def run(p, output):
     for n in p["hull_n"]:
         x = np.sort(rng.normal(size=n))
         out = np.empty(n)
-        hull.append(best_time(_hull_positions, (x, rng.normal(size=n), 1.0, out), repeats))
+        hull.append(best_time(hull_positions_kernel, (x, rng.normal(size=n), 1.0, out), repeats))
         # Increasing velocities: no collision, every point stays on the hull (the stack grows to n).
-        free.append(best_time(_hull_positions, (x, np.sort(rng.normal(size=n)), 1.0, out), repeats))
+        free.append(best_time(hull_positions_kernel, (x, np.sort(rng.normal(size=n)), 1.0, out), repeats))
         progress(f"hull pass, n = {n}: {hull[-1]:.3g} s random, {free[-1]:.3g} s without collision")
     ranks = []
     for n in p["rank_n"]:
         x = np.sort(rng.normal(size=(2, n)), axis=1)
-        ranks.append(best_time(_ranks, (x,), repeats))
+        ranks.append(best_time(ranks_kernel, (x,), repeats))
         progress(f"rank step (d = 2), n = {n}: {ranks[-1]:.3g} s")
     system = PSystem()
     tspd = []

@@ -5,10 +5,17 @@ import math
 
 import numpy as np
 
-from particle_methods.finite_volume import BURGERS, CONCAVE, cell_averages_of_step_cdf, godunov, l1_distance_to_step_cdf
+from particle_methods.finite_volume import (
+    BURGERS,
+    CONCAVE,
+    burgers_flux,
+    cell_averages_of_step_cdf,
+    godunov,
+    l1_distance_to_step_cdf,
+)
 from particle_methods.norms import w1_to_measure
 from particle_methods.sticky.cases import SCALAR_CASES
-from particle_methods.sticky.exact import BurgersSolution, burgers_flux
+from particle_methods.sticky.exact import BurgersSolution
 from particle_methods.sticky.measures import Atoms
 from particle_methods.sticky.spd import spd_positions, velocities_from_flux
 from particle_methods.workflow import logged, progress, save_results

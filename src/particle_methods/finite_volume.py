@@ -38,7 +38,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from .jit import njit
-from .sticky.exact import _burgers_formula, _concave_formula, burgers_flux, concave_flux
 from .validation import (
     ParameterTypeError,
     finite_array,
@@ -57,6 +56,30 @@ from .validation import (
 MAX_CELL_STEPS = 2 * 10**9
 
 _SHAPES = ("convex", "concave")
+
+
+def burgers_formula(u):
+    """u^2/2 without checks, for finite float states or arrays of them (compiled kernels call it on
+    scalars: no array is made)."""
+    return 0.5 * u ** 2
+
+
+def concave_formula(u):
+    """u(1 - u)/2 without checks, for finite float states or arrays of them (compiled kernels call it
+    on scalars: no array is made)."""
+    return 0.5 * u * (1.0 - u)
+
+
+def burgers_flux(u):
+    """Flux of the Burgers equation (5.1), Lambda(u) = u^2/2."""
+    u = in_interval("u", u, -np.inf, np.inf)  # any finite real array
+    return finite_result("the Burgers flux u^2/2", burgers_formula(u), "u is too large")
+
+
+def concave_flux(u):
+    """Concave flux of (5.3), Lambda(u) = u(1 - u)/2."""
+    u = in_interval("u", u, -np.inf, np.inf)
+    return finite_result("the concave flux u(1 - u)/2", concave_formula(u), "u is too large")
 
 
 @dataclass(frozen=True)
@@ -109,8 +132,8 @@ CONCAVE = ScalarFlux(f=concave_flux, derivative=_concave_speed, extremum=0.5, sh
 
 # The compiled kernel evaluates these fluxes by their position in this tuple.
 _COMPILED_FLUXES = (BURGERS, CONCAVE)
-_burgers_kernel = njit(_burgers_formula)
-_concave_kernel = njit(_concave_formula)
+_burgers_kernel = njit(burgers_formula)
+_concave_kernel = njit(concave_formula)
 
 
 def _checked_flux(flux) -> ScalarFlux:
@@ -181,7 +204,7 @@ def _evolve(u, dx, dt, t, flux_id, convex, extremum, left, right):
     return steps
 
 
-def _edges(x_edges, name: str = "x_edges") -> np.ndarray:
+def checked_edges(x_edges, name: str = "x_edges") -> np.ndarray:
     """Strictly increasing cell edges, at least two."""
     edges = sorted_array(name, x_edges)
     if edges.size < 2:
@@ -193,7 +216,7 @@ def _edges(x_edges, name: str = "x_edges") -> np.ndarray:
     return edges
 
 
-def _uniform_width(edges: np.ndarray) -> float:
+def uniform_width(edges: np.ndarray) -> float:
     """Common width of the cells, or a ValueError if the edges are not uniformly spaced."""
     dx = (edges[-1] - edges[0]) / (edges.size - 1)
     rounding = 8.0 * np.spacing(np.max(np.abs(edges)))
@@ -202,13 +225,13 @@ def _uniform_width(edges: np.ndarray) -> float:
     return float(dx)
 
 
-def _cells_match(name: str, values: np.ndarray, edges: np.ndarray, edges_name: str = "x_edges") -> None:
+def check_cells_match(name: str, values: np.ndarray, edges: np.ndarray, edges_name: str = "x_edges") -> None:
     if values.shape[-1] != edges.size - 1:
         raise ValueError(f"{name} has {values.shape[-1]} cells but {edges_name} has {edges.size} edges: need "
                          f"len({edges_name}) == {name}.shape[-1] + 1")
 
 
-def _time_and_cfl(t, cfl) -> tuple[float, float]:
+def checked_time_and_cfl(t, cfl) -> tuple[float, float]:
     """A final time t >= 0 and a Courant number in (0, 1]."""
     t = finite_number("t", t)
     if t < 0:
@@ -219,7 +242,7 @@ def _time_and_cfl(t, cfl) -> tuple[float, float]:
     return t, cfl
 
 
-def _check_cell_steps(t: float, dt: float, cells: int, limit: int) -> None:
+def check_cell_steps(t: float, dt: float, cells: int, limit: int) -> None:
     """Refuse a run of ceil(t / dt) steps over ``cells`` cells beyond ``limit`` cell updates."""
     with np.errstate(divide="ignore", over="ignore"):
         steps = np.ceil(t / dt)
@@ -244,10 +267,10 @@ def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right
     if flux not in _COMPILED_FLUXES:
         raise ValueError("flux must be BURGERS or CONCAVE: the compiled kernel evaluates only these fluxes")
     u = finite_array("u0", u0).copy()
-    edges = _edges(x_edges)
-    _cells_match("u0", u, edges)
-    dx = _uniform_width(edges)
-    t, cfl = _time_and_cfl(t, cfl)
+    edges = checked_edges(x_edges)
+    check_cells_match("u0", u, edges)
+    dx = uniform_width(edges)
+    t, cfl = checked_time_and_cfl(t, cfl)
     left = u[0] if left is None else finite_number("left", left)
     right = u[-1] if right is None else finite_number("right", right)
     states = np.concatenate([u, [left, right]])
@@ -257,7 +280,7 @@ def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right
         # No time to evolve, or every state sits at u*, where nothing moves.
         return (u, 0) if return_steps else u
     dt = np.float64(cfl) * dx / speed
-    _check_cell_steps(t, dt, u.size, MAX_CELL_STEPS)
+    check_cell_steps(t, dt, u.size, MAX_CELL_STEPS)
     taken = _evolve(u, dx, float(dt), t, _COMPILED_FLUXES.index(flux), flux.shape == "convex", flux.extremum, left,
                     right)
     if not np.all(np.isfinite(u)):
@@ -280,7 +303,7 @@ def cell_averages_of_step_cdf(points, x_edges) -> np.ndarray:
     counted. ``x_edges`` must be strictly increasing, not necessarily uniform.
     """
     x = _points(points)
-    edges = _edges(x_edges)
+    edges = checked_edges(x_edges)
     cells = edges.size - 1
     before = np.searchsorted(x, edges[:-1], side="left")
     cell = np.searchsorted(edges, x, side="right") - 1
@@ -303,8 +326,8 @@ def l1_distance_to_step_cdf(values, x_edges, points) -> float:
     1 on the right.
     """
     v = finite_array("values", values)
-    edges = _edges(x_edges)
-    _cells_match("values", v, edges)
+    edges = checked_edges(x_edges)
+    check_cells_match("values", v, edges)
     x = _points(points)
     breaks = np.union1d(edges, np.clip(x, edges[0], edges[-1]))
     starts = breaks[:-1]
@@ -325,11 +348,11 @@ def l1_between_cell_functions(values_a, edges_a, values_b, edges_b) -> float:
     against a finer reference run.
     """
     a = finite_array("values_a", values_a)
-    first = _edges(edges_a, "edges_a")
-    _cells_match("values_a", a, first, "edges_a")
+    first = checked_edges(edges_a, "edges_a")
+    check_cells_match("values_a", a, first, "edges_a")
     b = finite_array("values_b", values_b)
-    second = _edges(edges_b, "edges_b")
-    _cells_match("values_b", b, second, "edges_b")
+    second = checked_edges(edges_b, "edges_b")
+    check_cells_match("values_b", b, second, "edges_b")
     ends = np.array([first[0], second[0], first[-1], second[-1]])
     rounding = 8.0 * np.spacing(np.max(np.abs(ends)))
     if abs(first[0] - second[0]) > rounding or abs(first[-1] - second[-1]) > rounding:

@@ -137,7 +137,7 @@ def _checked_measure(measure, methods: tuple[str, ...]) -> float:
     return positive("measure.mass", getattr(measure, "mass", 1.0))
 
 
-def _within_range(name: str, x: np.ndarray, mass: float) -> None:
+def check_within_range(name: str, x: np.ndarray, mass: float) -> None:
     """Refuse positions ``x`` whose products x F(x) with values of F up to ``mass`` overflow."""
     with np.errstate(over="ignore"):
         if x.size and not np.isfinite(np.max(np.abs(x)) * mass):
@@ -181,7 +181,7 @@ def l1_to_step_function(measure, breaks, values) -> float:
     if not abs(s[-1] - mass) <= 1e-9 * mass:
         raise ValueError(f"values[-1] = {s[-1]!r} must be the total mass {mass!r} of the measure: the L1 distance "
                          "is infinite otherwise")
-    _within_range("breaks", b, mass)
+    check_within_range("breaks", b, mass)
     a_values = cdf_antiderivative(measure, b, mass)
     starts, ends, steps = b[:-1], b[1:], s[:-1]
     crossing = np.where(steps <= 0.0, starts, np.where(steps >= mass, ends, 0.0))

@@ -4,9 +4,10 @@ import numpy as np
 import pytest
 
 from particle_methods.convergence import fit_order, order_table
+from particle_methods.finite_volume import burgers_flux
 from particle_methods.norms import w1_to_measure
 from particle_methods.sticky.cases import SCALAR_CASES
-from particle_methods.sticky.exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux
+from particle_methods.sticky.exact import BurgersSolution, ConcaveLaplaceSolution
 from particle_methods.sticky.measures import Atoms, Laplace
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
 

@@ -4,10 +4,10 @@ import numpy as np
 import pytest
 from scipy import integrate
 
+from particle_methods.finite_volume import burgers_flux
 from particle_methods.norms import w1_between_samples
 from particle_methods.sticky.cases import psystem_initial_configuration
-from particle_methods.sticky.exact import burgers_flux
-from particle_methods.sticky.mspd import ScalarLaw, _ranks, mspd_positions, mspd_trajectory, rank_velocities
+from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, mspd_trajectory, rank_velocities, ranks_kernel
 from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
 
@@ -25,7 +25,7 @@ def test_one_type_reduces_to_the_scalar_spd(rng):
 
 def test_ranks_follow_the_post_collisional_order():
     # Type 0 at 0 and 1; type 1 at 0 and 2. At the tie x = 0 the higher type is counted first.
-    counts = _ranks(np.array([[0.0, 1.0], [0.0, 2.0]]))
+    counts = ranks_kernel(np.array([[0.0, 1.0], [0.0, 2.0]]))
     np.testing.assert_array_equal(counts[0, :, 1], [1, 1])  # type 1 at 0 counts for type 0 at 0 (<=)
     np.testing.assert_array_equal(counts[1, :, 0], [0, 2])  # type 0 at 0 does not count for type 1 at 0 (<)
     np.testing.assert_array_equal(counts[0, :, 0], [1, 2])

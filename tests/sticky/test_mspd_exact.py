@@ -5,10 +5,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from particle_methods.finite_volume import burgers_flux, concave_flux
 from particle_methods.norms import w1_between_samples
 from particle_methods.sticky import mspd_exact
 from particle_methods.sticky.cases import psystem_initial_configuration
-from particle_methods.sticky.exact import burgers_flux, concave_flux
 from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, rank_velocities
 from particle_methods.sticky.multitype_events import MAX_TABLE
 from particle_methods.sticky.psystem import MINUS, PLUS, PSystem

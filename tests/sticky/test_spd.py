@@ -6,8 +6,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import isotonic_regression
 
+from particle_methods.finite_volume import burgers_flux, concave_flux
 from particle_methods.sticky.events import sticky_collisions
-from particle_methods.sticky.exact import burgers_flux, concave_flux
 from particle_methods.sticky.hull_reference import hull_vertices, spd_positions_python
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux
 

@@ -66,10 +66,10 @@ class System:
     """A diagonal system whose attributes the tests choose: d and speed_primitive."""
 
     def __init__(self, d, primitive):
-        self.d, self._primitive = d, primitive
+        self.d, self.primitive_kernel = d, primitive
 
     def speed_primitive(self, gamma, levels):
-        return self._primitive(levels)
+        return self.primitive_kernel(levels)
 
 
 SYSTEMS = [

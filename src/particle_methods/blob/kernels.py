@@ -187,7 +187,7 @@ def _table_forces(coefficient, row, r, tables, steps):
 
 
 @njit
-def _profile_forces(kinds, coefficients, parameters, r, dimension, tables, steps):
+def profile_forces_kernel(kinds, coefficients, parameters, r, dimension, tables, steps):
     g = lap = 0.0
     for term in range(kinds.size):
         if kinds[term] == TABLE:
@@ -232,7 +232,7 @@ def _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, s
     """Accumulator c: the rows i = c mod 16 and their partners j > i."""
     n, dimension = positions.shape
     diff = np.empty(dimension)
-    _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, dimension, tables, steps)
+    _, self_lap = profile_forces_kernel(kinds, coefficients, parameters, 0.0, dimension, tables, steps)
     for i in range(c, n, _ACCUMULATORS):
         divergences[c, i] -= masses[i] * self_lap
         for j in range(i + 1, n):
@@ -240,7 +240,7 @@ def _accumulate(c, positions, masses, kinds, coefficients, parameters, tables, s
             for axis in range(dimension):
                 diff[axis] = positions[i, axis] - positions[j, axis]
                 r2 += diff[axis] * diff[axis]
-            g, lap = _profile_forces(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
+            g, lap = profile_forces_kernel(kinds, coefficients, parameters, math.sqrt(r2), dimension, tables, steps)
             for axis in range(dimension):
                 velocities[c, i, axis] -= masses[j] * g * diff[axis]
                 velocities[c, j, axis] += masses[i] * g * diff[axis]
@@ -503,7 +503,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
         raise ValueError("positions spread over more than 2^40 steps of the kernel's radial table")
     if positions.shape[1] == 2 and tiled_2d_supported(kinds, parameters):
         _check_span(positions, parameters[kinds == GAUSS_LOG_2D])
-        _, self_lap = _profile_forces(kinds, coefficients, parameters, 0.0, 2, tables, steps)
+        _, self_lap = profile_forces_kernel(kinds, coefficients, parameters, 0.0, 2, tables, steps)
         return _tiled_2d_sums(positions, masses, (0.0,) * 7, (kinds, coefficients, parameters, tables, steps),
                               self_lap)
     if positions.shape[1] == 1 and sums_1d.supported(kinds, parameters):
@@ -613,7 +613,7 @@ class Kernel:
         if self.tables and r.size and r.max() > _TABLE_REACH * steps.min():
             raise ValueError(f"r must stay within 2^40 steps of the kernel's radial table, got {r.max()}")
         cause = "the kernel overflows at these distances"
-        forces = [_profile_forces(kinds, coefficients, parameters, float(x), self.dimension, tables, steps)
+        forces = [profile_forces_kernel(kinds, coefficients, parameters, float(x), self.dimension, tables, steps)
                   for x in r.ravel()]
         g, lap = np.moveaxis(finite_result("grad K and Delta K", np.reshape(forces, r.shape + (2,)), cause), -1, 0)
         if not self.has_potential:

@@ -16,7 +16,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ..norms import _within_range, l1_to_step_function, tail_integrals
+from ..norms import check_within_range, l1_to_step_function, tail_integrals
 from ..validation import ParameterTypeError, finite_array, finite_result, instance, integer_at_least, sorted_array
 from .exact import AggregationSolution
 
@@ -39,7 +39,7 @@ def w1_atoms(solution: AggregationSolution, positions, masses) -> float:
         raise ValueError(f"positions and masses must have the same non-zero length, got {x.size} and {m.size}")
     if np.any(m < 0):
         raise ValueError("masses must be non-negative")
-    _within_range("positions", x, solution.mass)
+    check_within_range("positions", x, solution.mass)
     order = np.argsort(x, kind="stable")
     with np.errstate(over="ignore"):  # an overflow fails the check just below
         levels = np.cumsum(m[order])
@@ -56,7 +56,7 @@ def w1_cells(solution: AggregationSolution, edges, values) -> float:
     values = finite_array("values", values)
     if values.size + 1 != edges.size:
         raise ValueError(f"need one value per cell: {edges.size} edges and {values.size} values")
-    _within_range("edges", edges, solution.mass)
+    check_within_range("edges", edges, solution.mass)
     return l1_to_step_function(solution, edges, np.append(values, solution.mass))
 
 

@@ -16,7 +16,8 @@ Public entry points:
 - :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants.
 """
 
-from .exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux, concave_flux
+from ..finite_volume import burgers_flux, concave_flux
+from .exact import BurgersSolution, ConcaveLaplaceSolution
 from .measures import (
     Atoms,
     Laplace,

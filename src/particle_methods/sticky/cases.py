@@ -7,10 +7,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..finite_volume import l1_distance_to_step_cdf
+from ..finite_volume import burgers_flux, concave_flux, l1_distance_to_step_cdf
 from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
 from ..validation import finite_array, finite_number, integer_at_least, sorted_array
-from .exact import BurgersSolution, ConcaveLaplaceSolution, burgers_flux, concave_flux
+from .exact import BurgersSolution, ConcaveLaplaceSolution
 from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
 from .spd import spd_positions, velocities_from_flux
 

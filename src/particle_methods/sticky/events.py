@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..validation import nonnegative
-from .spd import _check_reach, _checked_masses, _checked_state
+from .spd import check_reach, checked_masses, checked_state
 
 #: Most particles :func:`sticky_collisions` accepts: its O(n^2) work then takes about a second.
 MAX_PARTICLES = 10**4
@@ -31,13 +31,13 @@ def sticky_collisions(x, v, t: float, masses=None) -> np.ndarray:
     ``masses`` as in :func:`~particle_methods.sticky.spd.spd_positions`: positive, one per
     particle, None for equal masses.
     """
-    x, v = _checked_state(x, v)
+    x, v = checked_state(x, v)
     if x.size > MAX_PARTICLES:
         raise ValueError(f"sticky_collisions takes at most MAX_PARTICLES = {MAX_PARTICLES} particles (O(n^2) work), "
                          f"got {x.size}: use spd_positions")
     t = nonnegative("t", t)
-    masses = None if masses is None else _checked_masses(masses, x)
-    _check_reach(x, np.abs(v).max(), t, masses=masses)
+    masses = None if masses is None else checked_masses(masses, x)
+    check_reach(x, np.abs(v).max(), t, masses=masses)
     position = x.copy()
     velocity = v.copy()
     mass = np.ones(x.size) if masses is None else masses

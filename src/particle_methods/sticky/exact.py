@@ -10,32 +10,8 @@ from __future__ import annotations
 import numpy as np
 from scipy import special
 
-from ..validation import finite_result, in_interval, nonnegative
+from ..validation import nonnegative
 from .measures import Laplace, QuantileMeasure, checked_measure
-
-
-def _burgers_formula(u):
-    """u^2/2 without checks, for finite float states or arrays of them (compiled kernels call it on
-    scalars: no array is made)."""
-    return 0.5 * u ** 2
-
-
-def _concave_formula(u):
-    """u(1 - u)/2 without checks, for finite float states or arrays of them (compiled kernels call it
-    on scalars: no array is made)."""
-    return 0.5 * u * (1.0 - u)
-
-
-def burgers_flux(u):
-    """Flux of the Burgers equation (5.1), Lambda(u) = u^2/2."""
-    u = in_interval("u", u, -np.inf, np.inf)  # any finite real array
-    return finite_result("the Burgers flux u^2/2", _burgers_formula(u), "u is too large")
-
-
-def concave_flux(u):
-    """Concave flux of (5.3), Lambda(u) = u(1 - u)/2."""
-    u = in_interval("u", u, -np.inf, np.inf)
-    return finite_result("the concave flux u(1 - u)/2", _concave_formula(u), "u is too large")
 
 
 class BurgersSolution(QuantileMeasure):

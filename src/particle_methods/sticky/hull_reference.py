@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..validation import ParameterTypeError, finite_array, nonnegative
-from .spd import _check_reach, _checked_state
+from .spd import check_reach, checked_state
 
 
 @dataclass(frozen=True)
@@ -28,9 +28,9 @@ class HullIteration:
 
 def cumulative_free_positions(x, v, t: float) -> np.ndarray:
     """Q(k) = sum_{k' <= k} (x_{k'} + t v_{k'}), k = 0..n, with Q(0) = 0."""
-    x, v = _checked_state(x, v)
+    x, v = checked_state(x, v)
     t = nonnegative("t", t)
-    _check_reach(x, np.abs(v).max(), t)  # then the n partial sums are finite too
+    check_reach(x, np.abs(v).max(), t)  # then the n partial sums are finite too
     return np.concatenate(([0.0], np.cumsum(x + t * v)))
 
 

@@ -25,7 +25,7 @@ import numpy as np
 
 from ..jit import njit
 from ..validation import ParameterTypeError, integer_at_least, positive, real_array, sorted_array
-from .spd import MAX_POSITIONS, _check_reach, _hull_positions
+from .spd import MAX_POSITIONS, check_reach, hull_positions_kernel
 
 #: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms
 #: (Python calls of the system), so 10**6 steps take one to two minutes. The figures take at most 10**4.
@@ -38,7 +38,7 @@ MAX_WORK = 4 * 10**9
 
 
 @njit
-def _ranks(x):
+def ranks_kernel(x):
     """Merge of the d sorted rows, pseudo-code of section 5.2.1, in O(n d^2).
 
     Returns counts[gamma, k, g]: the number of particles of type g placed before
@@ -84,7 +84,7 @@ class ScalarLaw:
         return self.flux(np.asarray(levels)[..., 0])
 
 
-def _checked_system(system) -> int:
+def checked_system(system) -> int:
     """Number of types d of a diagonal system (an integer d and a method speed_primitive)."""
     if not callable(getattr(system, "speed_primitive", None)):
         raise ParameterTypeError(
@@ -93,8 +93,8 @@ def _checked_system(system) -> int:
     return integer_at_least("system.d (the number of types)", getattr(system, "d", None), 1)
 
 
-def _checked_configuration(name: str, x, system) -> np.ndarray:
-    d = _checked_system(system)
+def checked_configuration(name: str, x, system) -> np.ndarray:
+    d = checked_system(system)
     x = sorted_array(name, x, ndim=2)
     if x.shape[0] != d:
         raise ValueError(f"{name} must have one row per type: expected {d} rows, got {x.shape[0]}")
@@ -117,11 +117,11 @@ def _checked_steps(steps, x0: np.ndarray) -> int:
 
 def rank_velocities(x, system) -> np.ndarray:
     """Velocities (1.8) of every particle of the configuration ``x`` (shape (d, n))."""
-    x = _checked_configuration("x", x, system)
+    x = checked_configuration("x", x, system)
     return _checked_velocities(x, system)[0]
 
 
-def _primitive(system, gamma: int, levels: np.ndarray) -> np.ndarray:
+def primitive_kernel(system, gamma: int, levels: np.ndarray) -> np.ndarray:
     name = f"system.speed_primitive({gamma}, levels)"
     values = real_array(name, system.speed_primitive(gamma, levels))
     if values.shape != levels.shape[:1]:
@@ -132,13 +132,13 @@ def _primitive(system, gamma: int, levels: np.ndarray) -> np.ndarray:
 def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
     """Velocities (1.8) and their largest magnitude, after checking that they are finite."""
     d, n = x.shape
-    levels = _ranks(x) / n
+    levels = ranks_kernel(x) / n
     velocities = np.empty((d, n))
     for gamma in range(d):
         upper = levels[gamma]
         lower = upper.copy()
         lower[:, gamma] -= 1.0 / n
-        velocities[gamma] = n * (_primitive(system, gamma, upper) - _primitive(system, gamma, lower))
+        velocities[gamma] = n * (primitive_kernel(system, gamma, upper) - primitive_kernel(system, gamma, lower))
     speed = float(np.abs(velocities).max())  # one pass: NaN or inf if any velocity is
     if not math.isfinite(speed):
         raise ValueError("the velocities (1.8) are not finite: system.speed_primitive returned non-finite values, "
@@ -148,14 +148,14 @@ def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
 
 def _tspd_step(x, system, delta, out):
     velocities, speed = _checked_velocities(x, system)
-    _check_reach(x, speed, delta, "Delta", "velocities")
+    check_reach(x, speed, delta, "Delta", "velocities")
     for gamma in range(x.shape[0]):
-        _hull_positions(x[gamma], velocities[gamma], delta, out[gamma])
+        hull_positions_kernel(x[gamma], velocities[gamma], delta, out[gamma])
 
 
 def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
     """Iterated TSPD: configurations at times 0, Delta, ..., steps*Delta, shape (steps+1, d, n)."""
-    x0 = _checked_configuration("x0", x0, system)
+    x0 = checked_configuration("x0", x0, system)
     delta = positive("Delta", delta)
     steps = _checked_steps(steps, x0)
     if (steps + 1) * x0.size > MAX_POSITIONS:
@@ -170,7 +170,7 @@ def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
 
 def mspd_positions(x0, system, delta: float, steps: int) -> np.ndarray:
     """Iterated TSPD after ``steps`` steps of length Delta, keeping only the current state."""
-    x0 = _checked_configuration("x0", x0, system)
+    x0 = checked_configuration("x0", x0, system)
     delta = positive("Delta", delta)
     steps = _checked_steps(steps, x0)
     current, following = x0.copy(), np.empty_like(x0)

@@ -7,7 +7,7 @@ of such events is of order n^2 and leaves the exact algorithm aside; it is built
 
 Data structure: one list of clusters of all types ordered along the line, a tie at one place
 being ordered by decreasing type (the post-collisional order of (USH), as in
-:func:`~particle_methods.sticky.mspd._ranks`). Trajectories are straight between events, so the
+:func:`~particle_methods.sticky.mspd.ranks_kernel`). Trajectories are straight between events, so the
 next meeting is between neighbours of this list: each cluster holds the time at which it meets
 the next one, in an indexed binary heap. At an event:
 
@@ -41,8 +41,8 @@ import numpy as np
 
 from ..jit import njit
 from ..validation import finite_array, finite_result, instance
-from .mspd import _checked_configuration, _primitive, _ranks
-from .spd import _check_reach
+from .mspd import checked_configuration, primitive_kernel, ranks_kernel
+from .spd import check_reach
 
 #: Largest velocity table d (n+1)^d one call builds (400 MB): n <= 4999 for d = 2.
 MAX_TABLE = 5 * 10**7
@@ -207,7 +207,7 @@ def _new_blocks(reuse, gamma, lo, hi, place, now, count_row, lam, starts, sums, 
 @njit
 def _simulate(x0, ranks, table, strides, times, out, stats):
     """Event loop of the MSPD from x0 (shape (d, n)), writing the configuration at each of ``times``
-    (non-decreasing) to ``out``; ``ranks`` is :func:`~particle_methods.sticky.mspd._ranks` of x0.
+    (non-decreasing) to ``out``; ``ranks`` is :func:`~particle_methods.sticky.mspd.ranks_kernel` of x0.
     ``stats`` receives the :class:`EventCounts`."""
     d, n = x0.shape
     capacity = d * n
@@ -245,7 +245,7 @@ def _simulate(x0, ranks, table, strides, times, out, stats):
                 found[gamma] += 1
                 cluster = nxt[cluster]
             lo = hi
-    # One list along the line, a tie at one place ordered by decreasing type (as in _ranks).
+    # One list along the line, a tie at one place ordered by decreasing type (as in ranks_kernel).
     head, last = _NONE, _NONE
     current = np.zeros(d, dtype=np.int64)
     for _ in range(found.sum()):
@@ -351,7 +351,7 @@ def _velocity_table(system, n: int, d: int) -> tuple[np.ndarray, np.ndarray, flo
     strides = np.empty((d, d), dtype=np.int64)
     lowest, highest = np.empty(d), np.empty(d)
     for gamma in range(d):
-        speeds = n * np.diff(_primitive(system, gamma, levels).reshape(shape), axis=gamma)
+        speeds = n * np.diff(primitive_kernel(system, gamma, levels).reshape(shape), axis=gamma)
         finite_result("the velocities (1.8)", speeds, "system.speed_primitive returned values whose differences "
                       "overflow or are not finite")
         table[gamma] = speeds.ravel()
@@ -379,7 +379,7 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     -------
     Array (len(times), d, n) of configurations, and the event counts if asked.
     """
-    x0 = _checked_configuration("x0", x0, system)
+    x0 = checked_configuration("x0", x0, system)
     times = finite_array("times", times)
     if times.size == 0:
         raise ValueError("times must contain at least one time")
@@ -392,10 +392,10 @@ def mspd_exact(x0, system, times, return_events: bool = False):
                          f"MAX_EVENTS = {MAX_EVENTS:.0e}")
     instance("return_events", return_events, (bool, np.bool_))
     table, strides, speed = _velocity_table(system, n, d)
-    _check_reach(x0, speed, float(times[-1]), "times", "velocities")
+    check_reach(x0, speed, float(times[-1]), "times", "velocities")
     out = np.empty((times.size, d, n))
     stats = np.zeros(4, dtype=np.int64)
-    _simulate(x0, _ranks(x0), table, strides, times, out, stats)
+    _simulate(x0, ranks_kernel(x0), table, strides, times, out, stats)
     if return_events:
         return out, EventCounts(*(int(s) for s in stats))
     return out

@@ -30,14 +30,14 @@ _LARGEST_SCALE = 1e300
 """Bound on the speed constants of a :class:`PSystem`, so that pressures and primitives stay finite."""
 
 
-def _pressure_formula(u, nu, kappa):
+def pressure_formula(u, nu, kappa):
     """p(u) of section 5.2.2 without checks: plain arithmetic, for arrays and for compiled kernels."""
     a = np.arcsinh(0.5 * kappa)
     scale = kappa / (4.0 * nu * a**2)
     return scale * (np.arctan(0.5 * kappa) - np.arctan(kappa * (u / nu - 0.5)))
 
 
-def _sound_speed_formula(u, nu, kappa):
+def sound_speed_formula(u, nu, kappa):
     """c(u) = sqrt(-p'(u)) = kappa / (2 nu a) / sqrt(1 + kappa^2 (u/nu - 1/2)^2), without checks (as above)."""
     speed_scale = kappa / (2.0 * nu * np.arcsinh(0.5 * kappa))
     return speed_scale / np.sqrt(1.0 + (kappa * (u / nu - 0.5)) ** 2)
@@ -89,11 +89,11 @@ class PSystem:
 
     def pressure(self, u):
         """Pressure law p(u) of section 5.2.2."""
-        return _pressure_formula(self._volume(u), self.nu, self.kappa)
+        return pressure_formula(self._volume(u), self.nu, self.kappa)
 
     def sound_speed(self, u):
         """c(u) = sqrt(-p'(u))."""
-        return _sound_speed_formula(self._volume(u), self.nu, self.kappa)
+        return sound_speed_formula(self._volume(u), self.nu, self.kappa)
 
     def g(self, u):
         """g(u) = int_0^u c(r) dr - 1/2."""

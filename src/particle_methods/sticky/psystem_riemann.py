@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize
 
-from ..finite_volume import _edges
+from ..finite_volume import checked_edges
 from ..validation import ParameterTypeError, finite_number, finite_values, instance, positive
 from .psystem import PSystem
 
@@ -179,7 +179,7 @@ class PSystemRiemann:
 
     def cell_averages(self, x_edges, t) -> tuple[np.ndarray, np.ndarray]:
         """Exact averages of (u, v)(t, .) over the cells of the strictly increasing ``x_edges``, for t > 0."""
-        edges = _edges(x_edges)
+        edges = checked_edges(x_edges)
         t = positive("t", t)
         xi = edges / t
         a_end, b_end = xi[:-1], xi[1:]

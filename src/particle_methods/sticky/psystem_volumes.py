@@ -40,11 +40,11 @@ import math
 
 import numpy as np
 
-from ..finite_volume import _cells_match, _check_cell_steps, _edges, _time_and_cfl, _uniform_width
+from ..finite_volume import check_cell_steps, check_cells_match, checked_edges, checked_time_and_cfl, uniform_width
 from ..jit import njit
 from ..validation import finite_array, finite_result, finite_values, instance, nonnegative
-from .mspd import _checked_system, _primitive
-from .psystem import PSystem, _pressure_formula, _sound_speed_formula
+from .mspd import checked_system, primitive_kernel
+from .psystem import PSystem, pressure_formula, sound_speed_formula
 
 #: Largest number of cell updates (cells x time steps) one call of :func:`hll_psystem` accepts:
 #: about 30 s at the 15 ns per update measured. The data of section 5.2.2 on 64000 cells up to
@@ -70,8 +70,8 @@ VOLUME_TOLERANCE = 1e-12
 #: machine epsilons keep the error of the other averaged speeds below about 1e-4.
 SPEED_RESOLUTION = 2.0**16 * np.finfo(np.float64).eps
 
-_pressure_kernel = njit(_pressure_formula)
-_sound_speed_kernel = njit(_sound_speed_formula)
+_pressure_kernel = njit(pressure_formula)
+_sound_speed_kernel = njit(sound_speed_formula)
 
 
 def _checked_psystem(system) -> PSystem:
@@ -85,8 +85,8 @@ def _conservative_data(system: PSystem, u0, v0, x_edges) -> tuple[np.ndarray, np
     v = finite_array("v0", v0)
     if v.shape != u.shape:
         raise ValueError(f"u0 and v0 must have the same shape, got {u.shape} and {v.shape}")
-    edges = _edges(x_edges)
-    _cells_match("u0", u, edges)
+    edges = checked_edges(x_edges)
+    check_cells_match("u0", u, edges)
     return u, v, edges
 
 
@@ -149,11 +149,11 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9) -> tuple[
     """
     system = _checked_psystem(system)
     u, v, edges = _conservative_data(system, u0, v0, x_edges)
-    dx = _uniform_width(edges)
-    t, cfl = _time_and_cfl(t, cfl)
+    dx = uniform_width(edges)
+    t, cfl = checked_time_and_cfl(t, cfl)
     speed = _largest_sound_speed(system, u, v)
     dt = cfl * dx / speed
-    _check_cell_steps(t, dt, u.size, MAX_CELL_STEPS)
+    check_cell_steps(t, dt, u.size, MAX_CELL_STEPS)
     u_all = np.concatenate([u[:1], u, u[-1:]])
     v_all = np.concatenate([v[:1], v, v[-1:]])
     if t > 0:
@@ -197,8 +197,8 @@ def _primitives(system, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     for gamma in range(w.shape[0]):
         mixed = right.copy()
         mixed[:, gamma] = w[gamma, :-1]
-        upper[gamma] = _primitive(system, gamma, right)
-        lower[gamma] = _primitive(system, gamma, mixed)
+        upper[gamma] = primitive_kernel(system, gamma, right)
+        lower[gamma] = primitive_kernel(system, gamma, mixed)
     return upper, lower
 
 
@@ -282,15 +282,15 @@ def upwind_diagonal(system, w0, x_edges, t, cfl: float = 0.9, return_steps: bool
     primitives or speeds are refused. With ``return_steps`` the number of time steps taken is
     returned too (d cells steps is the work).
     """
-    d = _checked_system(system)
+    d = checked_system(system)
     return_steps = instance("return_steps", return_steps, (bool, np.bool_))
     w = finite_array("w0", w0, ndim=2)
     if w.shape[0] != d:
         raise ValueError(f"w0 must have one row per type: expected system.d = {d} rows, got {w.shape[0]}")
-    edges = _edges(x_edges)
-    _cells_match("w0", w, edges)
-    dx = _uniform_width(edges)
-    t, cfl = _time_and_cfl(t, cfl)
+    edges = checked_edges(x_edges)
+    check_cells_match("w0", w, edges)
+    dx = uniform_width(edges)
+    t, cfl = checked_time_and_cfl(t, cfl)
     padded = np.concatenate([w[:, :1], w, w[:, -1:]], axis=1)
     low, high = w.min(axis=1), w.max(axis=1)
     cells = w.shape[1]

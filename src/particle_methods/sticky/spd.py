@@ -54,7 +54,7 @@ _LARGEST = float(np.finfo(np.float64).max)
 
 
 @njit
-def _hull_positions(x, v, t, out):
+def hull_positions_kernel(x, v, t, out):
     """Positions at time t of the SPD, written to ``out``; returns the number of clusters.
 
     The stack of hull segments lives in place: segment j keeps its sum of free
@@ -91,7 +91,7 @@ def _hull_positions(x, v, t, out):
 def _weighted_hull_positions(x, v, masses, t, out):
     """Positions at time t of the SPD of particles with ``masses``, written to ``out``; returns the number of clusters.
 
-    The hull of :func:`_hull_positions` with the abscissae k/n replaced by the cumulative
+    The hull of :func:`hull_positions_kernel` with the abscissae k/n replaced by the cumulative
     masses (section 5.1.1 for masses m_k instead of 1/n): segment j keeps its sum of m_k (x_k + t v_k)
     in ``out[j]``, its mass in ``weights[j]`` and its particle count in ``counts[j]`` (for the
     final pass). The previous segment is merged while its mean free position S_prev / M_prev
@@ -131,7 +131,7 @@ def _weighted_hull_positions(x, v, masses, t, out):
     return top + 1
 
 
-def _checked_state(x, v):
+def checked_state(x, v):
     x = sorted_array("x", x)
     v = finite_array("v", v)
     n = same_length(x=x, v=v)
@@ -139,13 +139,13 @@ def _checked_state(x, v):
     return x, v
 
 
-def _checked_masses(masses, x) -> np.ndarray:
+def checked_masses(masses, x) -> np.ndarray:
     """``masses`` checked (real, finite, positive, one per particle, spread at most
     :data:`MAX_MASS_RATIO`) and scaled by a power of two so that the largest lies in [1/2, 1).
 
     The scaling is exact and the SPD depends only on mass ratios, so the positions are those of
     the given masses whatever their total; it leaves a total mass of at most n for
-    :func:`_check_reach`.
+    :func:`check_reach`.
     """
     masses = finite_array("masses", masses)
     same_length(x=x, masses=masses)
@@ -158,7 +158,7 @@ def _checked_masses(masses, x) -> np.ndarray:
     return np.ldexp(masses, -int(np.frexp(largest)[1]))
 
 
-def _check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: str = "v", masses=None) -> None:
+def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: str = "v", masses=None) -> None:
     """Refuse free positions x + t v that could overflow the sums of the hull.
 
     With R = max |x| + t |v| and total mass M, a free position and its product with a mass m_k <= 1
@@ -167,7 +167,7 @@ def _check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name:
     double; then every sum, product, and position (a weighted average of free positions) is
     finite. The unweighted kernel sums free positions and multiplies by particle counts: M = n
     (``masses=None``); the weighted one gets the masses scaled below 1 by
-    :func:`_checked_masses`, so M <= n there too. ``x`` is sorted along its last axis (one row
+    :func:`checked_masses`, so M <= n there too. ``x`` is sorted along its last axis (one row
     per type) and ``speed`` is max |v|.
     """
     n = x.shape[-1]
@@ -186,7 +186,7 @@ def _check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name:
 def _hull(x, v, masses, t: float, out) -> None:
     """The equal-mass kernel for ``masses=None``, else the weighted one."""
     if masses is None:
-        _hull_positions(x, v, t, out)
+        hull_positions_kernel(x, v, t, out)
     else:
         _weighted_hull_positions(x, v, masses, t, out)
 
@@ -202,10 +202,10 @@ def spd_positions(x, v, t: float, masses=None) -> np.ndarray:
     masses : positive masses, one per particle, any total; None for equal masses 1/n. At most
         :data:`MAX_MASS_RATIO` between the largest and the smallest.
     """
-    x, v = _checked_state(x, v)
+    x, v = checked_state(x, v)
     t = nonnegative("t", t)
-    masses = None if masses is None else _checked_masses(masses, x)
-    _check_reach(x, np.abs(v).max(), t, masses=masses)
+    masses = None if masses is None else checked_masses(masses, x)
+    check_reach(x, np.abs(v).max(), t, masses=masses)
     out = np.empty_like(x)
     _hull(x, v, masses, t, out)
     return out
@@ -216,16 +216,16 @@ def spd_trajectories(x, v, times, masses=None) -> np.ndarray:
 
     The flow needs no time stepping: each row is an independent O(n) hull.
     """
-    x, v = _checked_state(x, v)
+    x, v = checked_state(x, v)
     times = finite_array("times", times)
     if np.any(times < 0):
         raise ValueError("times must be non-negative")
     if times.size * x.size > MAX_POSITIONS:
         raise ValueError(f"{times.size} times of {x.size} particles give {times.size * x.size:.3g} positions, more "
                          f"than MAX_POSITIONS = {MAX_POSITIONS:.0e} in one call: split the times")
-    masses = None if masses is None else _checked_masses(masses, x)
+    masses = None if masses is None else checked_masses(masses, x)
     if times.size:
-        _check_reach(x, np.abs(v).max(), times.max(), "times", masses=masses)
+        check_reach(x, np.abs(v).max(), times.max(), "times", masses=masses)
     out = np.empty((times.size, x.size))
     for row, t in enumerate(times):
         _hull(x, v, masses, t, out[row])

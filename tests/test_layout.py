@@ -1,0 +1,46 @@
+"""Layout rules that keep the code base extensible: no shipped module (package, pipeline scripts, benchmarks,
+notebooks) reaches into another's private names. Tests may: they check a module's internals."""
+
+import ast
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+SOURCES = [path for folder in ("src", "scripts", "benchmarks", "notebooks") for path in (ROOT / folder).rglob("*.py")]
+
+
+def private_imports(path: Path) -> list[str]:
+    """`from particle_methods... import _name`, and `module._name` on a module imported from the package."""
+    tree = ast.parse(path.read_text())
+    found, modules = [], set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            package = node.level > 0 or (node.module or "").startswith("particle_methods")
+            for alias in node.names:
+                if package and alias.name.startswith("_") and not alias.name.startswith("__"):
+                    found.append(f"{path.relative_to(ROOT)}:{node.lineno} imports {alias.name}")
+                elif package:
+                    modules.add(alias.asname or alias.name)
+        elif isinstance(node, ast.Import):
+            modules.update(alias.asname or alias.name for alias in node.names
+                           if alias.name.startswith("particle_methods"))
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.Attribute) and node.attr.startswith("_") and not node.attr.startswith("__")
+                and isinstance(node.value, ast.Name) and node.value.id in modules):
+            found.append(f"{path.relative_to(ROOT)}:{node.lineno} reads {node.value.id}.{node.attr}")
+    return found
+
+
+def test_no_module_uses_a_private_name_of_another():
+    problems = [problem for path in SOURCES for problem in private_imports(path)]
+    assert not problems, "\n".join(problems)
+
+
+def test_the_rule_sees_both_forms(tmp_path):
+    sample = tmp_path / "sample.py"
+    sample.write_text("from particle_methods.sticky.spd import _secret\nfrom particle_methods import jit\njit._x\n")
+    global ROOT
+    root, ROOT = ROOT, tmp_path
+    try:
+        assert len(private_imports(sample)) == 2
+    finally:
+        ROOT = root
