@@ -5,14 +5,14 @@ snakemake --cores 2 sticky                              # one part: sticky, ltp,
 snakemake --cores 2 --configfile config/quick.yaml      # coarse, for tests and CI (in runs/quick)
 snakemake verify                                        # fails when a claim fails
 
-A configuration file given with --configfile replaces config/config.yaml: it must be complete (a
-missing section stops the run naming it). Each configuration writes under its own `output_root`.
+A configuration file given with --configfile is laid over config/config.yaml (Snakemake merges it
+mapping by mapping; a list replaces the whole list), so it holds only what differs, as
+config/quick.yaml does. Each configuration writes under its own `output_root`.
 """
 
 from pathlib import Path
 
-if not workflow.overwrite_configfiles:
-    workflow.configfile(str(Path(workflow.basedir) / "config" / "config.yaml"))
+workflow.configfile(str(Path(workflow.basedir) / "config" / "config.yaml"))
 
 
 report: "report/workflow.rst"

@@ -20,8 +20,9 @@ import numpy as np
 from scipy import special
 from timing import best_time
 
-from particle_methods.blob.kernels import kernel_1d, pair_sums
+from particle_methods.blob.kernels import kernel_1d
 from particle_methods.blob.mollifiers import mollifier
+from particle_methods.blob.pair_sums import pair_sums
 
 
 def numpy_pair_sums(x, m, weights, widths):

@@ -22,8 +22,9 @@ import time
 import numpy as np
 from timing import best_time
 
-from particle_methods.blob.kernels import FMM_MIN_PARTICLES, kernel_2d, pair_sums
+from particle_methods.blob.kernels import kernel_2d
 from particle_methods.blob.mollifiers import mollifier
+from particle_methods.blob.pair_sums import FMM_MIN_PARTICLES, pair_sums
 from particle_methods.blob.solver import integrate_particles, setup_2d
 
 

@@ -100,10 +100,11 @@ def ltp_convolutions(size):
                                         shape.coefficients)
 
 
-@family("particle_methods.blob.kernels", "PARALLEL_MIN_PARTICLES")
+@family("particle_methods.blob.pair_sums", "PARALLEL_MIN_PARTICLES")
 def blob_direct(size):
-    from particle_methods.blob.kernels import kernel_2d, pair_sums
+    from particle_methods.blob.kernels import kernel_2d
     from particle_methods.blob.mollifiers import mollifier
+    from particle_methods.blob.pair_sums import pair_sums
 
     rng = np.random.default_rng(0)
     points = rng.uniform(-1, 1, (size, 2))
@@ -114,8 +115,9 @@ def blob_direct(size):
 
 @family("particle_methods.blob.newtonian_fmm", "PARALLEL_MIN_PARTICLES")
 def fmm_near(size):
-    from particle_methods.blob.kernels import kernel_2d, pair_sums
+    from particle_methods.blob.kernels import kernel_2d
     from particle_methods.blob.mollifiers import mollifier
+    from particle_methods.blob.pair_sums import pair_sums
 
     rng = np.random.default_rng(0)
     radius, angle = np.sqrt(rng.uniform(0, 1, size)), rng.uniform(0, 2 * np.pi, size)

@@ -3,7 +3,7 @@
 One generic loop for every kernel: each pair i < j evaluated once through the kernel's term list
 (``profile_forces_kernel``: a branch per term kind, scalar ``math.exp`` and ``math.erf``), dealt to 16
 round-robin accumulators over ``prange``. The package now takes vectorised paths where it has
-them (see ``particle_methods.blob.kernels.pair_sums``).
+them (see ``particle_methods.blob.pair_sums.pair_sums``).
 """
 
 import math

@@ -16,6 +16,7 @@ meaningless number hours later, with a ValueError naming the dotted key:
 
 from __future__ import annotations
 
+import copy
 import math
 from numbers import Real
 
@@ -97,6 +98,22 @@ def _check_list(path: str, values: list) -> None:
             raise ValueError(f"{path} = {values}: a range must be given as [low, high] with low < high")
     elif not (all(step > 0 for step in steps) or all(step < 0 for step in steps)):
         raise ValueError(f"{path} = {values}: the values must be distinct and ordered (increasing or decreasing)")
+
+
+def overlay(base: dict, *overlays: dict) -> dict:
+    """``base`` with each of ``overlays`` laid over it in turn, as Snakemake merges a ``--configfile``
+    into the workflow's configuration: mappings are merged key by key, any other value (a list
+    included) replaces the base's. The inputs are not modified."""
+    merged = copy.deepcopy(base)
+    for layer in overlays:
+        if not isinstance(layer, dict):
+            raise TypeError(f"an overlay must be a mapping, got {type(layer).__name__}")
+        for key, value in layer.items():
+            if isinstance(value, dict) and isinstance(merged.get(key), dict):
+                merged[key] = overlay(merged[key], value)
+            else:
+                merged[key] = copy.deepcopy(value)
+    return merged
 
 
 def check_configuration(config: dict) -> None:

@@ -4,8 +4,10 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from particle_methods.blob.kernels import POWER, Kernel, kernel_1d, kernel_2d, pair_energy, pair_sums
+from particle_methods.blob import pair_sums as sums
+from particle_methods.blob.kernels import POWER, Kernel, kernel_1d, kernel_2d
 from particle_methods.blob.mollifiers import mollifier
+from particle_methods.blob.pair_sums import pair_energy, pair_sums
 
 
 @pytest.mark.parametrize("order", [4, 6])
@@ -98,16 +100,14 @@ def assert_matches_generic_on_any_thread_count(x, m, arrays):
 
 def generic_sums(x, m, arrays):
     """The generic loop of every kernel, which the vectorised paths must reproduce."""
-    from particle_methods.blob import kernels
-
-    return kernels._reduce(*kernels._accumulators_parallel(np.ascontiguousarray(x), m, *arrays))
+    return sums._reduce(*sums._accumulators_parallel(np.ascontiguousarray(x), m, *arrays))
 
 
 def test_raw_newtonian_2d_fast_path_matches_the_generic_sums(rng):
     """The particle method's kernel log|x|/(2 pi) (grad K(0) := 0) on the vectorised path."""
     from particle_methods.blob import kernels
 
-    for n in (40, kernels.PARALLEL_MIN_PARTICLES + 5):
+    for n in (40, sums.PARALLEL_MIN_PARTICLES + 5):
         x = rng.normal(scale=0.5, size=(n, 2))
         x[1] = x[0]
         m = rng.uniform(0.1, 1, n) / n
@@ -124,7 +124,7 @@ def test_newtonian_2d_fast_path_matches_the_generic_sums(rng):
     from particle_methods.blob import kernels
     from particle_methods.blob.mollifiers import mollifier
 
-    n = kernels.PARALLEL_MIN_PARTICLES + 300
+    n = sums.PARALLEL_MIN_PARTICLES + 300
     x = rng.normal(scale=0.5, size=(n, 2))
     x[1] = x[0]
     m = rng.uniform(0.1, 1, n) / n
@@ -143,13 +143,13 @@ def test_sorted_1d_sums_match_the_generic_sums(rng, name, order):
     """The 1D path (far field by sorted moments, near field by windows, erfc in plain arithmetic)
     against the generic loop, with coincident particles, partners exactly one window apart and
     unsorted input; on one thread and several, bit for bit."""
-    from particle_methods.blob import kernels, sums_1d
+    from particle_methods.blob import sums_1d
 
     delta = 0.03
     kernel = kernel_1d(name) if order is None else kernel_1d(name, mollifier(order, 1), delta)
     arrays = kernel.arrays()
     assert sums_1d.supported(arrays[0], arrays[2])
-    for n in (9, kernels.PARALLEL_MIN_PARTICLES + 77):
+    for n in (9, sums.PARALLEL_MIN_PARTICLES + 77):
         x = rng.uniform(-1, 1, n)
         x[1] = x[2] = x[0]
         if order is not None:
@@ -183,12 +183,11 @@ def test_tiled_2d_path_matches_the_generic_sums(rng, name):
     """The mollified kernels of section 4.4 (even powers, Gaussian log terms, radial tables) on the
     tiled path against the generic loop, with coincident particles and partners beyond the table;
     bit-identical on one thread and several."""
-    from particle_methods.blob import kernels
 
     kernel = kernel_2d(name, mollifier(4, 2), 0.2, table_radius=2.0, table_points=801)
     arrays = kernel.arrays()
-    assert kernels.tiled_2d_supported(arrays[0], arrays[2])
-    n = kernels.PARALLEL_MIN_PARTICLES + 41
+    assert sums.tiled_2d_supported(arrays[0], arrays[2])
+    n = sums.PARALLEL_MIN_PARTICLES + 41
     x = rng.normal(scale=0.8, size=(n, 2))
     x[1] = x[0]
     x[2] = (3.0, 0.0)   # beyond the table's radius 2 from most partners
@@ -207,9 +206,8 @@ def test_2d_newtonian_sums_refuse_positions_beyond_the_exponential_range():
 def test_pair_sums_do_not_depend_on_the_number_of_threads(rng):
     """Each pair is evaluated once and the partial sums are added in a fixed order: bit-identical
     results on one thread or several (the claims table must not depend on the machine's cores)."""
-    from particle_methods.blob import kernels
 
-    n = kernels.PARALLEL_MIN_PARTICLES + 13
+    n = sums.PARALLEL_MIN_PARTICLES + 13
     x = rng.normal(size=(n, 2))
     m = rng.uniform(0.1, 1, n)
     arrays = Kernel("test", 2, (POWER, POWER), (1.0, -1.0), (4.0, 1.5)).arrays()

@@ -8,16 +8,9 @@ import pytest
 
 from particle_methods.blob import newtonian_fmm
 from particle_methods.blob.checks import MAX_FMM_PARTICLES, MAX_PARTICLES
-from particle_methods.blob.kernels import (
-    FMM_MIN_PARTICLES,
-    FMM_MIN_PARTICLES_RAW,
-    GAUSS_LOG_2D,
-    LOG,
-    kernel_1d,
-    kernel_2d,
-    pair_sums,
-)
+from particle_methods.blob.kernels import GAUSS_LOG_2D, LOG, kernel_1d, kernel_2d
 from particle_methods.blob.mollifiers import mollifier
+from particle_methods.blob.pair_sums import FMM_MIN_PARTICLES, FMM_MIN_PARTICLES_RAW, pair_sums
 from particle_methods.blob.solver import integrate_particles, setup_2d
 from particle_methods.threads import numba_threads
 

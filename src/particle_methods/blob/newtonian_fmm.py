@@ -18,7 +18,7 @@ Dirac mass (its only share, the self term of i = j, is included). With delta = h
 6.5 sqrt(2) delta of a particle number about pi (9.2 h^{q-1})^2 ~ h^{-0.2} (about 730 at h = 1/160): the
 near field grows like N^{1.1}.
 
-The result equals the direct sums of :func:`particle_methods.blob.kernels.pair_sums` to rounding
+The result equals the direct sums of :func:`particle_methods.blob.pair_sums.pair_sums` to rounding
 (tested to 1e-13 relative to the largest value); each particle's near sum is taken in a fixed order,
 so the near field is bit-identical on any number of threads. Coincident particles (which the FMM
 cannot take) are left to the direct sums by the caller.
@@ -108,7 +108,7 @@ def far_field(positions, masses) -> np.ndarray:
 @njit
 def _cell_keys(x, y, side):
     """(key, column count) of each point's cell of the given side: key = row * columns + column (the
-    caller bounds the span of the points to 2^25 widths of the mollifier, :func:`kernels._check_span`, so
+    caller bounds the span of the points to 2^25 widths of the mollifier, :func:`pair_sums._check_span`, so
     keys stay below 2^52)."""
     x0, y0 = x.min(), y.min()
     columns = int((x.max() - x0) / side) + 1
@@ -230,7 +230,7 @@ def newtonian_sums(positions, masses, coefficients, widths):
     """Velocities -sum_j m_j grad K(X_i - X_j) (N, 2) and divergences -sum_j m_j Delta K(X_i - X_j) of the
     2D Newtonian kernel: raw C log|x|/(2 pi) when ``widths`` is empty (``coefficients`` = (C,)), else the
     Gaussian terms (c_k, s_k) of its mollification (4.2). Inputs are checked by the caller
-    (:func:`particle_methods.blob.kernels.pair_sums`) and again here: finite (N >= 2, 2) positions, finite
+    (:func:`particle_methods.blob.pair_sums.pair_sums`) and again here: finite (N >= 2, 2) positions, finite
     masses, positive widths, a spread of at most 2^25 widths.
 
     With two threads or more (and :data:`PARALLEL_MIN_PARTICLES` particles), the FMM runs on one thread

@@ -37,8 +37,9 @@ from ..validation import (
 )
 from .checks import MAX_EVALUATIONS, MAX_FMM_PARTICLES, MAX_STORED, MIN_DELTA_OVER_H, output_times
 from .initial import as_data_1d, as_data_2d, grid_1d, grid_2d
-from .kernels import NEWTONIAN_2D_METHODS, Kernel, kernel_1d, kernel_2d, pair_energy, pair_sums
+from .kernels import Kernel, kernel_1d, kernel_2d
 from .mollifiers import mollifier
+from .pair_sums import NEWTONIAN_2D_METHODS, pair_energy, pair_sums
 
 #: The two methods of :func:`run_1d` and :func:`run_2d`.
 METHODS = {"blob": "K_delta = K * psi_delta, delta = h^q (Definition 2.2)", "particle": "K with grad K(0) := 0"}
@@ -126,7 +127,7 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
     time 0 returns the initial state). Raises ValueError beyond the limits of
     :mod:`~particle_methods.blob.checks` and at the first collision of a 1D particle method whose
     kernel's gradient jumps at 0 (a :class:`CollisionError`, carrying the time). ``newtonian_2d`` chooses
-    how the 2D Newtonian kernel's sums are taken (:data:`~particle_methods.blob.kernels.NEWTONIAN_2D_METHODS`)."""
+    how the 2D Newtonian kernel's sums are taken (:data:`~particle_methods.blob.pair_sums.NEWTONIAN_2D_METHODS`)."""
     kernel = instance("kernel", kernel, Kernel)
     points = finite_array("points", points, ndim=2)
     n, dimension = points.shape

@@ -202,7 +202,7 @@ def _row(k, x, masses, kinds, coefficients, widths, far, m0, m1, m2, first, last
 
 
 def pair_sums_1d(positions, masses, kinds, coefficients, parameters):
-    """The 1D pair sums of :func:`.kernels.pair_sums` for the kernels :func:`supported` takes:
+    """The 1D pair sums of :func:`.pair_sums.pair_sums` for the kernels :func:`supported` takes:
     positions (N, 1) and masses (N,) already checked; returns velocities (N, 1) and divergences (N,)."""
     x = positions[:, 0]
     order = np.argsort(x, kind="stable")

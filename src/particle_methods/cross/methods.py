@@ -25,8 +25,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..blob.kernels import kernel_1d, pair_sums
+from ..blob.kernels import kernel_1d
 from ..blob.mollifiers import mollifier
+from ..blob.pair_sums import pair_sums
 from ..blob.solver import integrate_particles
 from ..finite_volume import CONCAVE, godunov
 from ..ltp.initial import InitialDensity
