@@ -48,8 +48,11 @@ rule verify:
     conda:
         ENVIRONMENT
     threads: 1
+    params:
+        run=config["verdicts_run"],
     shell:
-        "python -m particle_methods.claims verify {input.claims} --expected {input.expected} 2>&1 "
+        "python -m particle_methods.claims verify {input.claims} --expected {input.expected} "
+        "--run {params.run} 2>&1 "
         "| tee {log}; exit ${{PIPESTATUS[0]}}"
 
 

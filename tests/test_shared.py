@@ -113,12 +113,31 @@ def test_expected_verdicts_file_is_checked(tmp_path, text, message):
         c.read_verdicts(write_expected(tmp_path / "v.yaml", text))
 
 
-def test_committed_verdict_files_cover_the_same_claims():
+def test_the_quick_section_holds_only_differences_from_the_full_run():
     from pathlib import Path
 
-    config = Path(__file__).resolve().parents[1] / "config"
-    full, quick = (c.read_verdicts(config / name) for name in ("verdicts.yaml", "verdicts-quick.yaml"))
-    assert set(full) == set(quick)
+    path = Path(__file__).resolve().parents[1] / "config" / "verdicts.yaml"
+    full, quick = c.read_verdicts(path), c.read_verdicts(path, "quick")
+    assert set(full) == set(quick) and quick != full
+
+
+@pytest.mark.parametrize("section, message", [
+    ("quick: {pass: [x.b]}\n", "not among the full run's verdicts"),
+    ("quick: {pass: [x.a]}\n", "keep only differences"),
+    ("quick: {fail: {y.b: ''}}\n", "one-line reason"),
+    ("quick: [x.a]\n", "a section per run"),
+])
+def test_a_run_section_is_checked(tmp_path, section, message):
+    path = write_expected(tmp_path / "v.yaml", "pass: [x.a]\nfail: {y.b: reason}\n" + section)
+    with pytest.raises(ValueError, match=message):
+        c.read_verdicts(path, "quick")
+
+
+def test_a_run_section_overrides_the_full_verdicts(tmp_path):
+    path = write_expected(tmp_path / "v.yaml", "pass: [x.a]\nfail: {y.b: coarse}\nquick: {fail: {x.a: coarse}}\n")
+    assert c.read_verdicts(path, "quick") == {"x.a": ("fail", "coarse"), "y.b": ("fail", "coarse")}
+    with pytest.raises(ValueError, match="no section for the run 'ci'"):
+        c.read_verdicts(path, "ci")
 
 
 def test_validation_messages_name_the_parameter():

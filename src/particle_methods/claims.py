@@ -208,36 +208,59 @@ def merge(sources, csv_path, markdown_path) -> list[Claim]:
     return claims
 
 
-def read_verdicts(path) -> dict[str, tuple[str, str]]:
-    """Expected verdicts: claim id -> (status, reason).
-
-    The file has two keys: ``pass``, a list of claim ids, and ``fail``, a mapping from claim id
-    to a one-line reason. Measured values are never recorded there, only statuses.
-    """
-    data = yaml.safe_load(Path(path).read_text()) or {}
-    if not isinstance(data, dict) or set(data) - {"pass", "fail"}:
-        raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: reason)")
+def _statuses(path, where: str, data) -> dict[str, tuple[str, str]]:
+    """``pass`` (a list of claim ids) and ``fail`` (id: one-line reason) of one part of the file."""
     passing, failing = data.get("pass") or [], data.get("fail") or {}
     if not isinstance(passing, list) or not isinstance(failing, dict):
-        raise ValueError(f"{path}: 'pass' must be a list of claim ids and 'fail' a mapping id: reason")
+        raise ValueError(f"{path}{where}: 'pass' must be a list of claim ids and 'fail' a mapping id: reason")
     both = sorted(set(passing) & set(failing))
     repeated = sorted({i for i in passing if passing.count(i) > 1})
     if both or repeated:
-        raise ValueError(f"{path}: claim ids listed twice: {both + repeated}")
+        raise ValueError(f"{path}{where}: claim ids listed twice: {both + repeated}")
     missing_reason = sorted(i for i, reason in failing.items() if not isinstance(reason, str) or not reason.strip())
     if missing_reason:
-        raise ValueError(f"{path}: every expected failure needs a one-line reason: {missing_reason}")
+        raise ValueError(f"{path}{where}: every expected failure needs a one-line reason: {missing_reason}")
     return {**{i: ("pass", "") for i in passing}, **{i: ("fail", reason) for i, reason in failing.items()}}
 
 
-def verify(claims_path, verdicts_path) -> int:
+def read_verdicts(path, run: str = "full") -> dict[str, tuple[str, str]]:
+    """Expected verdicts of a run: claim id -> (status, reason).
+
+    The file holds the full run's verdicts under two keys: ``pass``, a list of claim ids, and
+    ``fail``, a mapping from claim id to a one-line reason. Another run (``quick``) has a section of
+    its own with the same two keys, holding only the verdicts that differ from the full run's.
+    Measured values are never recorded there, only statuses.
+    """
+    data = yaml.safe_load(Path(path).read_text()) or {}
+    if not isinstance(data, dict) or not {"pass", "fail"} & set(data):
+        raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: reason)")
+    sections = set(data) - {"pass", "fail"}
+    if any(not isinstance(data[name], dict) or set(data[name]) - {"pass", "fail"} for name in sections):
+        raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: reason), and a "
+                         f"section per run ({sorted(sections)}) with the same two keys")
+    verdicts = _statuses(path, "", data)
+    if run == "full":
+        return verdicts
+    if run not in sections:
+        raise ValueError(f"{path}: no section for the run {run!r} (sections: {sorted(sections)})")
+    differences = _statuses(path, f" [{run}]", data[run])
+    unknown = sorted(set(differences) - set(verdicts))
+    if unknown:
+        raise ValueError(f"{path} [{run}]: claims not among the full run's verdicts: {unknown}")
+    same = sorted(i for i, verdict in differences.items() if verdict == verdicts[i])
+    if same:
+        raise ValueError(f"{path} [{run}]: entries equal to the full run's (keep only differences): {same}")
+    return {**verdicts, **differences}
+
+
+def verify(claims_path, verdicts_path, run: str = "full") -> int:
     """Print the paper claims, then every difference from the expected verdicts; return the exit code.
 
     Non-zero when a verdict differs from the expected one, when an expected claim is missing, or
     when a claim has no expected verdict.
     """
     claims = read_claims(claims_path)
-    expected = read_verdicts(verdicts_path)
+    expected = read_verdicts(verdicts_path, run)
     print(summary_line(claims))
     for claim in claims:
         if claim.kind == "paper":
@@ -320,6 +343,7 @@ def main(argv=None) -> int:
     verify_parser = sub.add_parser("verify", help="exit 1 when a verdict differs from the expected ones")
     verify_parser.add_argument("path")
     verify_parser.add_argument("--expected", required=True, help="YAML file of expected verdicts")
+    verify_parser.add_argument("--run", default="full", help="the run whose verdicts to use (full, or a section)")
     values_parser = sub.add_parser("values", help="record a claims table's measured values as the reference")
     values_parser.add_argument("path")
     values_parser.add_argument("--reference", required=True, help="YAML file of reference values")
@@ -332,7 +356,7 @@ def main(argv=None) -> int:
         if args.rates_output:
             merge_rates(args.rates, args.rates_output)
         return 0
-    return verify(args.path, args.expected)
+    return verify(args.path, args.expected, args.run)
 
 
 if __name__ == "__main__":

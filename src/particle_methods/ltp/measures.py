@@ -18,7 +18,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.signal import find_peaks
 
 from ..validation import finite_array, finite_number, in_interval, instance, positive, same_length
 from .solver import Simulation
@@ -102,6 +101,8 @@ def side_concentration(centres, weights, peak_values, fraction: float, radius: f
 def peak_count(density, prominence: float = 0.05) -> int:
     """Local maxima of a sampled density whose prominence is at least ``prominence`` times their
     own height."""
+    from scipy.signal import find_peaks  # here: scipy.signal takes 0.8 s to import, which most jobs never need
+
     density = finite_array("density", density)
     prominence = positive("prominence", prominence)
     peaks, properties = find_peaks(density, prominence=0.0)
