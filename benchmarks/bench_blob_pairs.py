@@ -8,7 +8,7 @@ random particles in [-1, 1], with delta = 0.05, and for the kernels of Figure 4 
 grids (the 1D sums now take a far field from sorted moments and a near field over windows of
 6.5 mollifier widths: particle_methods.blob.sums_1d); then the 2D pair sums of Figure 5's finest grid
 (closed-form log kernel), the raw log kernel and a tabulated power-law kernel, each against the
-previous implementation (benchmarks/reference_pairs.py), with the fraction of the arithmetic peak
+previous implementation (particle_methods.blob.pair_sums.generic_sums_kernel), with the fraction of the arithmetic peak
 reached by the vectorised path.
 
 "pairs/s" counts the N^2 ordered pairs the sums cover, whatever the algorithm: the previous loop
@@ -43,10 +43,9 @@ def numpy_pair_sums(x, m, weights, widths):
 def main():
     """1D: the issue's input (cubic kernel, m = 4, delta = 0.05, random particles, the same as the
     benchmark of the last build) and Figure 4's finest runs (delta = h^0.9 on a grid), each against
-    the previous implementation (benchmarks/reference_pairs.py) and NumPy broadcasting."""
-    from reference_pairs import reference_pair_sums
-
+    the previous implementation (particle_methods.blob.pair_sums.generic_sums_kernel) and NumPy broadcasting."""
     from particle_methods.blob.initial import grid_1d
+    from particle_methods.blob.pair_sums import generic_sums_kernel as reference_pair_sums
 
     rng = np.random.default_rng(0)
     cases = []
@@ -104,14 +103,14 @@ def clock_hz():
 
 
 def two_dimensions():
-    """2D pair sums, side by side with the previous implementation (benchmarks/reference_pairs.py):
+    """2D pair sums, side by side with the previous implementation (the generic loop):
     the mollified Newtonian kernel of Figure 5 (vectorised path), the raw one (particle method), and
     the tabulated power-law and Morse kernels of Figures 7 and 8 (tiled path, scalar table lookups)."""
     import numba
-    from reference_pairs import reference_pair_sums
 
     from particle_methods.blob.initial import data_2d, grid_2d
     from particle_methods.blob.kernels import kernel_2d
+    from particle_methods.blob.pair_sums import generic_sums_kernel as reference_pair_sums
 
     cores = numba.get_num_threads()
     peak = cores * FLOPS_PER_CYCLE_PER_CORE * clock_hz()

@@ -100,7 +100,7 @@ def assert_matches_generic_on_any_thread_count(x, m, arrays):
 
 def generic_sums(x, m, arrays):
     """The generic loop of every kernel, which the vectorised paths must reproduce."""
-    return sums._reduce(*sums._accumulators_parallel(np.ascontiguousarray(x), m, *arrays))
+    return sums.generic_sums_kernel(np.ascontiguousarray(x), m, *arrays)
 
 
 def test_raw_newtonian_2d_fast_path_matches_the_generic_sums(rng):

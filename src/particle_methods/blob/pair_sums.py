@@ -329,7 +329,16 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
         with _threads_for(positions.shape[0]):
             return sums_1d.pair_sums_1d(positions, masses, kinds, coefficients, parameters)
     with _threads_for(positions.shape[0]):
-        return _reduce(*_accumulators_parallel(positions, masses, kinds, coefficients, parameters, tables, steps))
+        return generic_sums_kernel(positions, masses, kinds, coefficients, parameters, tables, steps)
+
+
+def generic_sums_kernel(positions, masses, kinds, coefficients, parameters, tables, steps):
+    """The generic loop of every kernel, for arrays checked by the caller (:func:`pair_sums`): each pair
+    i < j once through :func:`~.kernels.profile_forces_kernel` (a branch per term kind, scalar
+    special functions), dealt to the 16 accumulators and summed in a fixed order. The path of the
+    build before issue 14 for every kernel: the reference the vectorised paths are tested and
+    benchmarked against."""
+    return _reduce(*_accumulators_parallel(positions, masses, kinds, coefficients, parameters, tables, steps))
 
 
 @njit_threaded
