@@ -328,6 +328,9 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
     if positions.shape[1] == 1 and sums_1d.supported(kinds, parameters):
         with _threads_for(positions.shape[0]):
             return sums_1d.pair_sums_1d(positions, masses, kinds, coefficients, parameters)
+    if positions.shape[1] == 1 and sums_1d.log_supported(kinds):
+        with _threads_for(positions.shape[0]):
+            return sums_1d.log_pair_sums_1d(positions, masses, kinds, coefficients, parameters, tables, steps)
     with _threads_for(positions.shape[0]):
         return generic_sums_kernel(positions, masses, kinds, coefficients, parameters, tables, steps)
 

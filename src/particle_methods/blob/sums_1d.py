@@ -16,6 +16,19 @@ prefix sums over the sorted positions; the erfc part is summed over the partners
 6.5 s of X_i, a window of the sorted positions. The pair i = i belongs to the window, so the
 self term of the Laplacian comes with it, and sign(0) = 0 gives grad K(0) = 0.
 
+The log kernel c log|x|/(2 pi) (Figure 4's row label), raw (LOG) or mollified (GAUSS_LOG_1D), has no
+such far field: its mollified gradient c F(r/s)/(pi s r) (F Dawson's integral) differs from the raw
+c/(2 pi r^2) by a power of s/r. Beyond z = r/s = DAWSON_ASYMPTOTIC, F has the asymptotic series of
+:func:`.special.dawson_and_slope`, so with u = 1/r^2, per term,
+
+- grad = x g(r),  g = sum_{k>=0} G_k u^{k+1},        G_k = (c/2pi) (2k-1)!!/2^k s^{2k},
+- Delta = sum_{k>=0} L_k u^{k+1},                     L_k = -(2k+1) G_k,
+
+(the raw term is G_0 alone, s^0 = 1), and the coefficients summed over the terms once make the far
+field of every pair two polynomials in u (:func:`log_series`): each pair costs a few multiplications
+instead of a Dawson integral per Gaussian. The partners within DAWSON_ASYMPTOTIC widest widths take the
+closed forms of :func:`.kernels.profile_forces_kernel`. It stays O(N^2), with a small constant.
+
 Every row is computed on its own, in a fixed order, so the sums are identical on any number of threads.
 """
 
@@ -27,10 +40,10 @@ import numpy as np
 from numba import prange
 
 from ..jit import njit, njit_threaded
+from .kernels import GAUSS_ABS_1D, GAUSS_CUBIC_1D, GAUSS_LOG_1D, LOG, POWER, profile_forces_kernel
+from .special import DAWSON_ASYMPTOTIC
 from .vector_erfc import erfc_and_gauss
 
-#: Term kinds this path takes (the values of :mod:`.kernels`, repeated here to avoid a cycle).
-GAUSS_ABS_1D, GAUSS_CUBIC_1D, POWER = 0, 1, 2
 #: Beyond this many widths the Gaussian parts vanish in double precision (as in :mod:`.kernels`).
 CUTOFF = 6.5
 _SQRT_PI = math.sqrt(math.pi)
@@ -137,6 +150,25 @@ def _weighted(start, stop, masses, g, lap_tile):
     return g0 + g1, l0 + l1
 
 
+@njit
+def _windows(x, radius):
+    """(lower, upper): the partners j of row k with |x_j - x_k| <= radius are lower[k] <= j < upper[k]."""
+    n = x.size
+    lower = np.empty(n, dtype=np.int64)
+    upper = np.empty(n, dtype=np.int64)
+    j = 0
+    for k in range(n):
+        while x[k] - x[j] > radius:
+            j += 1
+        lower[k] = j
+    j = n
+    for k in range(n - 1, -1, -1):
+        while x[j - 1] - x[k] > radius:
+            j -= 1
+        upper[k] = j
+    return lower, upper
+
+
 @njit_threaded
 def sorted_sums(x, masses, kinds, coefficients, widths, far, radius):
     """Velocities and divergences (-sum_j m_j grad K, -sum_j m_j Delta K) of positions ``x`` sorted
@@ -153,19 +185,7 @@ def sorted_sums(x, masses, kinds, coefficients, widths, far, radius):
         first[k] = first[k - 1] if k > 0 and x[k] == x[k - 1] else k
     for k in range(n - 1, -1, -1):
         last[k] = last[k + 1] if k < n - 1 and x[k] == x[k + 1] else k
-    # lower[k], upper[k]: the window |x_j - x_k| <= radius.
-    lower = np.empty(n, dtype=np.int64)
-    upper = np.empty(n, dtype=np.int64)
-    j = 0
-    for k in range(n):
-        while x[k] - x[j] > radius:
-            j += 1
-        lower[k] = j
-    j = n
-    for k in range(n - 1, -1, -1):
-        while x[j - 1] - x[k] > radius:
-            j -= 1
-        upper[k] = j
+    lower, upper = _windows(x, radius)
     velocity = np.empty(n)
     divergence = np.empty(n)
     for block in prange((n + _ROWS - 1) // _ROWS):
@@ -211,6 +231,117 @@ def pair_sums_1d(positions, masses, kinds, coefficients, parameters):
     radius = CUTOFF * float(widths.max(initial=0.0))
     v, d = sorted_sums(np.ascontiguousarray(x[order]), np.ascontiguousarray(masses[order]), kinds,
                        coefficients, widths, far, radius)
+    velocity = np.empty_like(positions)
+    divergence = np.empty_like(masses)
+    velocity[order, 0] = v
+    divergence[order] = d
+    return velocity, divergence
+
+
+def log_supported(kinds) -> bool:
+    """Whether a 1D kernel's terms are all log terms, raw (LOG) or mollified (GAUSS_LOG_1D)."""
+    return len(kinds) > 0 and all(kind in (LOG, GAUSS_LOG_1D) for kind in kinds)
+
+
+def _series_length(cutoff):
+    """Terms kept: the first omitted one, (2K+1)!!/(2 cutoff^2)^K relative to the first (the larger of
+    the two series' K-th terms at z = cutoff), is below 1e-17."""
+    count, term = 0, 1.0
+    while term >= 1e-17:
+        count += 1
+        term *= (2 * count + 1) / (2.0 * cutoff * cutoff)
+    return count
+
+
+#: Terms of the far-field series (15 at DAWSON_ASYMPTOTIC = 10).
+SERIES_TERMS = _series_length(DAWSON_ASYMPTOTIC)
+
+
+def log_series(kinds, coefficients, parameters):
+    """(G, L), the far-field coefficients of the log kernel's terms (module docstring), SERIES_TERMS each."""
+    k = np.arange(SERIES_TERMS)
+    double_factorial = np.concatenate(([1.0], np.cumprod(2.0 * k[1:] - 1.0)))   # (2k-1)!!, (-1)!! = 1
+    growth = double_factorial / 2.0**k
+    g = np.zeros(SERIES_TERMS)
+    for kind, coefficient, width in zip(kinds, coefficients, parameters):
+        if kind == LOG:
+            g[0] += coefficient / (2.0 * math.pi)
+        else:
+            g += coefficient / (2.0 * math.pi) * growth * width ** (2.0 * k)
+    return g, -(2.0 * k + 1.0) * g
+
+
+@njit
+def _log_far_tile(xk, x, start, stop, series_g, series_l, g, lap_tile):
+    """grad K(x_k - x_j) and Delta K(x_k - x_j) by the far-field series for start <= j < stop, into g and
+    lap_tile: Horner's rule, one coefficient per pass over the tile, so LLVM vectorises each pass."""
+    count = stop - start
+    u = np.empty(count)
+    for j in range(count):
+        d = xk - x[start + j]
+        u[j] = 1.0 / (d * d)
+        g[j] = series_g[-1]
+        lap_tile[j] = series_l[-1]
+    for k in range(series_g.size - 2, -1, -1):
+        cg, cl = series_g[k], series_l[k]
+        for j in range(count):
+            g[j] = g[j] * u[j] + cg
+            lap_tile[j] = lap_tile[j] * u[j] + cl
+    for j in range(count):
+        g[j] *= u[j] * (xk - x[start + j])
+        lap_tile[j] *= u[j]
+
+
+@njit
+def _log_row(k, x, masses, terms, series_g, series_l, lower, upper, g, lap_tile):
+    """Row k of the log kernel: (sum_j m_j grad K(x_k - x_j), sum_j m_j Delta K(x_k - x_j)), the far
+    partners (j < lower, j >= upper) by the series in tiles, the near ones by the closed forms."""
+    kinds, coefficients, parameters, tables, steps = terms
+    grad = lap = 0.0
+    for first, last in ((0, lower), (upper, x.size)):
+        for start in range(first, last, _TILE):
+            stop = min(start + _TILE, last)
+            _log_far_tile(x[k], x, start, stop, series_g, series_l, g, lap_tile)
+            tile_grad, tile_lap = _weighted(start, stop, masses, g, lap_tile)
+            grad += tile_grad
+            lap += tile_lap
+    for j in range(lower, upper):
+        d = x[k] - x[j]
+        pair_g, pair_lap = profile_forces_kernel(kinds, coefficients, parameters, abs(d), 1, tables, steps)
+        grad += masses[j] * pair_g * d
+        lap += masses[j] * pair_lap
+    return grad, lap
+
+
+@njit_threaded
+def sorted_log_sums(x, masses, terms, series_g, series_l, radius):
+    """Velocities and divergences of the log kernel for positions ``x`` sorted increasingly; ``terms`` the
+    arrays of :meth:`.kernels.Kernel.arrays`, (series_g, series_l) of :func:`log_series`, ``radius`` the
+    near window's half-width."""
+    n = x.size
+    lower, upper = _windows(x, radius)
+    velocity = np.empty(n)
+    divergence = np.empty(n)
+    for block in prange((n + _ROWS - 1) // _ROWS):
+        g = np.empty(_TILE)
+        lap_tile = np.empty(_TILE)
+        for k in range(block * _ROWS, min(block * _ROWS + _ROWS, n)):
+            grad, lap = _log_row(k, x, masses, terms, series_g, series_l, lower[k], upper[k], g, lap_tile)
+            velocity[k] = -grad
+            divergence[k] = -lap
+    return velocity, divergence
+
+
+def log_pair_sums_1d(positions, masses, kinds, coefficients, parameters, tables, steps):
+    """The 1D pair sums of :func:`.pair_sums.pair_sums` for the kernels :func:`log_supported` takes:
+    positions (N, 1) and masses (N,) already checked; returns velocities (N, 1) and divergences (N,)."""
+    x = positions[:, 0]
+    order = np.argsort(x, kind="stable")
+    series_g, series_l = log_series(kinds, coefficients, parameters)
+    widths = np.where(kinds == LOG, 0.0, parameters)
+    radius = DAWSON_ASYMPTOTIC * float(widths.max(initial=0.0))
+    v, d = sorted_log_sums(np.ascontiguousarray(x[order]), np.ascontiguousarray(masses[order]),
+                           (kinds, coefficients, parameters, tables, steps), series_g, series_l, radius)
     velocity = np.empty_like(positions)
     divergence = np.empty_like(masses)
     velocity[order, 0] = v
