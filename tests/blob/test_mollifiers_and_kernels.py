@@ -236,6 +236,31 @@ def test_tiled_2d_path_matches_the_generic_sums(rng, name):
     assert_matches_generic_on_any_thread_count(x, m, arrays)
 
 
+@pytest.mark.parametrize("name", ["cubic", "quartic_log", "quartic_power", "septic_power", "morse_1", "morse_2"])
+def test_tiled_2d_path_matches_the_generic_sums_for_raw_kernels(rng, name):
+    """The particle method's raw kernels of section 4.4 (powers, log and exponential terms) on the tiled
+    path against the generic loop, with coincident particles ((0, 0) at r = 0); bit-identical on one
+    thread and several."""
+    arrays = kernel_2d(name).arrays()
+    assert sums.tiled_2d_supported(arrays[0], arrays[2])
+    n = sums.PARALLEL_MIN_PARTICLES + 41
+    x = rng.normal(scale=0.8, size=(n, 2))
+    x[1] = x[0]
+    m = rng.uniform(0.1, 1, n) / n
+    assert_matches_generic_on_any_thread_count(x, m, arrays)
+
+
+def test_tiled_2d_path_sees_a_wrong_raw_exponent(rng):
+    """The check above can fail: r^(a-1) in place of r^(a-2) for the raw |x|^1.5 term (a plausible slip)
+    is far outside its tolerance."""
+    x = rng.normal(scale=0.8, size=(60, 2))
+    m = np.full(60, 1 / 60)
+    right = Kernel("test", 2, (POWER,), (1.0,), (1.5,)).arrays()
+    wrong = Kernel("test", 2, (POWER,), (1.0,), (2.5,)).arrays()
+    fast = pair_sums(x, m, *wrong)[0]
+    assert np.abs(fast - generic_sums(x, m, right)[0]).max() > 1e-3 * np.abs(fast).max()
+
+
 def test_2d_newtonian_sums_refuse_positions_beyond_the_exponential_range():
     from particle_methods.blob.mollifiers import mollifier as make
 
@@ -249,9 +274,9 @@ def test_pair_sums_do_not_depend_on_the_number_of_threads(rng):
     results on one thread or several (the claims table must not depend on the machine's cores)."""
 
     n = sums.PARALLEL_MIN_PARTICLES + 13
-    x = rng.normal(size=(n, 2))
+    x = rng.normal(size=(n, 3))   # 3D: the generic loop's own path
     m = rng.uniform(0.1, 1, n)
-    arrays = Kernel("test", 2, (POWER, POWER), (1.0, -1.0), (4.0, 1.5)).arrays()
+    arrays = Kernel("test", 3, (POWER, POWER), (1.0, -1.0), (4.0, 1.5)).arrays()
     one_thread = on_one_thread(pair_sums, x, m, *arrays)
     parallel = pair_sums(x, m, *arrays)
     assert all(np.array_equal(a, b) for a, b in zip(one_thread, parallel))

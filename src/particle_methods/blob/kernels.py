@@ -118,12 +118,12 @@ def _forces(kind, coefficient, parameter, r, dimension):
     a = parameter
     if r == 0.0:
         return (coefficient, coefficient * (a + dimension - 2.0)) if a == 2.0 else (0.0, 0.0)
-    ra = _power(r, a - 2.0)
+    ra = radial_power(r, a - 2.0)
     return coefficient * ra, coefficient * (a + dimension - 2.0) * ra
 
 
 @njit
-def _power(r, b):
+def radial_power(r, b):
     """r^b, r > 0, by products and a square root for the exponents of section 4 (a call to pow costs
     several times more); pow for the others."""
     if b == 0.0:

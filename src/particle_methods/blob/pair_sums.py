@@ -19,6 +19,7 @@ from ..threads import threads_for
 from ..validation import one_of
 from . import newtonian_fmm, sums_1d
 from .kernels import (
+    EXP,
     GAUSS_LOG_2D,
     LOG,
     POWER,
@@ -27,6 +28,7 @@ from .kernels import (
     is_newtonian_2d,
     profile_forces_kernel,
     profile_potential_kernel,
+    radial_power,
 )
 from .tile_sums import row_share
 from .vector_exp import Z_LIMIT, exp_minus_and_complement
@@ -130,10 +132,11 @@ def _newtonian_2d_forces(xi, yi, x, y, start, stop, constants, wx, wy, lap):
 @njit
 def _terms_2d_forces(xi, yi, x, y, start, stop, kinds, coefficients, parameters, tables, steps, wx, wy, lap, buffer):
     """Row i of a 2D kernel made of even powers below the mollifier's order (polynomials, Remark 3.4),
-    Gaussian log terms and tabulated terms (:func:`tiled_2d_supported`): grad K and Delta K for
-    start <= j < stop, term by term, each in a loop without branches (the table lookups, gathers
-    from an argument array, stay scalar; the clamps of :func:`_table_forces` are written exactly:
-    a - (a - b + |a - b|)/2 is a itself for a <= b)."""
+    Gaussian log terms and tabulated terms, or of the raw powers, log and exponential terms of the
+    particle method (:func:`tiled_2d_supported`): grad K and Delta K for start <= j < stop, term by
+    term, each in a loop without branches but selects (the table lookups, gathers from an argument
+    array, stay scalar; the clamps of :func:`_table_forces` are written exactly: a - (a - b + |a - b|)/2
+    is a itself for a <= b). Raw terms give (0, 0) at r = 0, as :func:`.kernels.profile_forces_kernel`."""
     count = stop - start
     for j in range(start, stop):
         dx = xi - x[j]
@@ -150,10 +153,32 @@ def _terms_2d_forces(xi, yi, x, y, start, stop, kinds, coefficients, parameters,
                 for j in range(count):
                     wx[j] += c
                     lap[j] += 2.0 * c
-            else:  # a = 4: g = r^2, Delta = 4 r^2
+            elif a == 4.0:  # g = r^2, Delta = 4 r^2
                 for j in range(count):
                     wx[j] += c * buffer[j]
                     lap[j] += 4.0 * c * buffer[j]
+            else:  # raw |x|^a/a (particle method): g = r^(a-2), Delta = a r^(a-2); (0, 0) at r = 0
+                b = a - 2.0
+                for j in range(count):
+                    r2 = buffer[j]
+                    power = radial_power(math.sqrt(r2), b) if r2 > 0.0 else 0.0
+                    wx[j] += c * power
+                    lap[j] += c * a * power
+        elif kinds[t] == LOG:  # raw log|x|/(2 pi): g = 1/(2 pi r^2), Delta = 0 away from 0; (0, 0) at r = 0
+            g0 = c / (2 * math.pi)
+            for j in range(count):
+                r2 = buffer[j]
+                wx[j] += g0 / r2 if r2 > 0.0 else 0.0
+        elif kinds[t] == EXP:  # raw e^{-r/lambda}: g = -e/(lambda r), Delta = e/lambda^2 - e/(lambda r); (0, 0) at 0
+            lam = parameters[t]
+            inverse = 1.0 / lam
+            for j in range(count):
+                r2 = buffer[j]
+                r = math.sqrt(r2)
+                e, _ = exp_minus_and_complement(r * inverse)
+                over_r = c * e * inverse / r if r2 > 0.0 else 0.0
+                wx[j] -= over_r
+                lap[j] += c * e * inverse * inverse - over_r if r2 > 0.0 else 0.0
         elif kinds[t] == GAUSS_LOG_2D:
             s = parameters[t]
             inverse, g0, l0 = 1.0 / (s * s), c / (2 * math.pi), c / (math.pi * s * s)
@@ -240,18 +265,22 @@ def _tiled_2d_sums(positions, masses, constants, terms, self_lap):
 
 
 def tiled_2d_supported(kinds, parameters) -> bool:
-    """Whether a 2D kernel's terms are all even powers 2 and 4, Gaussian log terms or tables (the
-    mollified kernels of section 4.4 other than the Newtonian one)."""
-    return all(kind in (TABLE, GAUSS_LOG_2D) or (kind == POWER and parameter in (2.0, 4.0))
-               for kind, parameter in zip(kinds, parameters))
+    """Whether a 2D kernel's terms are all of the kinds the tiled path takes: powers, Gaussian log terms
+    and tables (the mollified kernels of section 4.4 other than the Newtonian one), raw log and
+    exponential terms (the particle method on them)."""
+    return all(kind in (TABLE, GAUSS_LOG_2D, POWER, LOG, EXP) for kind in kinds)
 
 
-def _check_span(positions, widths):
-    """The vectorised exponential takes |X_i - X_j|^2 / s^2 up to :data:`Z_LIMIT`."""
+def _check_span(positions, widths, lengths=()):
+    """The vectorised exponential takes |X_i - X_j|^2 / s^2 (``widths`` s of Gaussian terms) and
+    |X_i - X_j| / lambda (``lengths`` lambda of exponential terms) up to :data:`Z_LIMIT`."""
     span2 = np.ptp(positions[:, 0]) ** 2 + np.ptp(positions[:, 1]) ** 2
-    if widths.size and span2 / widths.min() ** 2 > Z_LIMIT:
+    if len(widths) and span2 / np.min(widths) ** 2 > Z_LIMIT:
         raise ValueError(f"positions spread over {np.sqrt(span2):.3g}, more than {np.sqrt(Z_LIMIT):.3g} "
-                         f"widths {widths.min():.3g} of the mollifier: beyond the vectorised exponential's range")
+                         f"widths {np.min(widths):.3g} of the mollifier: beyond the vectorised exponential's range")
+    if len(lengths) and np.sqrt(span2) / np.min(lengths) > Z_LIMIT:
+        raise ValueError(f"positions spread over {np.sqrt(span2):.3g}, more than {Z_LIMIT:.3g} decay lengths "
+                         f"{np.min(lengths):.3g} of the kernel: beyond the vectorised exponential's range")
 
 
 _NO_TERMS = (np.zeros(0, dtype=np.int64), np.zeros(0), np.zeros(0), np.zeros((1, 2, 2)), np.ones(1))
@@ -321,7 +350,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
     if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > TABLE_REACH * steps.min():
         raise ValueError("positions spread over more than 2^40 steps of the kernel's radial table")
     if positions.shape[1] == 2 and tiled_2d_supported(kinds, parameters):
-        _check_span(positions, parameters[kinds == GAUSS_LOG_2D])
+        _check_span(positions, parameters[kinds == GAUSS_LOG_2D], parameters[kinds == EXP])
         _, self_lap = profile_forces_kernel(kinds, coefficients, parameters, 0.0, 2, tables, steps)
         return _tiled_2d_sums(positions, masses, (0.0,) * 7, (kinds, coefficients, parameters, tables, steps),
                               self_lap)
