@@ -32,18 +32,19 @@ def run(p, concentration, output):
         sim = simulate(initial, w, p["h"], dt, steps * dt, record_every=1, log=None)
         shown = np.linspace(0, p["steps"], p["snapshots"]).round().astype(int)
         prefix = f"case{index}"
+        densities = sim.densities(grid)
         results["labels"].append(w.name)
         results.update({
             f"{prefix}_times": sim.times, f"{prefix}_figure_t": case["t"],
             f"{prefix}_centres": sim.centres, f"{prefix}_widths": sim.widths,
             f"{prefix}_velocities": sim.velocities, f"{prefix}_weights": sim.weights,
-            f"{prefix}_shown": shown, f"{prefix}_densities": sim.densities(grid)[shown],
+            f"{prefix}_shown": shown, f"{prefix}_densities": densities[shown],
             f"{prefix}_potential": w(x_potential),
         })
         if "b" in case:
             widths, masses = concentration_series(sim, concentration["fraction"], concentration["radius"])
             centre = np.argmin(np.abs(grid))
-            edge_ratio = np.array([density.max() / density[centre] for density in sim.densities(grid)])
+            edge_ratio = densities.max(axis=1) / densities[:, centre]
             results.update({f"{prefix}_concentration_widths": widths, f"{prefix}_concentration_masses": masses,
                             f"{prefix}_edge_ratio": edge_ratio})
             progress(f"  t = {t_end:g}: widths holding {concentration['fraction']:g} of each side "
