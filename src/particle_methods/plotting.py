@@ -41,6 +41,8 @@ def save_figure(fig, pdf_path, png_path=None) -> None:
     png_path = Path(png_path) if png_path is not None else pdf_path.with_suffix(".png")
     pdf_path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(pdf_path)
+    # The layout is fixed by the first save: the second one reuses it instead of solving it again.
+    fig.set_layout_engine("none")
     fig.savefig(png_path)
     plt.close(fig)
 
