@@ -45,9 +45,9 @@ BLOB_FIG4_STUDIES = {
     },
 }
 
-# Figure 5's runs in jobs: 1/h below FIG5_OWN_JOB together (a few seconds), each finer grid alone (5,000
-# particles and more: tens of seconds to minutes), in the order of the config's inverse_h (increasing).
-FIG5_OWN_JOB = 40
+# Figure 5's runs in jobs: 1/h below FIG5_OWN_JOB together (up to 5,000 particles: 2 to 11 s), each finer grid
+# alone (20,000 particles and more: tens of seconds to minutes), in the order of the config's inverse_h.
+FIG5_OWN_JOB = 80
 FIG5_GROUPS = {
     **(
         {"coarse": [n for n in BLOB["fig5"]["inverse_h"] if n < FIG5_OWN_JOB]}
