@@ -14,7 +14,9 @@ import time
 
 import numpy as np
 
-from particle_methods.finite_volume import CONCAVE, cell_averages_of_step_cdf, godunov, l1_distance_to_step_cdf
+from particle_methods.finite_volume.fluxes import CONCAVE
+from particle_methods.finite_volume.grids import cell_averages_of_step_cdf, l1_distance_to_step_cdf
+from particle_methods.finite_volume.scalar import godunov
 from particle_methods.sticky.cases import SCALAR_CASES
 from particle_methods.sticky.spd import spd_positions
 

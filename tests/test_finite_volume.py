@@ -270,3 +270,19 @@ def test_step_cdf_functions_reject_bad_input():
         l1_distance_to_step_cdf(np.r_[U0[:-1], np.nan], EDGES, [0.5])
     with pytest.raises(ValueError, match="points contains NaN"):
         l1_distance_to_step_cdf(U0, EDGES, [0.5, np.nan])
+
+
+def test_the_package_resolves_its_names_lazily():
+    """Every name of ``__all__`` resolves; importing the scalar scheme loads neither the p-system's schemes
+    nor scipy.optimize (the Riemann solutions), in a fresh interpreter."""
+    import subprocess
+    import sys
+
+    import particle_methods.finite_volume as fv
+
+    assert all(getattr(fv, name) is not None for name in fv.__all__)
+    with pytest.raises(AttributeError, match="no attribute"):
+        fv.no_such_scheme  # noqa: B018
+    code = ("import sys; import particle_methods.finite_volume.scalar; "
+            "print('particle_methods.finite_volume.psystem' in sys.modules or 'scipy.optimize' in sys.modules)")
+    assert subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.strip() == "False"

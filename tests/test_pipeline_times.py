@@ -35,7 +35,7 @@ DRY_RUN = """\
 Building DAG of jobs...
 [Tue Dec  1 21:18:49 2026]
 rule sticky_psystem_data:
-    input: ../../src/particle_methods/sticky/psystem.py
+    input: ../../src/particle_methods/systems.py
     output: results/sticky/shocks.npz
     log: logs/sticky/shocks_data.log
     jobid: 7

@@ -12,7 +12,9 @@ that no other job disturbs the timings.
 
 import numpy as np
 
-from particle_methods.finite_volume import BURGERS, CONCAVE, godunov
+from particle_methods.finite_volume.fluxes import BURGERS, CONCAVE
+from particle_methods.finite_volume.psystem import upwind_diagonal
+from particle_methods.finite_volume.scalar import godunov
 from particle_methods.norms import cdf_antiderivative, l1_to_step_function, w1_to_measure
 from particle_methods.sticky.cases import (
     SCALAR_CASES,
@@ -23,9 +25,8 @@ from particle_methods.sticky.cases import (
 )
 from particle_methods.sticky.mspd import mspd_positions
 from particle_methods.sticky.multitype_events import mspd_exact
-from particle_methods.sticky.psystem import PSystem
-from particle_methods.sticky.psystem_volumes import upwind_diagonal
 from particle_methods.sticky.spd import spd_positions
+from particle_methods.systems import PSystem
 from particle_methods.workflow import logged, progress, save_results, timed
 
 FLUXES = {"burgers_two_atoms": BURGERS, "concave_laplace": CONCAVE}

@@ -10,7 +10,8 @@ core while the timed runs hold them all.
 
 import numpy as np
 
-from particle_methods.finite_volume import l1_between_cell_functions
+from particle_methods.finite_volume.grids import l1_between_cell_functions
+from particle_methods.finite_volume.psystem import hll_psystem, invariants_from_conservative, upwind_diagonal
 from particle_methods.sticky.cases import (
     configuration_distance,
     distance_to_cells,
@@ -18,8 +19,7 @@ from particle_methods.sticky.cases import (
     psystem_initial_configuration,
 )
 from particle_methods.sticky.multitype_events import mspd_exact
-from particle_methods.sticky.psystem import PSystem
-from particle_methods.sticky.psystem_volumes import hll_psystem, invariants_from_conservative, upwind_diagonal
+from particle_methods.systems import PSystem
 from particle_methods.workflow import logged, progress, save_results
 
 PSYSTEM_CASES = ("rarefaction", "shocks")

@@ -7,7 +7,7 @@ outcomes; this script only loads the results and writes the claims and their rat
 from particle_methods import claims as c
 from particle_methods.rates import Recorder
 from particle_methods.sticky import verdicts as v
-from particle_methods.sticky.psystem import PSystem
+from particle_methods.systems import PSystem
 from particle_methods.workflow import load_results, logged, progress
 
 

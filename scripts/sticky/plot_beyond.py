@@ -5,8 +5,8 @@ import numpy as np
 
 from particle_methods.plotting import label_panel, new_figure, save_figure
 from particle_methods.sticky.cases import empirical_cdf
-from particle_methods.sticky.psystem import MINUS, PLUS
 from particle_methods.sticky.verdicts import SCALAR_NAMES
+from particle_methods.systems import MINUS, PLUS
 from particle_methods.workflow import load_results, logged
 
 METHODS = {  # key in the results, label, colour, marker

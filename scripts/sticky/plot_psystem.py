@@ -1,7 +1,7 @@
 """Figures 4 to 7: MSPD trajectories (4, 6) and w-, w+, u, v in the space-time plane (5, 7)."""
 
 from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.sticky.psystem import MINUS, PLUS
+from particle_methods.systems import MINUS, PLUS
 from particle_methods.workflow import load_results, logged
 
 CASE_TITLES = {

@@ -5,14 +5,9 @@ import math
 
 import numpy as np
 
-from particle_methods.finite_volume import (
-    BURGERS,
-    CONCAVE,
-    burgers_flux,
-    cell_averages_of_step_cdf,
-    godunov,
-    l1_distance_to_step_cdf,
-)
+from particle_methods.finite_volume.fluxes import BURGERS, CONCAVE, burgers_flux
+from particle_methods.finite_volume.grids import cell_averages_of_step_cdf, l1_distance_to_step_cdf
+from particle_methods.finite_volume.scalar import godunov
 from particle_methods.norms import w1_to_measure
 from particle_methods.sticky.cases import SCALAR_CASES
 from particle_methods.sticky.exact import BurgersSolution

@@ -15,7 +15,7 @@ from particle_methods.sticky.cases import (
     psystem_initial_measures,
 )
 from particle_methods.sticky.mspd import mspd_positions
-from particle_methods.sticky.psystem import PSystem
+from particle_methods.systems import PSystem
 from particle_methods.workflow import logged, progress, save_results
 
 

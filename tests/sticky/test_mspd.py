@@ -8,8 +8,8 @@ from particle_methods.finite_volume import burgers_flux
 from particle_methods.norms import w1_between_samples
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, mspd_trajectory, rank_velocities, ranks_kernel
-from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
+from particle_methods.systems import MINUS, PLUS, PSystem
 
 SYSTEM = PSystem()
 

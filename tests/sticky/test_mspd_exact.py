@@ -11,8 +11,8 @@ from particle_methods.sticky import mspd_exact
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, rank_velocities
 from particle_methods.sticky.multitype_events import MAX_TABLE
-from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
+from particle_methods.systems import MINUS, PLUS, PSystem
 
 SYSTEM = PSystem()
 CASES = {"rarefaction": 0.1, "shocks": -4.0}

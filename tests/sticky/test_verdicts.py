@@ -9,7 +9,7 @@ import pytest
 
 from particle_methods.rates import Recorder
 from particle_methods.sticky import verdicts as v
-from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
+from particle_methods.systems import MINUS, PLUS, PSystem
 
 N = 2.0 ** np.arange(1, 10)
 BAND = (0.25, 1.0)

@@ -17,7 +17,6 @@ from ..jit import njit
 from ..validation import finite_values, instance, integer_at_least, one_of, positive
 from .checks import MAX_DATA_POWER, MAX_FMM_PARTICLES, MAX_PARTICLES
 
-
 #: Points are taken in tiles of this many: the recurrence runs one degree at a time over a tile, a loop
 #: that LLVM vectorises (1.8x faster than one point at a time, the same operations in the same order).
 _TILE = 256

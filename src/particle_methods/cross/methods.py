@@ -29,7 +29,8 @@ from ..blob.kernels import kernel_1d
 from ..blob.mollifiers import mollifier
 from ..blob.pair_sums import pair_sums
 from ..blob.solver import integrate_particles
-from ..finite_volume import CONCAVE, godunov
+from ..finite_volume.fluxes import CONCAVE
+from ..finite_volume.scalar import godunov
 from ..ltp.initial import InitialDensity
 from ..ltp.potentials import potential
 from ..ltp.solver import simulate

@@ -16,7 +16,8 @@ Public entry points:
 - :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants.
 """
 
-from ..finite_volume import burgers_flux, concave_flux
+from ..finite_volume.fluxes import burgers_flux, concave_flux
+from ..systems import PSystem
 from .exact import BurgersSolution, ConcaveLaplaceSolution
 from .measures import (
     Atoms,
@@ -32,7 +33,6 @@ from .measures import (
 )
 from .mspd import ScalarLaw, mspd_positions, mspd_trajectory, rank_velocities
 from .multitype_events import EventCounts, mspd_exact
-from .psystem import PSystem
 from .spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux, velocities_from_levels
 
 __all__ = [

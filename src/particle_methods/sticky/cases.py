@@ -7,7 +7,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..finite_volume import burgers_flux, concave_flux, l1_distance_to_step_cdf
+from ..finite_volume.fluxes import burgers_flux, concave_flux
+from ..finite_volume.grids import l1_distance_to_step_cdf
 from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
 from ..validation import finite_array, finite_number, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution

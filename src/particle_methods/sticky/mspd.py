@@ -24,7 +24,8 @@ import math
 import numpy as np
 
 from ..jit import njit
-from ..validation import ParameterTypeError, integer_at_least, positive, real_array, sorted_array
+from ..systems import checked_primitive, checked_system
+from ..validation import ParameterTypeError, integer_at_least, positive, sorted_array
 from .spd import MAX_POSITIONS, check_reach, hull_positions_kernel
 
 #: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms
@@ -67,7 +68,7 @@ class ScalarLaw:
 
     Its primitive of lambda = A' is the flux A itself, so the velocities (1.8) are those of
     section 1.1.3 and every diagonal-system solver (the MSPD, the finite volumes of
-    :mod:`.psystem_volumes`) reduces to its scalar counterpart.
+    :mod:`particle_methods.finite_volume.psystem`) reduces to its scalar counterpart.
     """
 
     d = 1
@@ -82,15 +83,6 @@ class ScalarLaw:
         if integer_at_least("gamma", gamma, 0) != 0:
             raise ValueError(f"gamma must be 0 for a scalar law, got {gamma}")
         return self.flux(np.asarray(levels)[..., 0])
-
-
-def checked_system(system) -> int:
-    """Number of types d of a diagonal system (an integer d and a method speed_primitive)."""
-    if not callable(getattr(system, "speed_primitive", None)):
-        raise ParameterTypeError(
-            f"system must be a diagonal system with a method speed_primitive(gamma, levels), got {system!r}"
-        )
-    return integer_at_least("system.d (the number of types)", getattr(system, "d", None), 1)
 
 
 def checked_configuration(name: str, x, system) -> np.ndarray:
@@ -121,14 +113,6 @@ def rank_velocities(x, system) -> np.ndarray:
     return _checked_velocities(x, system)[0]
 
 
-def primitive_kernel(system, gamma: int, levels: np.ndarray) -> np.ndarray:
-    name = f"system.speed_primitive({gamma}, levels)"
-    values = real_array(name, system.speed_primitive(gamma, levels))
-    if values.shape != levels.shape[:1]:
-        raise ValueError(f"{name} must return one value per particle, shape {levels.shape[:1]}, got {values.shape}")
-    return values
-
-
 def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
     """Velocities (1.8) and their largest magnitude, after checking that they are finite."""
     d, n = x.shape
@@ -138,7 +122,7 @@ def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
         upper = levels[gamma]
         lower = upper.copy()
         lower[:, gamma] -= 1.0 / n
-        velocities[gamma] = n * (primitive_kernel(system, gamma, upper) - primitive_kernel(system, gamma, lower))
+        velocities[gamma] = n * (checked_primitive(system, gamma, upper) - checked_primitive(system, gamma, lower))
     speed = float(np.abs(velocities).max())  # one pass: NaN or inf if any velocity is
     if not math.isfinite(speed):
         raise ValueError("the velocities (1.8) are not finite: system.speed_primitive returned non-finite values, "

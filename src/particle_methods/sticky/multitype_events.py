@@ -40,8 +40,9 @@ from typing import NamedTuple
 import numpy as np
 
 from ..jit import njit
+from ..systems import checked_primitive
 from ..validation import finite_array, finite_result, instance
-from .mspd import checked_configuration, primitive_kernel, ranks_kernel
+from .mspd import checked_configuration, ranks_kernel
 from .spd import check_reach
 
 #: Largest velocity table d (n+1)^d one call builds (400 MB): n <= 4999 for d = 2.
@@ -351,7 +352,7 @@ def _velocity_table(system, n: int, d: int) -> tuple[np.ndarray, np.ndarray, flo
     strides = np.empty((d, d), dtype=np.int64)
     lowest, highest = np.empty(d), np.empty(d)
     for gamma in range(d):
-        speeds = n * np.diff(primitive_kernel(system, gamma, levels).reshape(shape), axis=gamma)
+        speeds = n * np.diff(checked_primitive(system, gamma, levels).reshape(shape), axis=gamma)
         finite_result("the velocities (1.8)", speeds, "system.speed_primitive returned values whose differences "
                       "overflow or are not finite")
         table[gamma] = speeds.ravel()

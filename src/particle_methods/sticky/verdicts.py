@@ -17,7 +17,7 @@ from .. import claims as c
 from ..convergence import pairwise_orders
 from ..rates import Recorder, fit, order
 from ..steady import holds_from
-from .psystem import MINUS, PLUS
+from ..systems import MINUS, PLUS
 from .spd import cluster_sizes
 
 PAPER = "sticky"

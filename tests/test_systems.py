@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
+from particle_methods.systems import MINUS, PLUS, PSystem
 
 SYSTEM = PSystem(nu=0.5, kappa=5.0)
 

@@ -1,4 +1,12 @@
-"""The p-system of section 5.2.2 in Riemann invariants, as a 2x2 diagonal system (5.7).
+"""Diagonal systems (1.7) of the sticky paper: the protocol every scheme takes, and the p-system.
+
+A diagonal system is any object with an integer ``d`` (the number of types) and a method
+``speed_primitive(gamma, levels)``: the antiderivative of lambda^gamma in its own variable at the
+rows of ``levels`` (shape (..., d)). :func:`checked_system` and :func:`checked_primitive` check
+both for the MSPD (:mod:`particle_methods.sticky`) and the finite volumes
+(:mod:`particle_methods.finite_volume`) alike.
+
+The p-system of section 5.2.2 in Riemann invariants, as a 2x2 diagonal system (5.7):
 
 Unknowns: specific volume u in [0, nu] and velocity v; pressure
 
@@ -22,9 +30,28 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import in_interval, integer_at_least, positive
+from .validation import ParameterTypeError, in_interval, integer_at_least, positive, real_array
 
 MINUS, PLUS = 0, 1
+
+
+def checked_system(system) -> int:
+    """Number of types d of a diagonal system (an integer d and a method speed_primitive)."""
+    if not callable(getattr(system, "speed_primitive", None)):
+        raise ParameterTypeError(
+            f"system must be a diagonal system with a method speed_primitive(gamma, levels), got {system!r}"
+        )
+    return integer_at_least("system.d (the number of types)", getattr(system, "d", None), 1)
+
+
+def checked_primitive(system, gamma: int, levels: np.ndarray) -> np.ndarray:
+    """system.speed_primitive(gamma, levels), one real value per row of ``levels`` (else a ValueError)."""
+    name = f"system.speed_primitive({gamma}, levels)"
+    values = real_array(name, system.speed_primitive(gamma, levels))
+    if values.shape != levels.shape[:1]:
+        raise ValueError(f"{name} must return one value per particle, shape {levels.shape[:1]}, got {values.shape}")
+    return values
+
 
 _LARGEST_SCALE = 1e300
 """Bound on the speed constants of a :class:`PSystem`, so that pressures and primitives stay finite."""

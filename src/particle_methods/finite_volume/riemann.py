@@ -25,9 +25,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize
 
-from ..finite_volume import checked_edges
+from ..systems import PSystem
 from ..validation import ParameterTypeError, finite_number, finite_values, instance, positive
-from .psystem import PSystem
+from .grids import checked_edges
 
 
 def _state(name: str, state, system: PSystem) -> tuple[float, float]:

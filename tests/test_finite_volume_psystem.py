@@ -11,18 +11,19 @@ from scipy import integrate
 
 from particle_methods.convergence import fit_order, order_table
 from particle_methods.finite_volume import BURGERS, cell_averages_of_step_cdf, godunov, l1_between_cell_functions
-from particle_methods.norms import cdf_antiderivative
-from particle_methods.sticky import ScalarLaw, burgers_flux, psystem_volumes
-from particle_methods.sticky.cases import psystem_initial_measures
-from particle_methods.sticky.psystem import MINUS, PLUS, PSystem
-from particle_methods.sticky.psystem_riemann import PSystemRiemann
-from particle_methods.sticky.psystem_volumes import (
+from particle_methods.finite_volume import psystem as fv_psystem
+from particle_methods.finite_volume.psystem import (
     MAX_CELL_STEPS,
     _face_pass,
     hll_psystem,
     invariants_from_conservative,
     upwind_diagonal,
 )
+from particle_methods.finite_volume.riemann import PSystemRiemann
+from particle_methods.norms import cdf_antiderivative
+from particle_methods.sticky import ScalarLaw, burgers_flux
+from particle_methods.sticky.cases import psystem_initial_measures
+from particle_methods.systems import MINUS, PLUS, PSystem
 from particle_methods.validation import ParameterTypeError
 
 SYSTEM = PSystem(nu=0.5, kappa=5.0)
@@ -198,7 +199,7 @@ def test_study_cases_run_and_keep_their_bounds(case):
     assert np.all((u >= 0.0) & (u <= SYSTEM.nu))
     w_minus, w_plus = invariants_from_conservative(SYSTEM, u, v)
     # Both schemes approximate the same solution while it is smooth (rarefaction case); once
-    # shocks form the conservative solution's w^- exceeds 1 (module docstring of psystem_volumes).
+    # shocks form the conservative solution's w^- exceeds 1 (module docstring of finite_volume.psystem).
     gap = sum(l1_between_cell_functions(a, edges, b, edges) for a, b in zip((w_minus, w_plus), w))
     if case == "rarefaction":
         assert gap < 0.1 and w_minus.max() <= 1.0 + 1e-12
@@ -267,8 +268,8 @@ def test_speeds_at_the_rounding_level_of_the_primitives_are_left_out():
 def test_upwind_takes_the_time_steps_of_the_largest_speed_on_the_study_data(monkeypatch):
     """On the data of section 5.2.2 the rounding noise in the Laplace tails must not shorten the steps."""
     calls = []
-    original = psystem_volumes._primitives
-    monkeypatch.setattr(psystem_volumes, "_primitives", lambda *args: calls.append(1) or original(*args))
+    original = fv_psystem._primitives
+    monkeypatch.setattr(fv_psystem, "_primitives", lambda *args: calls.append(1) or original(*args))
     edges, w0 = study_data("rarefaction", 4000)
     dt = 0.9 * (edges[1] - edges[0]) / SYSTEM.speed_scale  # at the peak speed c(nu/2), every step's bound
     upwind_diagonal(SYSTEM, w0, edges, 199.5 * dt)  # half a step of slack for the rounding of the speeds

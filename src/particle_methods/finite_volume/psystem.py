@@ -40,11 +40,10 @@ import math
 
 import numpy as np
 
-from ..finite_volume import check_cell_steps, check_cells_match, checked_edges, checked_time_and_cfl, uniform_width
 from ..jit import njit
+from ..systems import PSystem, checked_primitive, checked_system, pressure_formula, sound_speed_formula
 from ..validation import finite_array, finite_result, finite_values, instance, nonnegative
-from .mspd import checked_system, primitive_kernel
-from .psystem import PSystem, pressure_formula, sound_speed_formula
+from .grids import check_cell_steps, check_cells_match, checked_edges, checked_time_and_cfl, uniform_width
 
 #: Largest number of cell updates (cells x time steps) one call of :func:`hll_psystem` accepts:
 #: about 30 s at the 15 ns per update measured. The data of section 5.2.2 on 64000 cells up to
@@ -197,8 +196,8 @@ def _primitives(system, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     for gamma in range(w.shape[0]):
         mixed = right.copy()
         mixed[:, gamma] = w[gamma, :-1]
-        upper[gamma] = primitive_kernel(system, gamma, right)
-        lower[gamma] = primitive_kernel(system, gamma, mixed)
+        upper[gamma] = checked_primitive(system, gamma, right)
+        lower[gamma] = checked_primitive(system, gamma, mixed)
     return upper, lower
 
 
