@@ -42,7 +42,8 @@ def numpy_pair_sums(x, m, weights, widths):
 
 def main():
     """1D: the issue's input (cubic kernel, m = 4, delta = 0.05, random particles, the same as the
-    benchmark of the last build) and Figure 4's finest runs (delta = h^0.9 on a grid), each against
+    benchmark of the last build), Figure 4's finest runs (delta = h^0.9 on a grid) and the m = 6 reference
+    of its log reading (K = -log|x|/(2 pi), Dawson's integral per Gaussian near, its series far), each against
     the previous implementation (particle_methods.blob.pair_sums.generic_sums_kernel) and NumPy broadcasting."""
     from particle_methods.blob.initial import grid_1d
     from particle_methods.blob.pair_sums import generic_sums_kernel as reference_pair_sums
@@ -52,7 +53,7 @@ def main():
     for n in (1000, 10000):
         cases.append(("cubic", 4, 0.05, np.sort(rng.uniform(-1, 1, n))))
     for name, order, inverse_h in (("newtonian_repulsive", 4, 1280), ("cubic", 6, 1280),
-                                   ("newtonian_attractive", 4, 5000)):
+                                   ("newtonian_attractive", 4, 5000), ("log_repulsive", 6, 640)):
         h = 1.0 / inverse_h
         x = grid_1d(h)[:, 0]
         cases.append((name, order, h**0.9, x))
@@ -104,8 +105,9 @@ def clock_hz():
 
 def two_dimensions():
     """2D pair sums, side by side with the previous implementation (the generic loop):
-    the mollified Newtonian kernel of Figure 5 (vectorised path), the raw one (particle method), and
-    the tabulated power-law and Morse kernels of Figures 7 and 8 (tiled path, scalar table lookups)."""
+    the mollified Newtonian kernel of Figure 5 (vectorised path), the raw one (particle method), the
+    tabulated power-law and Morse kernels of Figures 7 and 8 (tiled path, scalar table lookups) and the
+    raw power-law and Morse kernels of their particle runs (tiled path)."""
     import numba
 
     from particle_methods.blob.initial import data_2d, grid_2d
@@ -118,7 +120,7 @@ def two_dimensions():
           f"{'of peak':>8}")
     cases = (("newtonian", 1 / 40, (1 / 40) ** 0.9, True), ("newtonian", 1 / 80, (1 / 80) ** 0.9, True),
              ("newtonian", 1 / 40, None, False), ("quartic_power", 1 / 40, 0.32, False),
-             ("morse_2", 1 / 40, 0.32, False))
+             ("morse_2", 1 / 40, 0.32, False), ("quartic_power", 1 / 40, None, False), ("morse_1", 1 / 40, None, False))
     for name, h, delta, vectorised in cases:
         kernel = kernel_2d(name, mollifier(4, 2), delta) if delta else kernel_2d(name)
         x = grid_2d(h, data_2d("regular"))

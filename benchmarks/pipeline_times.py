@@ -2,7 +2,7 @@
 
     python benchmarks/pipeline_times.py                                    # the full run (output root .)
     python benchmarks/pipeline_times.py --configfile config/quick.yaml --root runs/quick
-    python benchmarks/pipeline_times.py ... --cores 2 --markdown           # the same as a table for the README
+    python benchmarks/pipeline_times.py ... --cores 2 --markdown           # the same as a table (benchmarks/README.md)
 
 Every rule writes `logs/benchmarks/<rule>[_<wildcard values, sorted by wildcard name>].tsv` under the
 run's output root; the first column `s` of such a file is the job's wall time in seconds (the mean

@@ -1,16 +1,32 @@
-"""The README's Python example runs as written."""
+"""The front page and the usage guide: the Python examples run as written, the README stays a front
+page, and its table of failing claims is the expected-verdicts file's."""
 
 import re
 from pathlib import Path
 
+import yaml
 
-def test_readme_python_example_runs():
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
-    blocks = re.findall(r"```python\n(.*?)```", readme, flags=re.DOTALL)
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_usage_examples_run():
+    usage = (ROOT / "docs" / "usage.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", usage, flags=re.DOTALL)
     assert blocks
     namespace = {}
     for block in blocks:
-        exec(compile(block, "README.md", "exec"), namespace)
+        exec(compile(block, "docs/usage.md", "exec"), namespace)
     assert abs(namespace["error"] - namespace["t"] / (4 * namespace["n"])) < 1e-12
     assert namespace["linf_error"] < 0.2
     assert namespace["exact_x"].shape == namespace["x"][0].shape and namespace["particle"].densities is not None
+
+
+def test_readme_is_a_front_page_whose_failures_are_the_expected_ones():
+    readme = (ROOT / "README.md").read_text()
+    assert len(readme.splitlines()) <= 160
+    listed = re.findall(r"^\| `([a-z0-9_.]+)` \| (?:paper|derived|check) \|", readme, flags=re.MULTILINE)
+    expected = yaml.safe_load((ROOT / "config" / "verdicts.yaml").read_text())["fail"]
+    assert sorted(listed) == sorted(expected)
+    for path in ("docs/running.md", "docs/usage.md", "config/README.md", "benchmarks/README.md", "CONTRIBUTING.md",
+                 "paper/README.md"):
+        assert f"`{path}`" in readme and (ROOT / path).exists()
