@@ -129,7 +129,7 @@ def two_dimensions():
         before, _ = best_time(lambda x=x, m=m, arrays=arrays: reference_pair_sums(x, m, *arrays), repeats=2)
         # The vectorised direct path (its flops are counted), not the FMM the package takes from 2,500 particles.
         method = "direct" if vectorised else "auto"
-        now, _ = best_time(lambda x=x, m=m, arrays=arrays: pair_sums(x, m, *arrays, newtonian_2d=method))
+        now, _ = best_time(lambda x=x, m=m, arrays=arrays, method=method: pair_sums(x, m, *arrays, newtonian_2d=method))
         ours, theirs = pair_sums(x, m, *arrays, newtonian_2d=method), reference_pair_sums(x, m, *arrays)
         for a, b in zip(ours, theirs):
             assert np.abs(a - b).max() <= 1e-13 * max(np.abs(b).max(), 1e-300)
