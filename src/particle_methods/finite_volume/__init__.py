@@ -11,8 +11,6 @@ They import :mod:`particle_methods.systems` (the p-system and the protocol of di
 nothing of the particle methods; the sticky code imports them.
 """
 
-from .fluxes import BURGERS, CONCAVE, ScalarFlux, burgers_flux, concave_flux, godunov_flux
-from .grids import cell_averages_of_step_cdf, l1_between_cell_functions, l1_distance_to_step_cdf
 import importlib
 
 #: Where each public name lives; loaded on first use (PEP 562), so that importing one submodule (the
