@@ -285,4 +285,5 @@ def test_the_package_resolves_its_names_lazily():
         fv.no_such_scheme  # noqa: B018
     code = ("import sys; import particle_methods.finite_volume.scalar; "
             "print('particle_methods.finite_volume.psystem' in sys.modules or 'scipy.optimize' in sys.modules)")
-    assert subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.strip() == "False"
+    loaded = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert loaded.strip() == "False"
