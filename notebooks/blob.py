@@ -30,9 +30,9 @@ from IPython.display import Image, display
 
 from particle_methods.blob import data_1d, newtonian_exact, run_1d
 from particle_methods.convergence import fit_order
-from particle_methods.paths import FIGURES, RESULTS
-from particle_methods.tour import show_figure, show_other_claims, summary
-from particle_methods.workflow import load_results
+from particle_replication.paths import FIGURES, RESULTS
+from particle_replication.tour import show_figure, show_other_claims, summary
+from particle_replication.workflow import load_results
 
 print(summary("blob"))
 

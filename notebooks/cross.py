@@ -28,10 +28,10 @@ import numpy as np
 from IPython.display import Image, Markdown, display
 
 from particle_methods.cross import AggregationSolution, methods
-from particle_methods.cross.verdicts import fastest_table
-from particle_methods.paths import FIGURES, RESULTS
-from particle_methods.tour import show_other_claims, summary
-from particle_methods.workflow import load_results
+from particle_replication.paths import FIGURES, RESULTS
+from particle_replication.tour import show_other_claims, summary
+from particle_replication.verdicts.cross import fastest_table
+from particle_replication.workflow import load_results
 
 print(summary("cross"))
 

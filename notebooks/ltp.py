@@ -30,9 +30,9 @@ from IPython.display import Image, display
 from particle_methods.convergence import fit_order
 from particle_methods.ltp import density_named, exact_density, potential, simulate
 from particle_methods.ltp.measures import shrink_rate_inverse
-from particle_methods.paths import FIGURES, RESULTS
-from particle_methods.tour import show_figure, show_other_claims, summary
-from particle_methods.workflow import load_results
+from particle_replication.paths import FIGURES, RESULTS
+from particle_replication.tour import show_figure, show_other_claims, summary
+from particle_replication.workflow import load_results
 
 print(summary("ltp"))
 

@@ -27,9 +27,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import Image, Markdown, display
 
-from particle_methods.claims import markdown_table
 from particle_methods.norms import w1_between_samples, w1_to_measure
-from particle_methods.paths import FIGURES, RESULTS
 from particle_methods.sticky import (
     Atoms,
     BurgersSolution,
@@ -42,8 +40,10 @@ from particle_methods.sticky import (
     velocities_from_flux,
 )
 from particle_methods.sticky.cases import psystem_initial_configuration
-from particle_methods.tour import paper_claims, show_figure, show_other_claims, summary
-from particle_methods.workflow import load_results
+from particle_replication.claims import markdown_table
+from particle_replication.paths import FIGURES, RESULTS
+from particle_replication.tour import paper_claims, show_figure, show_other_claims, summary
+from particle_replication.workflow import load_results
 
 print(summary("sticky"))
 

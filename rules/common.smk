@@ -5,11 +5,13 @@ from pathlib import Path
 
 from snakemake.utils import validate
 
-from particle_methods.configuration import check_configuration
-from particle_methods.workflow import module_dependencies
+from particle_replication.configuration import check_configuration
+from particle_replication.workflow import module_dependencies
 
 ROOT = Path(workflow.basedir)
-PACKAGE = ROOT / "src" / "particle_methods"
+PACKAGE = ROOT / "src" / "particle_methods"  # the numerics
+REPLICATION = ROOT / "src" / "particle_replication"  # claims, verdicts, the pipeline's support
+PACKAGES = [PACKAGE, REPLICATION]
 
 # Software of every rule under `--software-deployment-method conda`. Its post-deploy script
 # installs the package from this clone, which it finds through PARTICLE_METHODS_SOURCE: set
@@ -29,13 +31,13 @@ def source(path):
 
 
 def imports(script):
-    """Package modules that scripts/<script> imports, directly or through each other.
+    """Modules of the two packages that scripts/<script> imports, directly or through each other.
 
     Rules list them among their inputs, so editing a module reruns exactly the
     results computed with it; the list is read from the import statements, so it
     cannot drift from the code.
     """
-    return [source(path) for path in module_dependencies(ROOT / "scripts" / script, PACKAGE)]
+    return [source(path) for path in module_dependencies(ROOT / "scripts" / script, PACKAGES)]
 
 
 CAPTION = str(ROOT / "report" / "caption.rst")

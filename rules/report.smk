@@ -4,7 +4,7 @@ the software versions and the LaTeX report."""
 import os
 import shutil
 
-from particle_methods.environment import commit
+from particle_replication.environment import commit
 
 PAPERS = ["sticky", "ltp", "blob", "cross"]
 CLAIM_SOURCES = expand("results/{paper}/claims.csv", paper=PAPERS)
@@ -19,7 +19,7 @@ rule claims_table:
     input:
         sources=CLAIM_SOURCES,
         rates=RATE_SOURCES,
-        code=[source(PACKAGE / "claims.py"), source(PACKAGE / "rates.py")],
+        code=[source(REPLICATION / "claims.py"), source(REPLICATION / "rates.py")],
     output:
         csv="results/claims.csv",
         markdown="results/claims.md",
@@ -32,7 +32,7 @@ rule claims_table:
         ENVIRONMENT
     threads: 1
     shell:
-        "python -m particle_methods.claims merge {input.sources} --rates {input.rates} "
+        "python -m particle_replication.claims merge {input.sources} --rates {input.rates} "
         "--csv {output.csv} --markdown {output.markdown} --rates-output {output.rates} > {log} 2>&1"
 
 
@@ -51,7 +51,7 @@ rule verify:
     params:
         run=config["verdicts_run"],
     shell:
-        "python -m particle_methods.claims verify {input.claims} --expected {input.expected} "
+        "python -m particle_replication.claims verify {input.claims} --expected {input.expected} "
         "--run {params.run} 2>&1 "
         "| tee {log}; exit ${{PIPESTATUS[0]}}"
 
@@ -85,7 +85,7 @@ rule notebook:
         figures=lambda wildcards: NOTEBOOK_FIGURES[wildcards.paper],
         code=lambda wildcards: [
             source(path)
-            for path in module_dependencies(ROOT / "notebooks" / f"{wildcards.paper}.py", PACKAGE)
+            for path in module_dependencies(ROOT / "notebooks" / f"{wildcards.paper}.py", PACKAGES)
         ],
     output:
         "notebooks/executed/{paper}.ipynb",
@@ -106,7 +106,7 @@ rule versions:
     """Record the commit, and the versions of Python and of every dependency used by this run
     (rerun when the commit changes)."""
     input:
-        code=[source(PACKAGE / "environment.py")],
+        code=[source(REPLICATION / "environment.py")],
     output:
         "results/versions.md",
     log:
@@ -119,7 +119,7 @@ rule versions:
     params:
         commit=COMMIT["hash"],
     shell:
-        "python -m particle_methods.environment {output} > {log} 2>&1"
+        "python -m particle_replication.environment {output} > {log} 2>&1"
 
 
 SNIPPETS = expand(

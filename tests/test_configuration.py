@@ -1,4 +1,4 @@
-"""The configuration checks beyond the schema (particle_methods.configuration)."""
+"""The configuration checks beyond the schema (particle_replication.configuration)."""
 
 import copy
 import re
@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from particle_methods.configuration import check_configuration, overlay
+from particle_replication.configuration import check_configuration, overlay
 
 ROOT = Path(__file__).resolve().parents[1]
 FULL = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())

@@ -1,20 +1,24 @@
-"""Layout rules that keep the code base extensible: no shipped module (package, pipeline scripts, benchmarks,
-notebooks) reaches into another's private names. Tests may: they check a module's internals."""
+"""Layout rules that keep the code base extensible: no shipped module (packages, pipeline scripts, benchmarks,
+notebooks) reaches into another's private names (tests may: they check a module's internals), and the
+numerics load none of the pipeline's software."""
 
 import ast
+import subprocess
+import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCES = [path for folder in ("src", "scripts", "benchmarks", "notebooks") for path in (ROOT / folder).rglob("*.py")]
+PACKAGES = ("particle_methods", "particle_replication")
 
 
 def private_imports(path: Path) -> list[str]:
-    """`from particle_methods... import _name`, and `module._name` on a module imported from the package."""
+    """`from particle_methods... import _name`, and `module._name` on a module imported from the packages."""
     tree = ast.parse(path.read_text())
     found, modules = [], set()
     for node in ast.walk(tree):
         if isinstance(node, ast.ImportFrom):
-            package = node.level > 0 or (node.module or "").startswith("particle_methods")
+            package = node.level > 0 or (node.module or "").startswith(PACKAGES)
             for alias in node.names:
                 if package and alias.name.startswith("_") and not alias.name.startswith("__"):
                     found.append(f"{path.relative_to(ROOT)}:{node.lineno} imports {alias.name}")
@@ -22,7 +26,7 @@ def private_imports(path: Path) -> list[str]:
                     modules.add(alias.asname or alias.name)
         elif isinstance(node, ast.Import):
             modules.update(alias.asname or alias.name for alias in node.names
-                           if alias.name.startswith("particle_methods"))
+                           if alias.name.startswith(PACKAGES))
     for node in ast.walk(tree):
         if (isinstance(node, ast.Attribute) and node.attr.startswith("_") and not node.attr.startswith("__")
                 and isinstance(node.value, ast.Name) and node.value.id in modules):
@@ -44,3 +48,22 @@ def test_the_rule_sees_both_forms(tmp_path):
         assert len(private_imports(sample)) == 2
     finally:
         ROOT = root
+
+
+#: What the numerics must not load: the pipeline's software and the replication package itself.
+PIPELINE_SOFTWARE = ("snakemake", "IPython", "jupytext", "nbclient", "matplotlib", "yaml", "particle_replication")
+
+
+def test_the_numerics_load_none_of_the_pipelines_software():
+    """Every module of particle_methods imported in a fresh interpreter: none of the pipeline's software loads
+    (numba, imported first, loads yaml itself when it is installed, to read an optional .numba_config.yaml)."""
+    code = ("import importlib, pkgutil, sys\n"
+            "import numba\n"
+            "before = set(sys.modules)\n"
+            "import particle_methods\n"
+            "for module in pkgutil.walk_packages(particle_methods.__path__, 'particle_methods.'):\n"
+            "    importlib.import_module(module.name)\n"
+            "loaded = {name.split('.')[0] for name in set(sys.modules) - before}\n"
+            f"print(sorted(loaded & set({PIPELINE_SOFTWARE!r})))\n")
+    loaded = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert loaded.strip() == "[]"

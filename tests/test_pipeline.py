@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from particle_methods.claims import COLUMNS, KINDS, read_verdicts
+from particle_replication.claims import COLUMNS, KINDS, read_verdicts
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
@@ -126,14 +126,14 @@ def test_every_notebook_runs_on_the_quick_results(workdir):
 def test_measured_values_match_the_last_build(workdir):
     """Every claim's measured value within 1e-9 (relative) of the reference recorded from the last build
     (config/values-quick.yaml): an optimisation that changes results beyond rounding fails here."""
-    from particle_methods.claims import read_claims, value_differences
+    from particle_replication.claims import read_claims, value_differences
 
     problems = value_differences(read_claims(workdir / "results/claims.csv"), ROOT / "config" / "values-quick.yaml")
     assert not problems, "\n".join(problems)
 
 
 def test_value_comparison_sees_a_moved_value(tmp_path):
-    from particle_methods.claims import Claim, value_differences
+    from particle_replication.claims import Claim, value_differences
 
     reference = tmp_path / "values.yaml"
     reference.write_text("exempt: {demo.time: wall clock}\nvalues: {demo.order: '3.6', demo.gone: '1.0'}\n")
@@ -174,7 +174,7 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     import signal
     import time
 
-    from particle_methods.workflow import load_results
+    from particle_replication.workflow import load_results
 
     for name in ("results/blob/fig7.npz", "results/blob/fig8.npz", *(f"figures/blob/fig{n}.{ext}" for n in (7, 8)
                                                                      for ext in ("pdf", "png"))):

@@ -45,7 +45,7 @@ rule sticky_psystem_data:
     resources: tmpdir=/tmp
 [Tue Dec  1 21:18:49 2026]
 rule sticky_psystem_figure:
-    input: results/sticky/shocks.npz, ../../src/particle_methods/plotting.py
+    input: results/sticky/shocks.npz, ../../src/particle_replication/plotting.py
     output: figures/sticky/fig6.pdf, figures/sticky/fig6.png
     jobid: 9
     wildcards: case=shocks, figure=fig6

@@ -4,9 +4,9 @@ import re
 
 import pytest
 
-from particle_methods.claims import Claim, write_claims
-from particle_methods.rates import order, write_rates
-from particle_methods.report import cell, number, tex, write_snippets
+from particle_replication.claims import Claim, write_claims
+from particle_replication.rates import order, write_rates
+from particle_replication.report import cell, number, tex, write_snippets
 
 
 @pytest.mark.parametrize("value, expected", [
@@ -102,7 +102,7 @@ def test_the_title_page_names_the_commit(snippets):
 
 
 def test_versions_name_the_commit_or_say_unknown_outside_a_clone(tmp_path, monkeypatch):
-    from particle_methods import environment
+    from particle_replication import environment
 
     state = environment.commit()
     assert len(state["hash"]) == 40 and state["epoch"].isdigit() and state["modified"] in ("yes", "no")

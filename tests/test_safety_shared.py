@@ -28,10 +28,19 @@ from particle_methods.finite_volume import (
     l1_distance_to_step_cdf,
 )
 from particle_methods.norms import discrete_l1, grid_errors, w1_between_samples, w1_to_measure
-from particle_methods.rates import RateFit, Recorder, fit, merge_rates, order, read_rates, window_slopes, write_rates
-from particle_methods.steady import MAX_CHUNKS, first_steady_time, holds_from, relative_change, run_until
 from particle_methods.sticky.measures import Laplace
 from particle_methods.validation import ParameterTypeError
+from particle_replication.rates import (
+    RateFit,
+    Recorder,
+    fit,
+    merge_rates,
+    order,
+    read_rates,
+    window_slopes,
+    write_rates,
+)
+from particle_replication.steady import MAX_CHUNKS, first_steady_time, holds_from, relative_change, run_until
 
 finite_lists = st.lists(st.one_of(extreme, st.floats(-10, 10)), min_size=1, max_size=6)
 huge_lists = st.lists(st.sampled_from([1.7e308, -1.7e308, 1e308, -1e308]), min_size=1, max_size=4)  # overflows

@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 
-from particle_methods import claims as c
 from particle_methods.convergence import fit_order, order_table, pairwise_orders
 from particle_methods.validation import in_interval, integer_at_least, positive, sorted_array
+from particle_replication import claims as c
 
 
 def test_fit_order_recovers_a_power_law():
@@ -156,20 +156,29 @@ def test_validation_messages_name_the_parameter():
 def test_module_dependencies_follow_imports_transitively():
     from pathlib import Path
 
-    from particle_methods.workflow import module_dependencies
+    from particle_replication.workflow import module_dependencies
 
     root = Path(__file__).resolve().parents[1]
-    package = root / "src" / "particle_methods"
-    found = {Path(p).relative_to(package).as_posix() for p in
-             module_dependencies(root / "scripts" / "sticky" / "scalar_data.py", package)}
-    # Direct imports, relative imports inside the package (spd -> validation -> jit), nothing unused.
-    assert {"norms.py", "sticky/cases.py", "sticky/spd.py", "sticky/exact.py", "validation.py", "jit.py"} <= found
-    assert not {"sticky/mspd.py", "systems.py", "finite_volume/psystem.py", "plotting.py", "sticky/__init__.py",
-                "finite_volume/__init__.py"} & found
+    packages = [root / "src" / "particle_methods", root / "src" / "particle_replication"]
+    found = {Path(p).relative_to(root / "src").as_posix() for p in
+             module_dependencies(root / "scripts" / "sticky" / "scalar_data.py", packages)}
+    # Direct imports of both packages, relative imports inside them (spd -> validation -> jit; workflow ->
+    # threads across the packages), nothing unused.
+    assert {"particle_methods/norms.py", "particle_methods/sticky/cases.py", "particle_methods/sticky/spd.py",
+            "particle_methods/sticky/exact.py", "particle_methods/validation.py", "particle_methods/jit.py",
+            "particle_replication/workflow.py", "particle_methods/threads.py"} <= found
+    assert not {"particle_methods/sticky/mspd.py", "particle_methods/systems.py",
+                "particle_methods/finite_volume/psystem.py", "particle_replication/plotting.py",
+                "particle_methods/sticky/__init__.py", "particle_methods/finite_volume/__init__.py"} & found
+    # One package alone: the other's modules are not followed.
+    alone = module_dependencies(root / "scripts" / "sticky" / "scalar_data.py", packages[0])
+    assert alone and not any("particle_replication" in path for path in alone)
+    with pytest.raises(ValueError, match="package_dirs"):
+        module_dependencies(root / "scripts" / "sticky" / "scalar_data.py", [packages[0], root / "scripts" / "sticky"])
 
 
 def test_an_interrupted_write_leaves_the_previous_result_intact(tmp_path, monkeypatch):
-    from particle_methods import workflow
+    from particle_replication import workflow
 
     path = tmp_path / "result.npz"
     workflow.save_results(path, x=np.arange(3.0))
@@ -186,7 +195,7 @@ def test_an_interrupted_write_leaves_the_previous_result_intact(tmp_path, monkey
 
 
 def test_rate_tables_show_every_window_and_decide_on_the_finest():
-    from particle_methods.rates import Recorder, order
+    from particle_replication.rates import Recorder, order
 
     n = np.array([10.0, 100.0, 1000.0, 10000.0])
     errors = np.array([1.0, 0.3, 1e-3, 1e-4])  # pre-asymptotic, then order 1
@@ -204,7 +213,7 @@ def test_rate_tables_show_every_window_and_decide_on_the_finest():
 
 
 def test_log_factor_measure_separates_log_n_over_n_from_one_over_n(tmp_path):
-    from particle_methods.rates import fit, read_rates, write_rates
+    from particle_replication.rates import fit, read_rates, write_rates
 
     n = 2.0 ** np.arange(10, 16)
     with_log = fit("x.a", "n error against log n", "n", n, np.log(n), n * (0.25 * np.log(n) + 2) / n, 3)
@@ -217,7 +226,7 @@ def test_log_factor_measure_separates_log_n_over_n_from_one_over_n(tmp_path):
 
 
 def test_steadiness_criteria():
-    from particle_methods.steady import first_steady_time, holds_from, run_until
+    from particle_replication.steady import first_steady_time, holds_from, run_until
 
     times = np.linspace(0.0, 10.0, 101)
     settling = np.exp(-times)[:, None] * np.ones((1, 3)) + 1.0

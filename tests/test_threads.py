@@ -10,7 +10,7 @@ import pytest
 import threadpoolctl
 
 from particle_methods.threads import _LIBRARY_VARIABLES, available, numba_threads, threads_for, use_threads
-from particle_methods.workflow import logged
+from particle_replication.workflow import logged
 
 
 @pytest.fixture

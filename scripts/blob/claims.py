@@ -1,9 +1,9 @@
 """Every checked claim of the blob paper, measured from the cached results (measures in
-particle_methods.blob.verdicts; thresholds and windows from the config)."""
+particle_replication.verdicts.blob; thresholds and windows from the config)."""
 
-from particle_methods import claims as c
-from particle_methods.blob import verdicts as v
-from particle_methods.workflow import load_results, logged, progress
+from particle_replication import claims as c
+from particle_replication.verdicts import blob as v
+from particle_replication.workflow import load_results, logged, progress
 
 
 def run(inputs, output, p):

@@ -7,7 +7,7 @@ with the paper's coarse ones (``paper_tables``: radius and number of nodes).
 import numpy as np
 
 from particle_methods.blob.solver import integrate_particles, setup_2d
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 RUNS = {"particle": {"method": "particle"}, "blob": {"method": "blob"}}
 

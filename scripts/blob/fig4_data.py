@@ -13,7 +13,7 @@ from particle_methods.blob.exact import newtonian_exact
 from particle_methods.blob.initial import data_1d
 from particle_methods.blob.solver import run_1d
 from particle_methods.norms import discrete_l1
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 METHODS = (("particle", None), ("blob", 4), ("blob", 6))
 EXACT = ("newtonian_attractive", "newtonian_repulsive")   # kernels with an exact solution

@@ -10,7 +10,7 @@ from particle_methods.blob.exact import newtonian_exact_2d
 from particle_methods.blob.initial import data_2d
 from particle_methods.blob.solver import run_2d
 from particle_methods.norms import discrete_l1
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 KEYS = ("trajectory", "density", "particles", "evaluations")
 

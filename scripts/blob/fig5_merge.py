@@ -3,7 +3,7 @@ file, case by case, h from coarse to fine."""
 
 import numpy as np
 
-from particle_methods.workflow import load_results, logged, save_results
+from particle_replication.workflow import load_results, logged, save_results
 
 KEYS = ("trajectory", "density", "particles", "evaluations")
 

@@ -6,8 +6,8 @@ from pathlib import Path
 import numpy as np
 
 from particle_methods.convergence import fit_order, pairwise_orders
-from particle_methods.report import tex
-from particle_methods.workflow import load_results, logged, progress
+from particle_replication.report import tex
+from particle_replication.workflow import load_results, logged, progress
 
 PARTS = ("trajectory", "density")
 

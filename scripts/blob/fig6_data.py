@@ -8,7 +8,7 @@ the top runs (where K_delta is known in closed form) and mass conservation along
 import numpy as np
 
 from particle_methods.blob.solver import mass_defect, run_2d, setup_2d
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def run(p, output):

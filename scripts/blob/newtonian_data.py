@@ -6,7 +6,7 @@ from particle_methods.blob.exact import blowup_time, newtonian_exact
 from particle_methods.blob.initial import data_1d
 from particle_methods.blob.solver import mass_defect, run_1d, setup_1d
 from particle_methods.norms import discrete_l1
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def errors(p, h, t, rtol, atol):

@@ -3,8 +3,8 @@
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from particle_methods.plotting import mathtext, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import mathtext, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 KERNEL_TITLES = {
     "quartic_log": r"$K = |x|^4/4 - \log|x|/(2\pi)$",

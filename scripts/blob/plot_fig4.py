@@ -4,8 +4,8 @@ columns particle, m = 4, m = 6."""
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import label_h_axis, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_h_axis, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 ROWS = {"newtonian_repulsive": r"$K = (-\Delta)^{-1} = -|x|/2$", "cubic": r"$K = |x|^3/3$",
         "log_repulsive": r"$K = -\log|x|/(2\pi)$"}

@@ -3,8 +3,8 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order, pairwise_orders
-from particle_methods.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 TITLES = {"regular, blob": "A. regular data, blob $m = 4$", "regular, particle": "B. regular data, particle",
           "disk, blob": "C. disk indicator, blob $m = 4$"}

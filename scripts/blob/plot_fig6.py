@@ -14,8 +14,8 @@ from matplotlib.ticker import MaxNLocator
 from matplotlib.tri import Triangulation
 
 from particle_methods.blob.initial import data_2d, grid_2d
-from particle_methods.plotting import save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import save_figure
+from particle_replication.workflow import load_results, logged
 
 TITLES = {"newtonian": r"$K = \log|x|/(2\pi)$", "quadratic": r"$K = |x|^2/2$", "cubic": r"$K = |x|^3/3$"}
 SQUARE = ((0, 0), (1, 0), (1, 1), (0, 1))
@@ -89,7 +89,7 @@ def colour_bar(fig, mappable, ax):
 def run(d, shown, cfg, output):
     import matplotlib.pyplot as plt
 
-    from particle_methods.plotting import STYLE
+    from particle_replication.plotting import STYLE
 
     plt.rcParams.update(STYLE)
     kernels = list(d["kernels"])

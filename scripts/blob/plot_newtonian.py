@@ -9,8 +9,8 @@ method) and (C) the trajectory errors against h.
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 TRAJECTORIES_SHOWN = 26
 

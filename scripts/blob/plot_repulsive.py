@@ -1,8 +1,8 @@
 """K = -|x|/2: the density error of the blob method split into quadrature and regularisation parts."""
 
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 
 def run(d, output):

@@ -18,7 +18,7 @@ from particle_methods.blob.initial import data_1d
 from particle_methods.blob.mollifiers import mollifier
 from particle_methods.blob.solver import run_1d
 from particle_methods.norms import discrete_l1
-from particle_methods.workflow import load_results, logged, progress, save_results
+from particle_replication.workflow import load_results, logged, progress, save_results
 
 KERNEL = "newtonian_repulsive"
 

@@ -8,7 +8,7 @@ from particle_methods.blob.solver import CollisionError
 from particle_methods.cross import methods
 from particle_methods.cross.exact import AggregationSolution
 from particle_methods.ltp.solver import StabilityError
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def first_collision(x, v):

@@ -1,13 +1,13 @@
 """Every checked claim of the cross-method comparison, from the cached results and the config's rules.
 
-The measures live in :mod:`particle_methods.cross.verdicts`, where the tests feed them wrong outcomes;
+The measures live in :mod:`particle_replication.verdicts.cross`, where the tests feed them wrong outcomes;
 this script only loads the results and writes the claims and their rate tables.
 """
 
-from particle_methods import claims as c
-from particle_methods.cross import verdicts as v
-from particle_methods.rates import Recorder
-from particle_methods.workflow import load_results, logged, progress
+from particle_replication import claims as c
+from particle_replication.rates import Recorder
+from particle_replication.verdicts import cross as v
+from particle_replication.workflow import load_results, logged, progress
 
 
 def latex_number(value: float) -> str:

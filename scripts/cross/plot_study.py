@@ -3,9 +3,9 @@ or cells, or against wall time, for every data (rows) and time (columns)."""
 
 import numpy as np
 
-from particle_methods.cross.verdicts import cases, series
-from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.verdicts.cross import cases, series
+from particle_replication.workflow import load_results, logged
 
 #: Errors below this (exact to rounding) are drawn on it, with open markers.
 FLOOR = 1e-16

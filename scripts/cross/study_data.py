@@ -13,7 +13,7 @@ import numpy as np
 
 from particle_methods.cross import distances, methods
 from particle_methods.cross.exact import AggregationSolution
-from particle_methods.workflow import logged, progress, save_results, timed
+from particle_replication.workflow import logged, progress, save_results, timed
 
 
 def count(output) -> int:

@@ -1,12 +1,12 @@
 """Every checked claim of the LTP paper, measured from the cached results.
 
-The measures live in particle_methods.ltp.verdicts; their thresholds and windows come from the
+The measures live in particle_replication.verdicts.ltp; their thresholds and windows come from the
 config, fixed before measuring."""
 
-from particle_methods import claims as c
-from particle_methods.ltp import verdicts as v
-from particle_methods.rates import Recorder
-from particle_methods.workflow import load_results, logged, progress
+from particle_replication import claims as c
+from particle_replication.rates import Recorder
+from particle_replication.verdicts import ltp as v
+from particle_replication.workflow import load_results, logged, progress
 
 
 def run(inputs, output, p):

@@ -7,7 +7,7 @@ import numpy as np
 
 from particle_methods.ltp import density_named, potential, simulate
 from particle_methods.ltp.measures import concentration_series
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def run(p, concentration, output):

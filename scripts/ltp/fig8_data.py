@@ -12,8 +12,8 @@ import numpy as np
 
 from particle_methods.ltp import Particles, density_named, potential, simulate
 from particle_methods.ltp.measures import excess_variation, peak_count
-from particle_methods.steady import first_steady_time
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.steady import first_steady_time
+from particle_replication.workflow import logged, progress, save_results
 
 
 def sampled(particles, grid):

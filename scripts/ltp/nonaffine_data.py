@@ -10,7 +10,7 @@ import numpy as np
 
 from particle_methods.ltp import density_named, potential, simulate
 from particle_methods.norms import grid_errors
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def run(p, output):

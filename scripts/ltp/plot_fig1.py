@@ -3,8 +3,8 @@
 import numpy as np
 
 from particle_methods.ltp import HAT, hat_biorthogonal_kernel
-from particle_methods.plotting import new_figure, save_figure
-from particle_methods.workflow import logged
+from particle_replication.plotting import new_figure, save_figure
+from particle_replication.workflow import logged
 
 
 def run(p, output):

@@ -1,7 +1,7 @@
 """Figure 4: exact, LTP and SP densities for W = x^2/2, hat (left) and B3 (right)."""
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 NAMES = {"hat": "hat function (2.12)", "b3": "B3-spline (2.13)"}
 

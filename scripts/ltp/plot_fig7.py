@@ -3,8 +3,8 @@
 import matplotlib as mpl
 import numpy as np
 
-from particle_methods.plotting import new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 
 def run(d, output):

@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 
 def run(d, output):

@@ -6,8 +6,8 @@ import math
 import numpy as np
 
 from particle_methods.ltp.measures import collapse_times, shrink_rate_inverse
-from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 
 def run(inputs, p, output):

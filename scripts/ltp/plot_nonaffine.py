@@ -1,8 +1,8 @@
 """LTP on a flow that is not affine: errors against h; the drift of the centre of mass."""
 
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 
 def run(d, output):

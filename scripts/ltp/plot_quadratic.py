@@ -3,8 +3,8 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_methods.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 
 def figure2(d, output):

@@ -4,7 +4,7 @@ import numpy as np
 
 from particle_methods.ltp import density_named, exact_density, potential, simulate
 from particle_methods.norms import grid_errors
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def errors(run, initial, w, t, grid):

@@ -27,7 +27,7 @@ from particle_methods.sticky.mspd import mspd_positions
 from particle_methods.sticky.multitype_events import mspd_exact
 from particle_methods.sticky.spd import spd_positions
 from particle_methods.systems import PSystem
-from particle_methods.workflow import logged, progress, save_results, timed
+from particle_replication.workflow import logged, progress, save_results, timed
 
 FLUXES = {"burgers_two_atoms": BURGERS, "concave_laplace": CONCAVE}
 PSYSTEM_CASES = ("rarefaction", "shocks")

@@ -20,7 +20,7 @@ from particle_methods.sticky.cases import (
 )
 from particle_methods.sticky.multitype_events import mspd_exact
 from particle_methods.systems import PSystem
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 PSYSTEM_CASES = ("rarefaction", "shocks")
 

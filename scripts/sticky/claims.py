@@ -1,14 +1,14 @@
 """Every checked claim of the sticky-particle paper, from the cached results and the config's rules.
 
-The measures live in :mod:`particle_methods.sticky.verdicts`, where the tests feed them wrong
+The measures live in :mod:`particle_replication.verdicts.sticky`, where the tests feed them wrong
 outcomes; this script only loads the results and writes the claims and their rate tables.
 """
 
-from particle_methods import claims as c
-from particle_methods.rates import Recorder
-from particle_methods.sticky import verdicts as v
 from particle_methods.systems import PSystem
-from particle_methods.workflow import load_results, logged, progress
+from particle_replication import claims as c
+from particle_replication.rates import Recorder
+from particle_replication.verdicts import sticky as v
+from particle_replication.workflow import load_results, logged, progress
 
 
 def run(inputs, cfg, output):

@@ -22,7 +22,7 @@ from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.mspd import mspd_positions, ranks_kernel
 from particle_methods.sticky.spd import hull_positions_kernel
 from particle_methods.systems import PSystem
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def fixed_allocator():

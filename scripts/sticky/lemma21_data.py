@@ -14,7 +14,7 @@ from particle_methods.sticky.measures import (
     Weibull,
     median_quantiles,
 )
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def measures(p):

@@ -3,11 +3,11 @@ and the work-precision diagrams of the cost argument of section 5.2 (``beyond_co
 
 import numpy as np
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
 from particle_methods.sticky.cases import empirical_cdf
-from particle_methods.sticky.verdicts import SCALAR_NAMES
 from particle_methods.systems import MINUS, PLUS
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.verdicts.sticky import SCALAR_NAMES
+from particle_replication.workflow import load_results, logged
 
 METHODS = {  # key in the results, label, colour, marker
     "spd": ("SPD", "C0", "o"),

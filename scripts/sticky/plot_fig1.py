@@ -2,9 +2,9 @@
 
 import numpy as np
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
 from particle_methods.sticky.hull_reference import cumulative_free_positions, hull_vertices
-from particle_methods.workflow import logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import logged
 
 
 def run(p, output):

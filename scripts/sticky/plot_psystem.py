@@ -1,8 +1,8 @@
 """Figures 4 to 7: MSPD trajectories (4, 6) and w-, w+, u, v in the space-time plane (5, 7)."""
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
 from particle_methods.systems import MINUS, PLUS
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 CASE_TITLES = {
     "rarefaction": "p-system, w0+ >= w0- (x0 = {x0:g})",

@@ -3,8 +3,8 @@
 import matplotlib as mpl
 import numpy as np
 
-from particle_methods.plotting import label_panel, new_figure, save_figure
-from particle_methods.workflow import load_results, logged
+from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.workflow import load_results, logged
 
 TITLES = {
     "burgers_two_atoms": "Burgers equation (5.1) from (delta_-1 + delta_1)/2",

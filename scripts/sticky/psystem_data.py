@@ -9,12 +9,12 @@ import math
 
 import numpy as np
 
-from particle_methods.steady import holds_from, run_until
 from particle_methods.sticky.cases import empirical_cdf, psystem_initial_configuration
 from particle_methods.sticky.mspd import mspd_trajectory
 from particle_methods.sticky.spd import cluster_sizes
 from particle_methods.systems import MINUS, PLUS, PSystem
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.steady import holds_from, run_until
+from particle_replication.workflow import logged, progress, save_results
 
 
 def end_state(times, states):

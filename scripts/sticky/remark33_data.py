@@ -13,7 +13,7 @@ from particle_methods.sticky.cases import SCALAR_CASES
 from particle_methods.sticky.exact import BurgersSolution
 from particle_methods.sticky.measures import Atoms
 from particle_methods.sticky.spd import spd_positions, velocities_from_flux
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def godunov_distance(flux, x, positions, t, cells_per_unit, cfl):

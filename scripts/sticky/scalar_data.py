@@ -5,7 +5,7 @@ import numpy as np
 from particle_methods.norms import w1_to_measure
 from particle_methods.sticky.cases import SCALAR_CASES, empirical_cdf
 from particle_methods.sticky.spd import cluster_sizes, spd_trajectories
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def run(p, output):

@@ -16,7 +16,7 @@ from particle_methods.sticky.cases import (
 )
 from particle_methods.sticky.mspd import mspd_positions
 from particle_methods.systems import PSystem
-from particle_methods.workflow import logged, progress, save_results
+from particle_replication.workflow import logged, progress, save_results
 
 
 def snapshots(case, x0, system, n, delta, times):

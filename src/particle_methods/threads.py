@@ -11,7 +11,7 @@ each parallel region waits for a thread that is not scheduled: on 2 cores, three
 - :func:`use_threads` sets the threads of numba and of every loaded BLAS/OpenMP library at once,
   clamped to what the process may use (``NUMBA_NUM_THREADS`` when the user set it, else the
   cores). Every pipeline script calls it with the rule's ``threads``, through
-  :func:`particle_methods.workflow.logged`.
+  :func:`particle_replication.workflow.logged`.
 - :func:`threads_for` runs a kernel on the current threads only when its problem is at least a
   size where that pays off, and on one thread below it. Each kernel family keeps that size as
   one named constant next to its kernels (``PARALLEL_MIN_...``), measured by

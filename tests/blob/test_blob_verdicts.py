@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 import yaml
 
-from particle_methods.blob import verdicts as v
 from particle_methods.blob.initial import data_2d
 from particle_methods.blob.rings import uniform_ring_radius
-from particle_methods.rates import Recorder
+from particle_replication.rates import Recorder
+from particle_replication.verdicts import blob as v
 
 CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["blob"]
 Q = 0.9

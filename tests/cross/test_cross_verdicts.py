@@ -1,8 +1,9 @@
-"""Every claim of the cross-method comparison can fail: each measure of cross/verdicts.py passes on synthetic
-results of the shape the theory states and fails on a plausible wrong one (an SPD at order 0.5, an SPD error
-that grows in time or is not zero once all the mass has collapsed, blob, LTP, SP and Godunov orders off their
-bands, blob particles that coincide or spread beyond delta, a method faster than the SPDs, a particle method
-1e-6 off the SPD, a collision event in the wrong place, a solver that does not chatter, LTP refused at 0.9).
+"""Every claim of the cross-method comparison can fail: each measure of particle_replication.verdicts.cross
+passes on synthetic results of the shape the theory states and fails on a plausible wrong one (an SPD at
+order 0.5, an SPD error that grows in time or is not zero once all the mass has collapsed, blob, LTP, SP and
+Godunov orders off their bands, blob particles that coincide or spread beyond delta, a method faster than the
+SPDs, a particle method 1e-6 off the SPD, a collision event in the wrong place, a solver that does not chatter,
+LTP refused at 0.9).
 
 The inputs are the result dictionaries the scripts save (scripts/cross/study_data.py and behaviour_data.py,
 same keys, checked below), built from the config's sizes, times and bands, so the tests follow the config."""
@@ -15,10 +16,10 @@ import numpy as np
 import pytest
 import yaml
 
-from particle_methods.cross import verdicts as v
 from particle_methods.cross.exact import AggregationSolution
-from particle_methods.rates import Recorder
-from particle_methods.workflow import load_results, save_results
+from particle_replication.rates import Recorder
+from particle_replication.verdicts import cross as v
+from particle_replication.workflow import load_results, save_results
 
 ROOT = Path(__file__).parents[2]
 CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["cross"]

@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 import yaml
 
-from particle_methods.ltp import verdicts as v
 from particle_methods.ltp.measures import excess_variation, peak_count
-from particle_methods.rates import Recorder
-from particle_methods.steady import first_steady_time
+from particle_replication.rates import Recorder
+from particle_replication.steady import first_steady_time
+from particle_replication.verdicts import ltp as v
 
 CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["ltp"]
 QUADRATIC, NONAFFINE = CONFIG["quadratic"], CONFIG["nonaffine"]

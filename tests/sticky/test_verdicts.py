@@ -7,9 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from particle_methods.rates import Recorder
-from particle_methods.sticky import verdicts as v
 from particle_methods.systems import MINUS, PLUS, PSystem
+from particle_replication.rates import Recorder
+from particle_replication.verdicts import sticky as v
 
 N = 2.0 ** np.arange(1, 10)
 BAND = (0.25, 1.0)

@@ -9,7 +9,7 @@ solution, known exactly (:mod:`.exact`). Public entry points:
   the blow-up (:mod:`.exact`);
 - :mod:`.methods`: every method's output at time t;
 - :mod:`.distances`: W1 distances computed on each output;
-- :mod:`.verdicts`: the claims of the comparison.
+- the claims of the comparison are measured in :mod:`particle_replication.verdicts.cross`.
 """
 
 from .exact import AggregationSolution, exact_mass_function

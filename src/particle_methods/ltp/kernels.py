@@ -126,40 +126,27 @@ def _piece_gauss(d, width, lo, hi, coefficients, a, nodes, weights):
 
 
 @njit
-def _particle_far(d, width, a, series_first, series_second):
+def _particle_far(d, width, a, moments):
     """int sign(z)|z|^{a-1} phi(s) ds and int |z|^{a-2} phi(s) ds, z = d - width s, for a particle whose
-    support lies far from z = 0: the binomial series of the module docstring, whose coefficients
-    binom(q, m) mu_m (``series_first`` for q = a - 1, ``series_second`` for q = a - 2, :func:`_far_series`)
-    depend on the term and the shape only, summed by Horner's rule in -sign(d) width / |d|."""
+    support lies far from z = 0: the binomial series of the module docstring on the shape's moments."""
     u = abs(d)
     sigma = 1.0 if d > 0.0 else -1.0
     ratio = -sigma * width / u
-    last = series_first.size - 1
-    s1 = series_first[last]
-    s2 = series_second[last]
-    for m in range(last - 1, -1, -1):
-        s1 = s1 * ratio + series_first[m]
-        s2 = s2 * ratio + series_second[m]
-    power = _power(u, a - 2.0)
+    q1 = a - 1.0
+    q2 = a - 2.0
+    b1 = 1.0
+    b2 = 1.0
+    power_of_ratio = 1.0
+    s1 = 0.0
+    s2 = 0.0
+    for m in range(moments.size):
+        s1 += b1 * power_of_ratio * moments[m]
+        s2 += b2 * power_of_ratio * moments[m]
+        b1 *= (q1 - m) / (m + 1.0)
+        b2 *= (q2 - m) / (m + 1.0)
+        power_of_ratio *= ratio
+    power = _power(u, q2)
     return sigma * power * u * s1, power * s2
-
-
-@njit
-def _far_series(exponents, moments):
-    """binom(a - 1, m) mu_m and binom(a - 2, m) mu_m for every term, shape (terms, moments) each."""
-    first = np.empty((exponents.size, moments.size))
-    second = np.empty((exponents.size, moments.size))
-    for term in range(exponents.size):
-        q1 = exponents[term] - 1.0
-        q2 = exponents[term] - 2.0
-        b1 = 1.0
-        b2 = 1.0
-        for m in range(moments.size):
-            first[term, m] = b1 * moments[m]
-            second[term, m] = b2 * moments[m]
-            b1 *= (q1 - m) / (m + 1.0)
-            b2 *= (q2 - m) / (m + 1.0)
-    return first, second
 
 
 def shape_moments(breaks, pieces, count: int = FAR_MOMENTS) -> np.ndarray:
@@ -224,7 +211,6 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
     longest = 0.0
     for j in range(pieces.shape[0]):
         longest = max(longest, breaks[j + 1] - breaks[j])
-    series_first, series_second = _far_series(exponents, moments)
     for i in prange(targets.size):
         buffer = np.empty(4)
         f = 0.0
@@ -248,7 +234,7 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
                 d = targets[i] - centres[k]
                 width = widths[k]
                 if max(d - width * breaks[-1], width * breaks[0] - d) > EXPANSION * width * longest:
-                    p1, p2 = _particle_far(d, width, a, series_first[term], series_second[term])
+                    p1, p2 = _particle_far(d, width, a, moments)
                     term_first += weights[k] * p1
                     term_second += weights[k] * p2
                     continue

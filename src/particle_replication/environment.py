@@ -1,7 +1,7 @@
 """The software a run used: the repository's commit, Python and each dependency's version.
 
-``python -m particle_methods.environment versions.md`` writes them for the report;
-``python -m particle_methods.environment --epoch`` prints the commit time in seconds since 1970,
+``python -m particle_replication.environment versions.md`` writes them for the report;
+``python -m particle_replication.environment --epoch`` prints the commit time in seconds since 1970,
 the SOURCE_DATE_EPOCH that makes two builds of the PDF from one commit byte-identical.
 """
 
@@ -66,7 +66,7 @@ def markdown() -> str:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m particle_methods.environment", description=__doc__)
+    parser = argparse.ArgumentParser(prog="python -m particle_replication.environment", description=__doc__)
     parser.add_argument("output", nargs="?", help="Markdown file to write")
     parser.add_argument("--epoch", action="store_true", help="print the commit time (SOURCE_DATE_EPOCH) and exit")
     args = parser.parse_args(argv)

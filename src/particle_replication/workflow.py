@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .threads import available, use_threads
+from particle_methods.threads import available, use_threads
 
 
 @contextlib.contextmanager
@@ -78,28 +78,31 @@ def load_results(path) -> dict:
         return {key: data[key] for key in data.files}
 
 
-def module_dependencies(script, package_dir) -> list[str]:
-    """Source files of the package that ``script`` imports, directly or through each other.
+def module_dependencies(script, package_dirs) -> list[str]:
+    """Source files of the packages that ``script`` imports, directly or through each other.
 
-    Rules list these among their inputs so that editing a module reruns exactly the
-    results computed with it. Absolute imports of the package and relative imports
-    inside it are followed; a package's ``__init__.py`` counts only when a name is
-    imported from it (its re-exports are then followed too).
+    ``package_dirs`` is a package directory or a list of them side by side (``src/particle_methods`` and
+    ``src/particle_replication``). Rules list these files among their inputs so that editing a module
+    reruns exactly the results computed with it. Absolute imports of the packages and relative imports
+    inside them are followed; a package's ``__init__.py`` counts only when a name is imported from it
+    (its re-exports are then followed too).
     """
-    package_dir = Path(package_dir).resolve()
-    package = package_dir.name
+    dirs = [Path(d).resolve() for d in ([package_dirs] if isinstance(package_dirs, str | Path) else package_dirs)]
+    if not dirs or len({d.parent for d in dirs}) != 1:
+        raise ValueError(f"package_dirs must be one or more package directories side by side, got {package_dirs}")
+    root, packages = dirs[0].parent, {d.name for d in dirs}
     found: set[Path] = set()
     pending = [Path(script).resolve()]
     while pending:
         path = pending.pop()
         tree = ast.parse(path.read_text(), filename=str(path))
-        inside = path.is_relative_to(package_dir)
-        here = path.relative_to(package_dir.parent).with_suffix("").parts if inside else ()
+        inside = any(path.is_relative_to(d) for d in dirs)
+        here = path.relative_to(root).with_suffix("").parts if inside else ()
         for node in ast.walk(tree):
             for parts, names in _imported(node, here):
-                if not parts or parts[0] != package:
+                if not parts or parts[0] not in packages:
                     continue
-                for candidate in _module_files(package_dir.parent, parts, names):
+                for candidate in _module_files(root, parts, names):
                     if candidate not in found:
                         found.add(candidate)
                         pending.append(candidate)

@@ -183,7 +183,7 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir) -> None:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m particle_methods.report", description=__doc__)
+    parser = argparse.ArgumentParser(prog="python -m particle_replication.report", description=__doc__)
     parser.add_argument("claims")
     parser.add_argument("rates")
     parser.add_argument("versions")

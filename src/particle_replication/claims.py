@@ -332,7 +332,7 @@ def value_differences(claims, reference_path, relative: float = 1e-9) -> list[st
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m particle_methods.claims", description=__doc__)
+    parser = argparse.ArgumentParser(prog="python -m particle_replication.claims", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
     merge_parser = sub.add_parser("merge", help="merge per-paper claim files")
     merge_parser.add_argument("sources", nargs="+")

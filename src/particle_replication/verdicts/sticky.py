@@ -13,12 +13,13 @@ import math
 
 import numpy as np
 
+from particle_methods.convergence import pairwise_orders
+from particle_methods.sticky.spd import cluster_sizes
+from particle_methods.systems import MINUS, PLUS
+
 from .. import claims as c
-from ..convergence import pairwise_orders
 from ..rates import Recorder, fit, order
 from ..steady import holds_from
-from ..systems import MINUS, PLUS
-from .spd import cluster_sizes
 
 PAPER = "sticky"
 ROUNDING = 1e-9

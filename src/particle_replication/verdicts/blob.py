@@ -20,7 +20,7 @@ PAPER = "blob"
 RESOLUTION_TIME = 0.8  # Figures 1B and 3B: the densities are compared with the exact ones at t = 0.8
 RATES = Recorder(progress)  # the claims script may replace it; every fit of a run is recorded here
 
-# Kind and source of every claim (see particle_methods.claims): "paper" for what the paper
+# Kind and source of every claim (see particle_replication.claims): "paper" for what the paper
 # states (where), "derived" for what we derive from its theory, "check" for our own checks.
 FIG4_RATE = ("paper", "Figure 4, section 4.3")
 FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates better than m = 4, not as good as m q")
@@ -387,7 +387,7 @@ def spread(values) -> float:
 
 
 def fig6_claims(d):
-    from .initial import data_2d
+    from particle_methods.blob.initial import data_2d
 
     times = d["times"]
     quadratic = np.linalg.norm(d["quadratic_positions"], axis=-1)
@@ -434,7 +434,7 @@ def fig6_claims(d):
 
 def fig7_claims(d, p):
     """Figure 7: end states of the power-law kernels, each measured once steady (``inf``, unmeasured, otherwise)."""
-    from .rings import uniform_ring_radius
+    from particle_methods.blob.rings import uniform_ring_radius
 
     delta = float(d["delta"])
     window, tolerance = float(p["steady"]["window"]), float(p["steady"]["tolerance"]) * delta

@@ -1,7 +1,7 @@
 """Every checked claim of the LTP paper, measured from the cached results (section 6).
 
 Each function takes the arrays of one result file (a dict), the rate recorder and the config
-section that fixes its measure and tolerance, and returns claims (see particle_methods.claims).
+section that fixes its measure and tolerance, and returns claims (see particle_replication.claims).
 Kinds: ``paper`` for what section 6 states, ``derived`` for what we derive from its theorems,
 ``check`` for our own diagnostics. The tests in tests/ltp/test_ltp_verdicts.py feed every paper claim
 a plausible wrong outcome and show it fails.
@@ -13,10 +13,11 @@ import math
 
 import numpy as np
 
+from particle_methods.ltp.measures import collapse_times, shrink_factor
+
 from .. import claims as c
 from ..rates import Recorder, order
 from ..steady import first_steady_time
-from .measures import collapse_times, shrink_factor
 
 PAPER = "ltp"
 ROUNDING = 1e-10

@@ -1,7 +1,7 @@
 """What the notebooks show: a figure of the pipeline next to the claims checked on it.
 
 The notebooks (``notebooks/<paper>.py``) read the pipeline's outputs through
-:mod:`particle_methods.paths`, so they show the run in ``PARTICLE_METHODS_WORKDIR``.
+:mod:`particle_replication.paths`, so they show the run in ``PARTICLE_METHODS_WORKDIR``.
 """
 
 from __future__ import annotations

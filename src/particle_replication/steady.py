@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from .validation import (
+from particle_methods.validation import (
     ParameterTypeError,
     finite_array,
     finite_number,

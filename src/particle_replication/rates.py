@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .validation import ParameterTypeError, finite_array, finite_number, finite_result, integer_at_least
+from particle_methods.validation import ParameterTypeError, finite_array, finite_number, finite_result, integer_at_least
 
 MAX_POINTS = 100
 """Most resolutions one fit accepts: :func:`window_slopes` fits all n^2/2 windows, a second for 100."""
