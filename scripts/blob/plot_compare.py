@@ -26,7 +26,7 @@ def run(d, title, output):
         low, high = both.min(axis=0), both.max(axis=0)
         low, high = low - 0.06 * (high - low), high + 0.06 * (high - low)   # same frame for both methods
         axes[0, column].set_title(f"{KERNEL_TITLES.get(kernel, kernel)}\n{DATA_TITLES.get(data, mathtext(data))}, "
-                                  f"$t = {t_max:g}$", fontsize=9)
+                                  f"$t = {t_max:g}$", fontsize="medium")
         for row, method in enumerate(("particle", "blob")):
             ax = axes[row, column]
             paths = d[f"case{column}_{method}"]
@@ -35,7 +35,7 @@ def run(d, title, output):
             ax.set(xlabel="$x$", aspect="equal", xlim=(low[0], high[0]), ylim=(low[1], high[1]))
             ax.xaxis.set_major_locator(MaxNLocator(5))
             ax.yaxis.set_major_locator(MaxNLocator(5))
-            ax.tick_params(labelsize=8)
+            ax.tick_params(labelsize="small")
     axes[0, 0].set_ylabel("particle method\n$y$")
     axes[1, 0].set_ylabel("blob method\n$y$")
     fig.suptitle(f"{mathtext(title)}\n($h = {float(d['h']):.3g}$, $\\delta = {float(d['delta']):g}$)")

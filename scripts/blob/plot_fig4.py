@@ -31,7 +31,7 @@ def run(d, t, output):
             if row == 0:
                 ax.set_title(title)
             label_h_axis(ax, h)
-            ax.tick_params(axis="x", labelsize=8)
+            ax.tick_params(axis="x", labelsize="small")
             ax.legend(loc="upper left", handlelength=1.8, labelspacing=0.25, borderaxespad=0.3)
         low, high = axes[row, 0].get_ylim()
         axes[row, 0].set_ylim(low, high * (high / low) ** 0.3)   # room for the legends above the data

@@ -69,7 +69,7 @@ def colour_norm(values):
 def tidy_3d(ax, zlabel, y_ticks=True, aspect=None, zoom=1.15):
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
         axis.set_major_locator(MaxNLocator(3))
-    ax.tick_params(labelsize=7, pad=-1)
+    ax.tick_params(labelsize="x-small", pad=-1)
     ax.set_xlabel("$x$", labelpad=-5)
     ax.set_ylabel("$y$" if y_ticks else "", labelpad=-7)
     ax.set_zlabel(zlabel, labelpad=-6)
@@ -81,7 +81,7 @@ def tidy_3d(ax, zlabel, y_ticks=True, aspect=None, zoom=1.15):
 def colour_bar(fig, mappable, ax):
     """Colour bar as tall as the (equal-aspect) axes, right of it."""
     bar = fig.colorbar(mappable, cax=ax.inset_axes([1.04, 0.0, 0.06, 1.0]))
-    bar.ax.tick_params(labelsize=7)
+    bar.ax.tick_params(labelsize="x-small")
     bar.locator = MaxNLocator(4)
     bar.update_ticks()
 
@@ -106,14 +106,14 @@ def run(d, shown, cfg, output):
         for p in pick:
             ax.plot(positions[:, p, 0], positions[:, p, 1], times, lw=0.7)
         tidy_3d(ax, "$t$")
-        ax.set_title(f"{TITLES.get(kernel, kernel)}\n{shown} trajectories", fontsize=9)
+        ax.set_title(f"{TITLES.get(kernel, kernel)}\n{shown} trajectories", fontsize="medium")
 
         ax = fig.add_subplot(grid[1, column])
         points, density = positions[index], d[f"{kernel}_densities"][index]
         scatter = ax.scatter(points[:, 0], points[:, 1], c=density, s=5, norm=colour_norm(density))
         colour_bar(fig, scatter, ax)
         ax.set(xlabel="$x$", ylabel="$y$", aspect="equal")
-        ax.set_title(f"density at $t = {times[index]:g}$", fontsize=9)
+        ax.set_title(f"density at $t = {times[index]:g}$", fontsize="medium")
 
         star, density = d[f"{kernel}_star_positions"], d[f"{kernel}_star_densities"]
         mesh = lattice_triangulation(star, star_h)
@@ -124,14 +124,14 @@ def run(d, shown, cfg, output):
         ax.plot_trisurf(mesh, density, cmap="viridis", norm=norm, linewidth=0.1, edgecolor="0.3")
         ax.view_init(elev=8, azim=-60)
         tidy_3d(ax, "", y_ticks=False, aspect=(1, 1, 0.7), zoom=1.35)
-        ax.set_title(f"star patch, $t = {float(d['star_t']):g}$, side", fontsize=9)
+        ax.set_title(f"star patch, $t = {float(d['star_t']):g}$, side", fontsize="medium")
 
         ax = fig.add_subplot(grid[3, column])
         image = ax.tripcolor(mesh, density, shading="gouraud", norm=norm)
         ax.plot(star[:, 0], star[:, 1], ".", ms=1.5, color="0.2")
         colour_bar(fig, image, ax)
         ax.set(xlabel="$x$", ylabel="$y$", aspect="equal")
-        ax.set_title("star patch, from above", fontsize=9)
+        ax.set_title("star patch, from above", fontsize="medium")
         ax.xaxis.set_major_locator(MaxNLocator(3))
         ax.yaxis.set_major_locator(MaxNLocator(5))
     fig.suptitle(rf"2D blob method, $m = 4$, $\delta = h^{{{float(cfg['q']):g}}}$: bump data "

@@ -75,7 +75,7 @@ def run(d, title, error_t, output):
         ax_d.loglog(h, reference, "k:", label=f"slope $mq = {slope:.1f}$")
     ax_d.set(xlabel="$h$", ylabel=f"$L^1_h$ error at $t = {error_t:g}$")
     label_h_axis(ax_d, h)
-    ax_d.tick_params(axis="x", labelsize=8)
+    ax_d.tick_params(axis="x", labelsize="small")
     low, high = ax_d.get_ylim()
     ax_d.set_ylim(low, high * (high / low) ** 0.35)   # room for the legend above the data
     ax_d.legend(loc="upper left")

@@ -45,7 +45,7 @@ def run(d, p, figure, output):
                    xlabel="particles or cells" if figure == "error_size" else "wall time (s), after JIT warm-up",
                    ylabel="W1 error")
             label_panel(ax, f"({'abcd'[i * len(times) + j]}) {TITLES.get(name, name)}, t = {t:g}")
-    axes[0, 0].legend(loc="lower left", fontsize=7, ncol=2)
+    axes[0, 0].legend(loc="lower left", fontsize="small", ncol=2)
     fig.suptitle("K = |x|/2: W1 distance to the exact solution "
                  + ("against size" if figure == "error_size" else "against wall time")
                  + f" (dotted: {p['target_error']:g}; open markers: exact to rounding)")

@@ -3,10 +3,10 @@
 import matplotlib as mpl
 import numpy as np
 
-from particle_replication.plotting import new_figure, save_figure
+from particle_replication.plotting import mathtext, new_figure, save_figure
 from particle_replication.workflow import load_results, logged
 
-ROWS = ("potential W", "density rho_h", "velocity -W' * rho_h", "particle size h_k / h")
+ROWS = ("potential $W$", r"density $\rho_h$", r"velocity $-W' * \rho_h$", "particle size $h_k / h$")
 
 
 def time_colorbar(fig, axes, colours, times):
@@ -17,7 +17,7 @@ def time_colorbar(fig, axes, colours, times):
                        fraction=0.05, aspect=70, pad=0.02)
     bar.set_ticks(np.arange(len(times)), labels=[f"{t:.3g}" for t in times])
     bar.ax.tick_params(length=0)
-    bar.set_label("snapshot time t")
+    bar.set_label("snapshot time $t$")
     return bar
 
 
@@ -31,7 +31,7 @@ def run(d, title, output):
         times = d[f"{prefix}_times"][shown]
         colours = mpl.colormaps["viridis"](np.linspace(0, 0.9, shown.size))
         axes[0, column].plot(d["x_potential"], d[f"{prefix}_potential"], "k-")
-        axes[0, column].set_title(f"W = {label}")
+        axes[0, column].set_title(mathtext(f"W = {label}"))
         for colour, t, density, index in zip(colours, times, d[f"{prefix}_densities"], shown):
             centres = d[f"{prefix}_centres"][index]
             axes[1, column].plot(d["grid"], density, color=colour, label=f"t = {t:.3g}")
@@ -41,12 +41,12 @@ def run(d, title, output):
         axes[1, column].set_ylim(bottom=1e-2)
         axes[3, column].set_yscale("log")
         for row in range(4):
-            axes[row, column].set_xlabel("x")
+            axes[row, column].set_xlabel("$x$")
             axes[row, column].set_ylabel(ROWS[row])
         # Rows density, velocity and particle size share the snapshot colours of this column.
         time_colorbar(fig, axes[1:, column], colours, times)
     fig.get_layout_engine().set(wspace=0.06)
-    fig.suptitle(title)
+    fig.suptitle(mathtext(title))
     save_figure(fig, output.pdf, output.png)
 
 

@@ -31,7 +31,7 @@ def limits(d, p, output):
             ax.plot(centres, d[f"{case}_upwind_w"][gamma], style, color="C2", lw=0.8, label=f"{name} upwind for (1.7)")
         ax.set(xlim=(-12, 12), xlabel="x", ylabel="Riemann invariant")
         label_panel(ax, f"({'ab'[j]}) {case} case, t = {float(d['t']):g}")
-    axes[0, 0].legend(loc="upper left", fontsize=7)
+    axes[0, 0].legend(loc="upper left", fontsize="small")
     ax = axes[0, 2]
     n = d["limit_n"]
     for j, case in enumerate(map(str, d["cases"])):
@@ -42,7 +42,7 @@ def limits(d, p, output):
     ax.plot(n, 2.0 / n, "k:", lw=0.7, label="slope -1; dotted: HLL self-distance")
     ax.set(xscale="log", yscale="log", xlabel="n per type", ylabel="W1^(d) distance")
     label_panel(ax, "(c) exact MSPD against the schemes")
-    ax.legend(fontsize=7, loc="lower left")
+    ax.legend(fontsize="small", loc="lower left")
     fig.suptitle("Which limit? Exact MSPD, conservative HLL and nonconservative upwind on the p-system")
     save_figure(fig, output.pdf, output.png)
 
@@ -67,7 +67,7 @@ def cost(d, output):
                 ax.set(xlim=(left, right), ylim=(bottom, top))
             label_panel(ax, f"({'abcdefgh'[row * len(panels) + j]}) {label}")
             if row == 0:
-                ax.legend(fontsize=7, loc="lower left")
+                ax.legend(fontsize="small", loc="lower left")
     fig.suptitle("Error against cost: particles (hull, TSPD, exact events) and finite volumes (cell updates)")
     save_figure(fig, output.pdf, output.png)
 

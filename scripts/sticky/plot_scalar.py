@@ -7,8 +7,8 @@ from particle_replication.plotting import label_panel, new_figure, save_figure
 from particle_replication.workflow import load_results, logged
 
 TITLES = {
-    "burgers_two_atoms": "Burgers equation (5.1) from (delta_-1 + delta_1)/2",
-    "concave_laplace": "concave flux u(1-u)/2 (5.3) from the Laplace law (5.4)",
+    "burgers_two_atoms": r"Burgers equation (5.1) from $(\delta_{-1} + \delta_1)/2$",
+    "concave_laplace": "concave flux $u(1-u)/2$ (5.3) from the Laplace law (5.4)",
 }
 
 

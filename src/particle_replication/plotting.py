@@ -9,14 +9,16 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+#: Width (inches) at which the report prints every figure, its text width: sizes below are as printed.
+PRINTED_WIDTH = 6.5
+#: Font sizes as printed (points): at least 6 pt for every text, "x-small" of 9 pt included (6.25 pt).
+PRINTED_FONTS = {"font.size": 9.0, "axes.titlesize": 9.0, "axes.labelsize": 9.0, "legend.fontsize": 7.5,
+                 "xtick.labelsize": 7.5, "ytick.labelsize": 7.5}
+#: Line and tick sizes as printed (points).
+PRINTED_LINES = {"lines.linewidth": 1.0, "lines.markersize": 4.0, "axes.linewidth": 0.6,
+                 "xtick.major.width": 0.6, "ytick.major.width": 0.6, "xtick.major.size": 3.0, "ytick.major.size": 3.0,
+                 "xtick.minor.width": 0.4, "ytick.minor.width": 0.4, "xtick.minor.size": 1.8, "ytick.minor.size": 1.8}
 STYLE = {
-    "font.size": 10,
-    "axes.titlesize": 10,
-    "axes.labelsize": 10,
-    "legend.fontsize": 8,
-    "xtick.labelsize": 9,
-    "ytick.labelsize": 9,
-    "lines.linewidth": 1.2,
     "figure.dpi": 100,
     "savefig.dpi": 200,
     "savefig.bbox": "tight",
@@ -25,8 +27,11 @@ STYLE = {
 
 
 def new_figure(rows: int = 1, columns: int = 1, width: float = 10.0, height: float = 4.0, **kwargs):
-    """Figure and axes with the repository style applied."""
-    plt.rcParams.update(STYLE)
+    """Figure and axes with the repository style applied. A figure ``width`` inches wide is printed
+    PRINTED_WIDTH wide, so its fonts and lines are drawn width / PRINTED_WIDTH times their printed sizes;
+    scripts give other sizes relative to these ("small", "x-small"), never in points."""
+    scale = width / PRINTED_WIDTH
+    plt.rcParams.update(STYLE | {key: size * scale for key, size in (PRINTED_FONTS | PRINTED_LINES).items()})
     return plt.subplots(rows, columns, figsize=(width, height), constrained_layout=True, **kwargs)
 
 
