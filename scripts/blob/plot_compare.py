@@ -3,7 +3,7 @@
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from particle_replication.plotting import mathtext, new_figure, save_figure
+from particle_replication.plotting import mathtext, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 KERNEL_TITLES = {
@@ -38,7 +38,7 @@ def run(d, title, output):
             ax.tick_params(labelsize="small")
     axes[0, 0].set_ylabel("particle method\n$y$")
     axes[1, 0].set_ylabel("blob method\n$y$")
-    fig.suptitle(f"{mathtext(title)}\n($h = {float(d['h']):.3g}$, $\\delta = {float(d['delta']):g}$)")
+    suptitle(fig, f"{mathtext(title)}\n($h = {float(d['h']):.3g}$, $\\delta = {float(d['delta']):g}$)")
     save_figure(fig, output.pdf, output.png)
 
 

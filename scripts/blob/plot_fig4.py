@@ -4,7 +4,7 @@ columns particle, m = 4, m = 6."""
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_replication.plotting import label_h_axis, new_figure, save_figure
+from particle_replication.plotting import label_h_axis, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 ROWS = {"newtonian_repulsive": r"$K = (-\Delta)^{-1} = -|x|/2$", "cubic": r"$K = |x|^3/3$",
@@ -36,7 +36,7 @@ def run(d, t, output):
         low, high = axes[row, 0].get_ylim()
         axes[row, 0].set_ylim(low, high * (high / low) ** 0.3)   # room for the legends above the data
         axes[row, 0].set_ylabel(f"{ROWS.get(kernel, kernel)}\n$L^1_h$ error at $t = {t:g}$")
-    fig.suptitle(rf"Errors for data (4.5), $\delta = h^{{{float(d['q']):g}}}$; legends: orders fitted on the "
+    suptitle(fig, rf"Errors for data (4.5), $\delta = h^{{{float(d['q']):g}}}$; legends: orders fitted on the "
                  f"{k} finest $h$")
     save_figure(fig, output.pdf, output.png)
 

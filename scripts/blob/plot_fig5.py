@@ -3,7 +3,7 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order, pairwise_orders
-from particle_replication.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure
+from particle_replication.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 TITLES = {"regular, blob": "A. regular data, blob $m = 4$", "regular, particle": "B. regular data, particle",
@@ -36,7 +36,7 @@ def run(d, t, output):
     low, high = first.get_ylim()
     first.set_ylim(low, high * (high / low) ** 0.4)   # room for the legends above the data
     first.set_ylabel(f"$L^1_h$ error at $t = {t:g}$")
-    fig.suptitle(rf"2D, $K = \log|x|/(2\pi)$, $\delta = h^{{{float(d['q']):g}}}$; legends: orders fitted on the {k} "
+    suptitle(fig, rf"2D, $K = \log|x|/(2\pi)$, $\delta = h^{{{float(d['q']):g}}}$; legends: orders fitted on the {k} "
                  "finest $h$; small numbers: pairwise orders")
     save_figure(fig, output.pdf, output.png)
 

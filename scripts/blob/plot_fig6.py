@@ -14,7 +14,7 @@ from matplotlib.ticker import MaxNLocator
 from matplotlib.tri import Triangulation
 
 from particle_methods.blob.initial import data_2d, grid_2d
-from particle_replication.plotting import save_figure
+from particle_replication.plotting import save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 TITLES = {"newtonian": r"$K = \log|x|/(2\pi)$", "quadratic": r"$K = |x|^2/2$", "cubic": r"$K = |x|^3/3$"}
@@ -134,7 +134,7 @@ def run(d, shown, cfg, output):
         ax.set_title("star patch, from above", fontsize="medium")
         ax.xaxis.set_major_locator(MaxNLocator(3))
         ax.yaxis.set_major_locator(MaxNLocator(5))
-    fig.suptitle(rf"2D blob method, $m = 4$, $\delta = h^{{{float(cfg['q']):g}}}$: bump data "
+    suptitle(fig, rf"2D blob method, $m = 4$, $\delta = h^{{{float(cfg['q']):g}}}$: bump data "
                  rf"($h = {fraction(float(cfg['top']['h']))}$), star patch (4.6) ($h = {fraction(star_h)}$); "
                  "colour: density")
     save_figure(fig, output.pdf, output.png)

@@ -1,7 +1,7 @@
 """K = -|x|/2: the density error of the blob method split into quadrature and regularisation parts."""
 
 
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 
@@ -19,7 +19,7 @@ def run(d, output):
         ax.set(xlabel="h", ylabel=f"L1_h density error at t = {float(d['t']):g}")
         ax.legend(fontsize="x-small", loc="lower right")
         label_panel(ax, f"({'ab'[m == 6]}) m = {m}")
-    fig.suptitle(r"$K = -|x|/2$: where the density error comes from")
+    suptitle(fig, r"$K = -|x|/2$: where the density error comes from")
     save_figure(fig, output.pdf, output.png)
 
 

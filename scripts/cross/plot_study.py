@@ -3,7 +3,7 @@ or cells, or against wall time, for every data (rows) and time (columns)."""
 
 import numpy as np
 
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.verdicts.cross import cases, series
 from particle_replication.workflow import load_results, logged
 
@@ -46,7 +46,7 @@ def run(d, p, figure, output):
                    ylabel="W1 error")
             label_panel(ax, f"({'abcd'[i * len(times) + j]}) {TITLES.get(name, name)}, t = {t:g}")
     axes[0, 0].legend(loc="lower left", fontsize="small", ncol=2)
-    fig.suptitle("K = |x|/2: W1 distance to the exact solution "
+    suptitle(fig, "K = |x|/2: W1 distance to the exact solution "
                  + ("against size" if figure == "error_size" else "against wall time")
                  + f" (dotted: {p['target_error']:g}; open markers: exact to rounding)")
     save_figure(fig, output.pdf, output.png)

@@ -1,6 +1,6 @@
 """Figure 4: exact, LTP and SP densities for W = x^2/2, hat (left) and B3 (right)."""
 
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 NAMES = {"hat": "hat function (2.12)", "b3": "B3-spline (2.13)"}
@@ -18,7 +18,7 @@ def run(d, output):
         ax.legend(loc="upper right")
         label_panel(ax, f"{label} {NAMES[shape]}")
     axes[0].set_ylabel("density at t = 0.5")
-    fig.suptitle("W = x^2/2, data (6.1), h = 1/25, dt = 1e-3")
+    suptitle(fig, "W = x^2/2, data (6.1), h = 1/25, dt = 1e-3")
     save_figure(fig, output.pdf, output.png)
 
 

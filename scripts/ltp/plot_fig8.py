@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 
@@ -24,7 +24,7 @@ def run(d, output):
     axes[2].set(xlabel="particle centre x_k", ylabel="particle size h_k")
     axes[2].legend(fontsize="small")
     label_panel(axes[2], f"(c) particle sizes at t = {paper:g}")
-    fig.suptitle(f"W = {d['label']}, data (6.2), h = {float(d['h']):g}, dt = {float(d['dt']):g} "
+    suptitle(fig, f"W = {d['label']}, data (6.2), h = {float(d['h']):g}, dt = {float(d['dt']):g} "
                  f"({int(d['steps'])} steps to t = {float(d['t']):g})")
     save_figure(fig, output.pdf, output.png)
 

@@ -6,7 +6,7 @@ import math
 import numpy as np
 
 from particle_methods.ltp.measures import collapse_times, shrink_rate_inverse
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 
@@ -56,7 +56,7 @@ def run(inputs, p, output):
     more = spread.get_legend_handles_labels()
     ax.legend(lines[0] + more[0], lines[1] + more[1], fontsize="x-small", loc="lower left", bbox_to_anchor=(0.08, 0.02))
     label_panel(ax, f"(d) Figure 8, W = {d8['label']}")
-    fig.suptitle("LTP paper, section 6.2: the long-time behaviour measured")
+    suptitle(fig, "LTP paper, section 6.2: the long-time behaviour measured")
     save_figure(fig, output.pdf, output.png)
 
 

@@ -1,7 +1,7 @@
 """LTP on a flow that is not affine: errors against h; the drift of the centre of mass."""
 
 
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 
@@ -23,7 +23,7 @@ def run(d, output):
     ax.set(xlabel="h", ylabel="drift at the final time")
     ax.legend(fontsize="small")
     label_panel(ax, f"(b) W = {d['centre_label']}, data (6.1)")
-    fig.suptitle("LTP beyond the affine case: convergence in h, centre of mass")
+    suptitle(fig, "LTP beyond the affine case: convergence in h, centre of mass")
     save_figure(fig, output.pdf, output.png)
 
 

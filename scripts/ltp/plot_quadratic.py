@@ -3,7 +3,7 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_replication.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure
+from particle_replication.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 
@@ -50,12 +50,12 @@ def figure2(d, output):
         handle.set_linewidth(1.5)
         handle.set_alpha(1.0)
     label_panel(ax, f"(c) SP with h = {float(d['sp_h']):g} and fixed eps")
-    fig.suptitle(f"W = x^2, data (6.1), dt = {float(d['dt']):g}, B3 shape, t = {float(d['t']):g}")
+    suptitle(fig, f"W = x^2, data (6.1), dt = {float(d['dt']):g}, B3 shape, t = {float(d['t']):g}")
     save_figure(fig, output.fig2_pdf, output.fig2_png)
 
 
 def figure3(d, output):
-    fig, axes = new_figure(1, 3, width=16, height=4.4)
+    fig, axes = new_figure(1, 3, width=11, height=5.6)
     t = float(d["t"])
     ax = axes[0]
     for column, name, colour in ((0, "L1", "C0"), (1, "Linf", "C3")):
@@ -66,8 +66,8 @@ def figure3(d, output):
                   label=f"SP {name}, dt = {float(d['fine_dt']):g}")
         ax.axhline(d["scan_ltp_fine"][column], color=colour, ls=":", label=f"LTP {name}, dt = {float(d['fine_dt']):g}")
     ax.axvline(float(d["scan_h"]) * np.exp(-2 * t), color="0.5", lw=0.8)
-    ax.set(xlabel="SP particle width eps (grey: h e^{-2t}, the LTP width)", ylabel=f"error at t = {t:g}")
-    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2)
+    ax.set(xlabel=r"SP width $\varepsilon$ (grey: LTP width $h e^{-2t}$)", ylabel=f"error at $t = {t:g}$")
+    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
     label_panel(ax, f"(a) h = {float(d['scan_h']):g}")
     ax = axes[1]
     for column, name, colour in ((0, "L1", "C0"), (1, "Linf", "C3")):
@@ -75,15 +75,15 @@ def figure3(d, output):
         ax.loglog(d["h_values"], d["ltp_errors"][:, column], "s--", color=colour, label=f"LTP {name}")
     ax.set(xlabel="h", ylabel=f"error at t = {t:g}")
     hide_minor_log_labels(ax)
-    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2)
+    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
     label_panel(ax, f"(b) dt = {float(d['dt']):g}, eps = h")
     ax = axes[2]
     for h, errors, marker in zip(d["dt_h"], d["dt_errors"], "os^v"):
         ax.loglog(d["dt_values"], errors[:, 0], marker + "-", ms=4, label=f"LTP L1, h = {h:g}")
     ax.set(xlabel="dt", ylabel=f"L1 error at t = {t:g}")
-    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2)
-    label_panel(ax, "(c) error against dt at fixed h (Theorem 1: dt/h)")
-    fig.suptitle("SP against LTP errors, W = x^2, data (6.1); the time step")
+    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
+    label_panel(ax, "(c) error against dt at fixed h")
+    suptitle(fig, "SP against LTP errors, W = x^2, data (6.1); the time step")
     save_figure(fig, output.fig3_pdf, output.fig3_png)
 
 

@@ -3,7 +3,7 @@
 import matplotlib as mpl
 import numpy as np
 
-from particle_replication.plotting import mathtext, new_figure, save_figure
+from particle_replication.plotting import mathtext, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 ROWS = ("potential $W$", r"density $\rho_h$", r"velocity $-W' * \rho_h$", "particle size $h_k / h$")
@@ -46,7 +46,7 @@ def run(d, title, output):
         # Rows density, velocity and particle size share the snapshot colours of this column.
         time_colorbar(fig, axes[1:, column], colours, times)
     fig.get_layout_engine().set(wspace=0.06)
-    fig.suptitle(mathtext(title))
+    suptitle(fig, mathtext(title))
     save_figure(fig, output.pdf, output.png)
 
 

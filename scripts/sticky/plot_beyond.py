@@ -5,7 +5,7 @@ import numpy as np
 
 from particle_methods.sticky.cases import empirical_cdf
 from particle_methods.systems import MINUS, PLUS
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.verdicts.sticky import SCALAR_NAMES
 from particle_replication.workflow import load_results, logged
 
@@ -43,7 +43,7 @@ def limits(d, p, output):
     ax.set(xscale="log", yscale="log", xlabel="n per type", ylabel="W1^(d) distance")
     label_panel(ax, "(c) exact MSPD against the schemes")
     ax.legend(fontsize="small", loc="lower left")
-    fig.suptitle("Which limit? Exact MSPD, conservative HLL and nonconservative upwind on the p-system")
+    suptitle(fig, "Which limit? Exact MSPD, conservative HLL and nonconservative upwind on the p-system")
     save_figure(fig, output.pdf, output.png)
 
 
@@ -68,7 +68,7 @@ def cost(d, output):
             label_panel(ax, f"({'abcdefgh'[row * len(panels) + j]}) {label}")
             if row == 0:
                 ax.legend(fontsize="small", loc="lower left")
-    fig.suptitle("Error against cost: particles (hull, TSPD, exact events) and finite volumes (cell updates)")
+    suptitle(fig, "Error against cost: particles (hull, TSPD, exact events) and finite volumes (cell updates)")
     save_figure(fig, output.pdf, output.png)
 
 

@@ -3,7 +3,7 @@
 import numpy as np
 
 from particle_methods.sticky.hull_reference import cumulative_free_positions, hull_vertices
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import logged
 
 
@@ -36,7 +36,7 @@ def run(p, output):
     axes[0].set_ylabel("cumulative sum Q(k)")
     axes[0].legend(loc="best")
     axes[1].legend(loc="upper right")
-    fig.suptitle("Brenier-Grenier hull: Andrew's monotone chain on the cumulative free-transport positions")
+    suptitle(fig, "Brenier-Grenier hull: Andrew's monotone chain on the cumulative free-transport positions")
     save_figure(fig, output.pdf, output.png)
 
 

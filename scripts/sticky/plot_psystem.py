@@ -1,7 +1,7 @@
 """Figures 4 to 7: MSPD trajectories (4, 6) and w-, w+, u, v in the space-time plane (5, 7)."""
 
 from particle_methods.systems import MINUS, PLUS
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 CASE_TITLES = {
@@ -41,7 +41,7 @@ def fields(d, title, output):
     n = d["field_path"].shape[-1]
     end = (f"; dashed: w+ >= w- and no cluster from t = {float(d['field_end']):.3g}"
            if title.startswith("p-system with shocks") else "")
-    fig.suptitle(f"{title}: iterated TSPD with n = {n} per type, Delta = {d['times'][1] - d['times'][0]:g}{end}")
+    suptitle(fig, f"{title}: iterated TSPD with n = {n} per type, Delta = {d['times'][1] - d['times'][0]:g}{end}")
     save_figure(fig, output.pdf, output.png)
 
 

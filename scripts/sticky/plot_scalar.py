@@ -3,7 +3,7 @@
 import matplotlib as mpl
 import numpy as np
 
-from particle_replication.plotting import label_panel, new_figure, save_figure
+from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 TITLES = {
@@ -53,7 +53,7 @@ def run(d, case, output):
         ax.legend(loc="lower left")
     ax.set(xlabel="p  (n = 2^p particles)", ylabel="log L1 error")
     label_panel(ax, "(d) L1 error between SPD and entropy solution")
-    fig.suptitle(TITLES[case])
+    suptitle(fig, TITLES[case])
     save_figure(fig, output.pdf, output.png)
 
 

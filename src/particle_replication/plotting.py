@@ -35,6 +35,12 @@ def new_figure(rows: int = 1, columns: int = 1, width: float = 10.0, height: flo
     return plt.subplots(rows, columns, figsize=(width, height), constrained_layout=True, **kwargs)
 
 
+def suptitle(fig, text: str) -> None:
+    """The figure's title, wrapped to the figure's width (a title wider than the figure would widen the
+    saved image and print every panel smaller)."""
+    fig.suptitle(text, wrap=True)
+
+
 def label_panel(ax, label: str) -> None:
     """Write a panel label such as "(a)" in the upper-left corner, outside the axes."""
     ax.set_title(label, loc="left", fontweight="bold")
