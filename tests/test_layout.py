@@ -67,3 +67,14 @@ def test_the_numerics_load_none_of_the_pipelines_software():
             f"print(sorted(loaded & set({PIPELINE_SOFTWARE!r})))\n")
     loaded = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert loaded.strip() == "[]"
+
+
+def test_plot_scripts_give_text_sizes_relative_to_the_printed_style():
+    """Sizes in points would not follow plotting.new_figure's scaling to the printed width (a 16 in figure
+    printed its 7 pt legends at 2.8 pt): scripts say "small", "x-small", never a number."""
+    import re
+
+    pattern = re.compile(r"\b(?:fontsize|labelsize)\s*=\s*[0-9]")
+    found = [f"{path.relative_to(ROOT)}:{number}" for path in (ROOT / "scripts").rglob("*.py")
+             for number, line in enumerate(path.read_text().splitlines(), 1) if pattern.search(line)]
+    assert not found, found
