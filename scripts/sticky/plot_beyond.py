@@ -50,10 +50,10 @@ def limits(d, p, output):
 def cost(d, output):
     panels = [(name, label, ("spd", "godunov")) for name, label in SCALAR_NAMES.items()]
     panels += [(str(case), f"p-system, {case}", ("tspd", "exact", "upwind")) for case in d["cases"]]
-    fig, axes = new_figure(2, len(panels), width=12, height=7.0, squeeze=False)
+    fig, axes = new_figure(len(panels), 2, width=8.5, height=2.3 * len(panels) + 0.8, squeeze=False)
     for j, (name, label, methods) in enumerate(panels):
         for row, (column, xlabel) in enumerate(((1, "operations"), (2, "wall time (s), after JIT warm-up"))):
-            ax = axes[row, j]
+            ax = axes[j, row]
             for method in methods:
                 runs = d[f"{name}_{method}"]
                 text, colour, marker = METHODS[method]
@@ -65,7 +65,7 @@ def cost(d, output):
                 for slope in (1, 2):
                     ax.plot(work, top * (work / left) ** (-1.0 / slope), "k:", lw=0.7)
                 ax.set(xlim=(left, right), ylim=(bottom, top))
-            label_panel(ax, f"({'abcdefgh'[row * len(panels) + j]}) {label}")
+            label_panel(ax, f"({'abcdefgh'[2 * j + row]}) {label}")
             if row == 0:
                 ax.legend(fontsize="small", loc="lower left")
     suptitle(fig, "Error against cost: particles (hull, TSPD, exact events) and finite volumes (cell updates)")

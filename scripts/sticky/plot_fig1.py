@@ -18,9 +18,9 @@ def run(p, output):
     k = np.arange(q.size)
     fig, axes = new_figure(1, 3, width=12, height=3.8, sharey=True)
     panels = [
-        ("(a) list L at the start of iteration k", step.before, (), False),
-        ("(b) concave corner: vertex removed", step.before, step.removed, True),
-        ("(c) list L at the end of iteration k", step.after, (), True),
+        ("(a) L before step k", step.before, (), False),
+        ("(b) corner removed", step.before, step.removed, True),
+        ("(c) L after step k", step.after, (), True),
     ]
     for ax, (title, chain, removed, show_new) in zip(axes, panels):
         ax.plot(k, q, "o", color="0.7", label="Q(k) (free transport)")

@@ -37,7 +37,7 @@ def run(d, case, output):
     fig.colorbar(mpl.cm.ScalarMappable(norm=profile_norm, cmap=profile_cmap), ax=ax,
                  label=f"time t ({', '.join(f'{t:g}' for t in times[:3])}, ..., {times[-1]:g})")
     ax.set(xlabel="x", ylabel="u(t, x)")
-    label_panel(ax, "(c) profiles: SPD (steps) and exact (black dashed)")
+    label_panel(ax, "(c) profiles: SPD, exact (dashed)")
 
     ax = axes[1, 1]
     norm = mpl.colors.Normalize(d["error_times"].min(), d["error_times"].max())
@@ -52,7 +52,7 @@ def run(d, case, output):
                 label="slope -log 2 (order 1/n)")
         ax.legend(loc="lower left")
     ax.set(xlabel="p  (n = 2^p particles)", ylabel="log L1 error")
-    label_panel(ax, "(d) L1 error between SPD and entropy solution")
+    label_panel(ax, "(d) L1 error of the SPD")
     suptitle(fig, TITLES[case])
     save_figure(fig, output.pdf, output.png)
 

@@ -36,14 +36,14 @@ def new_figure(rows: int = 1, columns: int = 1, width: float = 10.0, height: flo
 
 
 def suptitle(fig, text: str) -> None:
-    """The figure's title, wrapped to the figure's width (a title wider than the figure would widen the
-    saved image and print every panel smaller)."""
-    fig.suptitle(text, wrap=True)
+    """The figure's title, its formulas in mathtext (:func:`mathtext`), wrapped to the figure's width (a title
+    wider than the figure would widen the saved image and print every panel smaller)."""
+    fig.suptitle(mathtext(text), wrap=True)
 
 
 def label_panel(ax, label: str) -> None:
     """Write a panel label such as "(a)" in the upper-left corner, outside the axes."""
-    ax.set_title(label, loc="left", fontweight="bold")
+    ax.set_title(mathtext(label), loc="left", fontweight="bold")
 
 
 def save_figure(fig, pdf_path, png_path=None) -> None:
@@ -51,11 +51,24 @@ def save_figure(fig, pdf_path, png_path=None) -> None:
     pdf_path = Path(pdf_path)
     png_path = Path(png_path) if png_path is not None else pdf_path.with_suffix(".png")
     pdf_path.parent.mkdir(parents=True, exist_ok=True)
+    _formulas_in_mathtext(fig)
     fig.savefig(pdf_path)
     # The layout is fixed by the first save: the second one reuses it instead of solving it again.
     fig.set_layout_engine("none")
     fig.savefig(png_path)
     plt.close(fig)
+
+
+def _formulas_in_mathtext(fig) -> None:
+    """Axis labels, axes titles and legend entries written in plain text (``"density rho_h"``) with their
+    formulas in mathtext; text that already holds a '$' is left as it is."""
+    for ax in fig.axes:
+        texts = [ax.xaxis.label, ax.yaxis.label, ax.title]
+        legend = ax.get_legend()
+        if legend is not None:
+            texts += legend.get_texts()
+        for text in texts:
+            text.set_text(mathtext(text.get_text()))
 
 
 def hide_minor_log_labels(ax) -> None:
@@ -69,7 +82,7 @@ def hide_minor_log_labels(ax) -> None:
 # Words that plain-text titles (rule params, data files) use for mathematical symbols.
 _MATH_WORDS = {"delta": r"\delta", "Delta": r"\Delta", "pi": r"\pi", "grad": r"\nabla", "nabla": r"\nabla",
                "log": r"\log", "exp": r"\exp", "rho": r"\rho", "psi": r"\psi", "epsilon": r"\varepsilon",
-               "alpha": r"\alpha"}
+               "alpha": r"\alpha", "eps": r"\varepsilon", "dt": r"\Delta t"}
 _OPERATORS = {"=", "+", "-", "<", ">", "<=", ">=", "*", "/", "~"}
 
 
@@ -92,11 +105,13 @@ def _is_math_token(token: str) -> tuple[bool, bool]:
 
 
 def _to_tex(formula: str) -> str:
-    """Plain-text formula -> mathtext body: Greek and operator words, braces after '^'."""
+    """Plain-text formula -> mathtext body: Greek and operator words, braces after '^' and '_'."""
     import re
 
     formula = re.sub(r"(?<![A-Za-z\\])(" + "|".join(_MATH_WORDS) + r")(?![A-Za-z])",
                      lambda match: _MATH_WORDS[match.group(1)] + " ", formula)
+    formula = re.sub(r"_(?!\{)(-?[A-Za-z0-9]+)", r"_{\1}", formula)   # h_min, delta_-1: the whole subscript
+    formula = formula.replace(">=", r"\geq ").replace("<=", r"\leq ")
     return re.sub(r"\^(?!\{)(-?(?:\d+(?:\.\d+)?|[A-Za-z]|\|[^|]*\|))", r"^{\1}", formula).replace(" )", ")")
 
 
