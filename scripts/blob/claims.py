@@ -2,19 +2,22 @@
 particle_replication.verdicts.blob; thresholds and windows from the config)."""
 
 from particle_replication import claims as c
+from particle_replication.rates import Recorder
 from particle_replication.verdicts import blob as v
 from particle_replication.workflow import load_results, logged, progress
 
 
 def run(inputs, output, p):
-    rows = [*v.newtonian_claims(load_results(inputs.fig1), load_results(inputs.fig2), load_results(inputs.fig3)),
-            *v.fig4_claims(load_results(inputs.fig4)),
-            *v.fig4log_claims(load_results(inputs.fig4log), load_results(inputs.fig4)),
-            *v.repulsive_claims(load_results(inputs.repulsive), p["fig4"]),
-            *v.fig5_claims(load_results(inputs.fig5)), *v.fig6_claims(load_results(inputs.fig6)),
+    recorder = Recorder(progress)  # every fitted rate of the run
+    rows = [*v.newtonian_claims(load_results(inputs.fig1), load_results(inputs.fig2), load_results(inputs.fig3),
+                                recorder),
+            *v.fig4_claims(load_results(inputs.fig4), recorder),
+            *v.fig4log_claims(load_results(inputs.fig4log), load_results(inputs.fig4), recorder),
+            *v.repulsive_claims(load_results(inputs.repulsive), p["fig4"], recorder),
+            *v.fig5_claims(load_results(inputs.fig5), recorder), *v.fig6_claims(load_results(inputs.fig6)),
             *v.fig7_claims(load_results(inputs.fig7), p["fig7"]), *v.fig8_claims(load_results(inputs.fig8), p["fig8"])]
     c.write_claims(output.claims, rows, log=progress)
-    v.RATES.write(output.rates)
+    recorder.write(output.rates)
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821

@@ -18,7 +18,6 @@ from ..workflow import progress
 
 PAPER = "blob"
 RESOLUTION_TIME = 0.8  # Figures 1B and 3B: the densities are compared with the exact ones at t = 0.8
-RATES = Recorder(progress)  # the claims script may replace it; every fit of a run is recorded here
 
 # Kind and source of every claim (see particle_replication.claims): "paper" for what the paper
 # states (where), "derived" for what we derive from its theory, "check" for our own checks.
@@ -103,14 +102,14 @@ CATALOGUE = c.Catalogue(PAPER, KINDS)
 claim = CATALOGUE.claim
 
 
-def order(d, key, name, prefix=""):
-    """Fitted order of d[prefix + key] against h on the finest ``fit_points`` steps, recorded under
-    the claim ``name`` that it decides (the first one when it decides several)."""
+def order(recorder: Recorder, d, key, name, prefix=""):
+    """Fitted order of d[prefix + key] against h on the finest ``fit_points`` steps, recorded in ``recorder``
+    under the claim ``name`` that it decides (the first one when it decides several)."""
     CATALOGUE.kind_and_source(name)
     h, errors = d["h_values"], d[f"{prefix}{key}"]
     progress(f"{PAPER}.{name}: {prefix}{key} at h = {', '.join(f'{v:.5g}' for v in h)}: "
              f"{', '.join(f'{e:.5e}' for e in errors)}")
-    return RATES.add(rates.order(f"{PAPER}.{name}", "h", h, errors, int(d["fit_points"])))
+    return recorder.add(rates.order(f"{PAPER}.{name}", "h", h, errors, int(d["fit_points"])))
 
 
 def density_at(d, t):
@@ -121,13 +120,13 @@ def density_at(d, t):
     return d["densities"][i][order], d["exact_densities"][j][order]
 
 
-def newtonian_claims(d1, d2, d3):
+def newtonian_claims(d1, d2, d3, recorder: Recorder):
     rate = 4 * float(d1["q"])
-    blob_x = order(d1, "trajectory_errors", "fig1d.order_trajectory")
-    blob_rho = order(d1, "density_errors", "fig1d.order_density")
-    particle_x = order(d2, "trajectory_errors", "fig2.order")
-    patch_x = order(d3, "trajectory_errors", "fig3.slower_trajectory")
-    patch_rho = order(d3, "density_errors", "fig3.slower_density")
+    blob_x = order(recorder, d1, "trajectory_errors", "fig1d.order_trajectory")
+    blob_rho = order(recorder, d1, "density_errors", "fig1d.order_density")
+    particle_x = order(recorder, d2, "trajectory_errors", "fig2.order")
+    patch_x = order(recorder, d3, "trajectory_errors", "fig3.slower_trajectory")
+    patch_rho = order(recorder, d3, "density_errors", "fig3.slower_density")
     gaps = np.diff(d1["positions"], axis=1).min() / float(d1["h"])
     last = d1["exact_times"][-1]
     at = int(np.argmin(np.abs(d1["times"] - last)))
@@ -186,14 +185,14 @@ def newtonian_claims(d1, d2, d3):
     ]
 
 
-def fig4_claims(d):
+def fig4_claims(d, recorder: Recorder):
     rate4, rate6 = 4 * float(d["q"]), 6 * float(d["q"])
     out = []
     names = {"newtonian_repulsive": "-|x|/2", "cubic": "|x|^3/3"}
     for kernel in d["kernels"]:
         for part in ("trajectory", "density"):
-            m4 = order(d, f"{kernel}_blob4_{part}", f"fig4.m4_{kernel}_{part}")
-            m6 = order(d, f"{kernel}_blob6_{part}", f"fig4.m6_{kernel}_{part}")
+            m4 = order(recorder, d, f"{kernel}_blob4_{part}", f"fig4.m4_{kernel}_{part}")
+            m6 = order(recorder, d, f"{kernel}_blob6_{part}", f"fig4.m6_{kernel}_{part}")
             out.append(claim(c.close_to, f"fig4.m4_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 4: {part} "
                              f"rate close to m q = {rate4:g}", rate4, m4, 0.3))
             out.append(claim(c.between, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate "
@@ -233,9 +232,7 @@ def fig4_claims(d):
     ]
     q = float(d["diagnostic_q"])
     for m in (4, 6):
-        CATALOGUE.kinds.setdefault(f"fig4.repulsive_density_q{q:g}_m{m}",
-                                   ("check", f"diagnostic rerun of Figure 4 with q = {q:g} (not in the paper)"))
-        rate = order(d, f"diagnostic_m{m}_density", f"fig4.repulsive_density_q{q:g}_m{m}")
+        rate = order(recorder, d, f"diagnostic_m{m}_density", f"fig4.repulsive_density_q{q:g}_m{m}")
         out.append(claim(c.close_to, f"fig4.repulsive_density_q{q:g}_m{m}", "4 (diagnostic)",
                          f"K = -|x|/2, m = {m}, with q = {q:g} instead of 0.9: the density rate reaches m q, so the "
                          "slow density rate at q = 0.9 is the quadrature error of the spreading particles, not the "
@@ -243,7 +240,7 @@ def fig4_claims(d):
     return out
 
 
-def fig4log_claims(d_log, d):
+def fig4log_claims(d_log, d, recorder: Recorder):
     """Figure 4's row label reads K = -log|x|/(2 pi); its caption and text say (-Delta)^{-1}, -|x|/2 in
     1D. Which reading do the published m = 4 rates (m q = 3.6) fit? For trajectory and density: the
     distance of the label's m = 4 order from 3.6 minus that of the caption's (Figure 4's first row);
@@ -251,7 +248,7 @@ def fig4log_claims(d_log, d):
     rate4 = 4 * float(d["q"])
     out = []
     for part in ("trajectory", "density"):
-        label = order(d_log, f"log_repulsive_blob4_{part}", f"fig4log.caption_fits_{part}")
+        label = order(recorder, d_log, f"log_repulsive_blob4_{part}", f"fig4log.caption_fits_{part}")
         key = f"newtonian_repulsive_blob4_{part}"  # recorded by fig4_claims
         caption = rates.order(f"{PAPER}.fig4.m4_{key}", "h", d["h_values"], d[key], int(d["fit_points"])).slope
         out.append(claim(c.at_least, f"fig4log.caption_fits_{part}", "4", f"the published m = 4 {part} rate "
@@ -276,7 +273,7 @@ def quadrature_model(h, quadrature, q, jacobian):
     return float(np.exp(log_a)), float(power)
 
 
-def repulsive_claims(d, p):
+def repulsive_claims(d, p, recorder: Recorder):
     """Figure 4, K = -|x|/2: where the slow density rate comes from, and whether the model predicts
     the finer runs."""
     n, base = d["inverse_h"], int(d["base_count"])
@@ -294,7 +291,7 @@ def repulsive_claims(d, p):
               "its share, smallest of m = 4 and 6", 0.5, share),
     ]
     for m in (4, 6):
-        slope = RATES.add(rates.order(f"{PAPER}.fig4.repulsive_regularisation_m{m}", "h", h[:base],
+        slope = recorder.add(rates.order(f"{PAPER}.fig4.repulsive_regularisation_m{m}", "h", h[:base],
                                       d[f"m{m}_regularisation"][:base], k))
         out.append(claim(c.close_to, f"fig4.repulsive_regularisation_m{m}", "4", f"K = -|x|/2, m = {m}: the "
                          f"regularisation part alone converges at m q = {m * q:g}: order on the {k} finest h of the "
@@ -330,7 +327,7 @@ def repulsive_claims(d, p):
                      "(a faster, immediate return of m q would leave it far below the model): largest factor between "
                      "prediction and measurement, m = 4", float(p["repulsive"]["model_factor"]), quadrature_gap,
                      published="(our model)"))
-    extended = RATES.add(rates.order(f"{PAPER}.fig4.repulsive_extended_order", "h", h, d["m4_total"], k,
+    extended = recorder.add(rates.order(f"{PAPER}.fig4.repulsive_extended_order", "h", h, d["m4_total"], k,
                                      "m = 4 density, extended"))
     out.append(claim(c.close_to, "fig4.repulsive_extended_order", "4", f"K = -|x|/2, m = 4: density order on the {k} "
                      f"finest h of the extended runs (to h = 1/{n[-1]})", 4 * q, extended, 0.3))
@@ -358,15 +355,15 @@ def cluster_count(points, threshold=0.05):
     return int(fcluster(linkage(points, "single"), threshold, criterion="distance").max())
 
 
-def fig5_claims(d):
+def fig5_claims(d, recorder: Recorder):
     labels = list(d["labels"])
     # the claim each case's fits are recorded under: the one its trajectory rate decides (the
     # density rates of the particle and disk cases decide none)
     names = {"regular, blob": ("fig5.m4_regular_trajectory", "fig5.m4_regular_density"),
              "regular, particle": ("fig5.particle_slower",) * 2, "disk, blob": ("fig5.disk_slower",) * 2}
-    slopes = {label: (order(d, "_trajectory", names[label][0], f"case{i}"),
-                      order(d, "_density", names[label][1], f"case{i}") if np.isfinite(d[f"case{i}_density"]).all()
-                      else np.nan)
+    slopes = {label: (order(recorder, d, "_trajectory", names[label][0], f"case{i}"),
+                      order(recorder, d, "_density", names[label][1], f"case{i}")
+                      if np.isfinite(d[f"case{i}_density"]).all() else np.nan)
               for i, label in enumerate(labels)}
     regular, particle, disk = slopes["regular, blob"], slopes["regular, particle"], slopes["disk, blob"]
     return [
