@@ -110,6 +110,14 @@ def between(id, paper, figure, claim, lower: float, upper: float, measured: floa
                  f"in {band}", _verdict(lower <= measured <= upper, measured), repr(float(measured)))
 
 
+def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, text: str, *args, **kwargs) -> Claim:
+    """The one constructor of every claim: ``<paper>.<name>``, its kind (:data:`KINDS`) and its source in the
+    paper, decided by ``compare`` (:func:`close_to`, :func:`relatively_close_to`, :func:`at_most`,
+    :func:`at_least` or :func:`between`) on the remaining arguments. Each paper binds its id once:
+    ``claim = functools.partial(claims.claim, PAPER)``."""
+    return compare(f"{paper}.{name}", paper, figure, text, *args, kind=kind, source=source, **kwargs)
+
+
 class Catalogue:
     """The kind and source of every claim of one paper, looked up by the claim's name.
 
@@ -130,8 +138,9 @@ class Catalogue:
         return self.kinds[name]
 
     def claim(self, compare, name, figure, text, *args, **kwargs) -> Claim:
+        """:func:`claim` with the kind and source of the entry ``name``."""
         kind, source = self.kind_and_source(name)
-        return compare(f"{self.paper}.{name}", self.paper, figure, text, *args, kind=kind, source=source, **kwargs)
+        return claim(self.paper, compare, name, kind, source, figure, text, *args, **kwargs)
 
 
 def write_claims(path, claims, log=None) -> None:

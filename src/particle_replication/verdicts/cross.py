@@ -10,6 +10,7 @@ sizes; identities that hold in exact arithmetic get rounding tolerances.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -24,21 +25,23 @@ ROUNDING = 1e-12
 EVENT_TOLERANCE = 1e-9
 #: A W1 error this far below the mass is zero (rounding of positions of order 1).
 EXACT = 1e-12
-SOURCE_IDENTITY = ("blob paper Definition 2.2 (grad K(0) = 0); sticky paper section 1.1.3 and Remark 3.3")
+SOURCE_IDENTITY = "blob paper Definition 2.2 (grad K(0) = 0); sticky paper section 1.1.3 and Remark 3.3"
 SOURCE_SPD = "sticky paper Remark 3.3 (SPD exact for discretised data) and the L1 contraction of entropy solutions"
 SPD_METHODS = ("SPD, equal masses", "SPD, grid weights")
 
 
-def claim(compare, name, text, *args, source, kind="derived", **kwargs):
-    return compare(f"{PAPER}.{name}", PAPER, "cross", text, *args, kind=kind, source=source, **kwargs)
+claim = functools.partial(c.claim, PAPER)
 
 
 def series(d, data: str, t: float, method: str, keys=("size", "count", "error", "seconds")):
     """The columns ``keys`` (default: sizes, particle or cell counts, W1 errors, seconds) of one method
     on one case, by size."""
     names, times, methods = list(d["data"]), list(d["times"]), list(d["methods"])
-    rows = ((d["data_index"] == names.index(data)) & (d["time_index"] == times.index(t))
-            & (d["method_index"] == methods.index(method)))
+    rows = (
+        (d["data_index"] == names.index(data))
+        & (d["time_index"] == times.index(t))
+        & (d["method_index"] == methods.index(method))
+    )
     order_ = np.argsort(d["size"][rows], kind="stable")
     return tuple(d[key][rows][order_] for key in keys)
 
@@ -64,8 +67,7 @@ def orders(d, rates: Recorder, methods, times, window: int, skip_collapsed: dict
         if method not in methods or t not in times or (skip_collapsed or {}).get((data, t), False):
             continue
         sizes, _, errors, _ = series(d, data, t, method)
-        fit = order(f"{PAPER}.order", "size", sizes, np.maximum(errors, 1e-300), window,
-                    f"{method}, {data}, t = {t:g}")
+        fit = order(f"{PAPER}.order", "size", sizes, np.maximum(errors, 1e-300), window, f"{method}, {data}, t = {t:g}")
         found.append(-rates.add(fit))
     return found
 
@@ -128,8 +130,7 @@ def speed_ratio(d, min_seconds: float) -> float:
         if method in SPD_METHODS or t == 0.0:
             continue
         errors, seconds = series(d, data, t, method, ("error", "seconds"))
-        spd_lines = [series(d, data, t, spd, ("error", "seconds")) for spd in SPD_METHODS
-                     if (data, t, spd) in every]
+        spd_lines = [series(d, data, t, spd, ("error", "seconds")) for spd in SPD_METHODS if (data, t, spd) in every]
         for error, time in zip(errors, seconds):
             if time < min_seconds:
                 continue
@@ -147,24 +148,45 @@ def study_claims(d, rates: Recorder, p):
     """Orders of every method before and after the blow-up, the SPD's contraction and exactness,
     and which method reaches the target W1 first."""
     window, rules = p["fit_points"], p["claims"]
-    masses = {(str(data), float(t)): (float(m), float(dirac)) for data, t, m, dirac in
-              zip(d["case_data"], d["case_times"], d["case_mass"], d["case_dirac"])}
+    masses = {
+        (str(data), float(t)): (float(m), float(dirac))
+        for data, t, m, dirac in zip(d["case_data"], d["case_times"], d["case_mass"], d["case_dirac"])
+    }
     single = collapsed(d, masses)
     before, after = [t for t in p["times"] if t < 1.0], [t for t in p["times"] if t > 1.0]
     rows = []
 
     late = max(p["times"])
     share = masses[(str(p["data"][0]), late)][1] / masses[(str(p["data"][0]), late)][0]
-    rows.append(claim(c.between, "exact.dirac_share", f"share of the mass in the Dirac mass of the exact solution "
-                      f"from {p['data'][0]} at t = {late:g} (issue 15: about 57 % for (4.3) at t = 1.1)",
-                      *rules["dirac_share"], float(share), kind="check",
-                      source="a0 = t m(a0) (this section), against the issue's independent figure"))
+    rows.append(
+        claim(
+            c.between,
+            "exact.dirac_share",
+            "check",
+            "a0 = t m(a0) (this section), against the issue's independent figure",
+            "cross",
+            f"share of the mass in the Dirac mass of the exact solution "
+            f"from {p['data'][0]} at t = {late:g} (issue 15: about 57 % for (4.3) at t = 1.1)",
+            *rules["dirac_share"],
+            float(share),
+        )
+    )
 
     spd = orders(d, rates, SPD_METHODS, p["times"], window, single)
-    rows.append(claim(c.between, "order.spd", "W1 order of both SPDs (n or 1/h), every data, before and after the "
-                      "blow-up (cases with a single Dirac mass left out): the discretised data are O(1/n) from the "
-                      "data, and the SPD is their exact entropy solution; worst fit", *rules["spd_order"],
-                      _farthest(spd, rules["spd_order"]), source=SOURCE_SPD))
+    rows.append(
+        claim(
+            c.between,
+            "order.spd",
+            "derived",
+            SOURCE_SPD,
+            "cross",
+            "W1 order of both SPDs (n or 1/h), every data, before and after the "
+            "blow-up (cases with a single Dirac mass left out): the discretised data are O(1/n) from the "
+            "data, and the SPD is their exact entropy solution; worst fit",
+            *rules["spd_order"],
+            _farthest(spd, rules["spd_order"]),
+        )
+    )
 
     ratios, exact = [], []
     for data, t, method in cases(d):
@@ -175,65 +197,163 @@ def study_claims(d, rates: Recorder, p):
         ratios.extend(errors / initial)
         if single[(data, t)]:
             exact.extend(errors / masses[(data, t)][0])
-    rows.append(claim(c.at_most, "spd.contraction", "W1(SPD(t), exact(t)) <= W1(SPD(0), exact(0)) for every size: "
-                      "largest ratio over both SPDs, data and times", 1.0 + 1e-9, float(max(ratios)),
-                      source=SOURCE_SPD))
-    rows.append(claim(c.at_most, "spd.collapse_exact", "once all the mass sits in the Dirac mass ((4.4) at t > 1) "
-                      "both SPDs are exact: largest W1 / M", EXACT, float(max(exact)) if exact else math.nan,
-                      source=SOURCE_SPD))
+    rows.append(
+        claim(
+            c.at_most,
+            "spd.contraction",
+            "derived",
+            SOURCE_SPD,
+            "cross",
+            "W1(SPD(t), exact(t)) <= W1(SPD(0), exact(0)) for every size: largest ratio over both SPDs, data and times",
+            1.0 + 1e-9,
+            float(max(ratios)),
+        )
+    )
+    rows.append(
+        claim(
+            c.at_most,
+            "spd.collapse_exact",
+            "derived",
+            SOURCE_SPD,
+            "cross",
+            "once all the mass sits in the Dirac mass ((4.4) at t > 1) both SPDs are exact: largest W1 / M",
+            EXACT,
+            float(max(exact)) if exact else math.nan,
+        )
+    )
 
     blob = [f"blob, m = {m}" for m in p["blob"]["orders"]]
-    rows.append(claim(c.between, "order.blob_before", f"W1 order of the blob method (m = {p['blob']['orders']}, "
-                      f"q = {p['blob']['q']}) before the blow-up: point masses on a grid, O(h); worst fit",
-                      *rules["blob_order_before"],
-                      _farthest(orders(d, rates, blob, before, window), rules["blob_order_before"]),
-                      source="blob paper Theorem 3.8 (trajectories O(h^{mq})); W1 of grid point masses is O(h)"))
-    rows.append(claim(c.at_least, "order.blob_after", "W1 order of the blob method after the blow-up: O(h) from the "
-                      "particles outside the Dirac mass plus at most its mass times the cluster width delta = h^q; "
-                      "smallest fit", rules["blob_order_after_min"],
-                      min(orders(d, rates, blob, after, window), default=math.nan),
-                      source="blob paper Definition 2.2 (K_delta smooth: no Dirac mass forms)"))
-    rows.append(claim(c.between, "order.ltp", "W1 order of LTP with W = |x|/2 before the blow-up (dt = h/2): the "
-                      "velocity (M - 2F)/2 is constant along characteristics, so explicit Euler moves centres "
-                      "exactly and the O(h^2) of the reconstruction remains; worst fit", *rules["ltp_order"],
-                      _farthest(orders(d, rates, ("LTP",), before, window), rules["ltp_order"]),
-                      source="LTP paper (2.31), Theorem 1 (O(h^2) reconstruction); outside its assumptions"))
-    rows.append(claim(c.between, "order.sp_before", "W1 order of SP (eps = h) before the blow-up: O(eps^2) smoothing; "
-                      "worst fit", *rules["sp_order_before"],
-                      _farthest(orders(d, rates, ("SP",), before, window), rules["sp_order_before"]),
-                      source="LTP paper section 2.1 (SP method)"))
-    rows.append(claim(c.between, "order.sp_after", "W1 order of SP after the blow-up: the Dirac mass is reconstructed "
-                      "as its mass times phi_eps, W1 of order eps = h; worst fit", *rules["sp_order_after"],
-                      _farthest(orders(d, rates, ("SP",), after, window), rules["sp_order_after"]),
-                      source="LTP paper section 2.1 (SP method)"))
-    rows.append(claim(c.between, "order.godunov", "W1 order of Godunov's scheme for F (cells), every data and time "
-                      "(single Dirac masses left out): first order; worst fit", *rules["godunov_order"],
-                      _farthest(orders(d, rates, ("Godunov for F",), p["times"], window, single),
-                                rules["godunov_order"]),
-                      source="Godunov (1959); LeVeque (2002) section 12"))
+    rows.append(
+        claim(
+            c.between,
+            "order.blob_before",
+            "derived",
+            "blob paper Theorem 3.8 (trajectories O(h^{mq})); W1 of grid point masses is O(h)",
+            "cross",
+            f"W1 order of the blob method (m = {p['blob']['orders']}, "
+            f"q = {p['blob']['q']}) before the blow-up: point masses on a grid, O(h); worst fit",
+            *rules["blob_order_before"],
+            _farthest(orders(d, rates, blob, before, window), rules["blob_order_before"]),
+        )
+    )
+    rows.append(
+        claim(
+            c.at_least,
+            "order.blob_after",
+            "derived",
+            "blob paper Definition 2.2 (K_delta smooth: no Dirac mass forms)",
+            "cross",
+            "W1 order of the blob method after the blow-up: O(h) from the "
+            "particles outside the Dirac mass plus at most its mass times the cluster width delta = h^q; "
+            "smallest fit",
+            rules["blob_order_after_min"],
+            min(orders(d, rates, blob, after, window), default=math.nan),
+        )
+    )
+    rows.append(
+        claim(
+            c.between,
+            "order.ltp",
+            "derived",
+            "LTP paper (2.31), Theorem 1 (O(h^2) reconstruction); outside its assumptions",
+            "cross",
+            "W1 order of LTP with W = |x|/2 before the blow-up (dt = h/2): the "
+            "velocity (M - 2F)/2 is constant along characteristics, so explicit Euler moves centres "
+            "exactly and the O(h^2) of the reconstruction remains; worst fit",
+            *rules["ltp_order"],
+            _farthest(orders(d, rates, ("LTP",), before, window), rules["ltp_order"]),
+        )
+    )
+    rows.append(
+        claim(
+            c.between,
+            "order.sp_before",
+            "derived",
+            "LTP paper section 2.1 (SP method)",
+            "cross",
+            "W1 order of SP (eps = h) before the blow-up: O(eps^2) smoothing; worst fit",
+            *rules["sp_order_before"],
+            _farthest(orders(d, rates, ("SP",), before, window), rules["sp_order_before"]),
+        )
+    )
+    rows.append(
+        claim(
+            c.between,
+            "order.sp_after",
+            "derived",
+            "LTP paper section 2.1 (SP method)",
+            "cross",
+            "W1 order of SP after the blow-up: the Dirac mass is reconstructed "
+            "as its mass times phi_eps, W1 of order eps = h; worst fit",
+            *rules["sp_order_after"],
+            _farthest(orders(d, rates, ("SP",), after, window), rules["sp_order_after"]),
+        )
+    )
+    rows.append(
+        claim(
+            c.between,
+            "order.godunov",
+            "derived",
+            "Godunov (1959); LeVeque (2002) section 12",
+            "cross",
+            "W1 order of Godunov's scheme for F (cells), every data and time "
+            "(single Dirac masses left out): first order; worst fit",
+            *rules["godunov_order"],
+            _farthest(orders(d, rates, ("Godunov for F",), p["times"], window, single), rules["godunov_order"]),
+        )
+    )
 
     differences = d["spd_difference"][~np.isnan(d["spd_difference"])]
-    rows.append(claim(c.at_most, "identity.particle_spd", "the particle method (DOP853, rtol 1e-12) equals the "
-                      "weighted SPD before the first collision: largest |x_particle - x_SPD| over data and h",
-                      ROUNDING, float(np.max(differences)) if differences.size else math.nan,
-                      source=SOURCE_IDENTITY))
+    rows.append(
+        claim(
+            c.at_most,
+            "identity.particle_spd",
+            "derived",
+            SOURCE_IDENTITY,
+            "cross",
+            "the particle method (DOP853, rtol 1e-12) equals the "
+            "weighted SPD before the first collision: largest |x_particle - x_SPD| over data and h",
+            ROUNDING,
+            float(np.max(differences)) if differences.size else math.nan,
+        )
+    )
 
     widths = []
     for data, t, method in cases(d):
         if method.startswith("blob") and t > 1.0 and masses[(data, t)][1] > 0:
             sizes, width = series(d, data, t, method, ("size", "dirac_width"))
             widths.extend(width / (1.0 / sizes) ** p["blob"]["q"])
-    rows.append(claim(c.between, "blob.no_dirac", "after the blow-up the blob particles of the Dirac mass stay apart "
-                      "but within delta = h^q of 0: (largest |x| of them)/delta, farthest from the band", 1e-300, 1.0,
-                      _farthest(widths, (0.0, 1.0)) if np.all(np.asarray(widths) > 0) else 0.0,
-                      source="blob paper Definition 2.2 (K_delta smooth)"))
+    rows.append(
+        claim(
+            c.between,
+            "blob.no_dirac",
+            "derived",
+            "blob paper Definition 2.2 (K_delta smooth)",
+            "cross",
+            "after the blow-up the blob particles of the Dirac mass stay apart "
+            "but within delta = h^q of 0: (largest |x| of them)/delta, farthest from the band",
+            1e-300,
+            1.0,
+            _farthest(widths, (0.0, 1.0)) if np.all(np.asarray(widths) > 0) else 0.0,
+        )
+    )
 
     speedup = speed_ratio(d, p["min_timed_seconds"])
-    rows.append(claim(c.at_least, "fastest", "an SPD is the fastest method at every W1 error the others reach: for "
-                      f"every run of another method that took at least {p['min_timed_seconds']:g} s, the time the "
-                      "best SPD needs for the same W1 (interpolated between its runs) is this many times smaller, at "
-                      "least: smallest ratio over data and times", rules["speedup_min"], speedup,
-                      source="sticky paper section 5.1.1: the hull costs O(n); the others O(n^2) or O(n/h)"))
+    rows.append(
+        claim(
+            c.at_least,
+            "fastest",
+            "derived",
+            "sticky paper section 5.1.1: the hull costs O(n); the others O(n^2) or O(n/h)",
+            "cross",
+            "an SPD is the fastest method at every W1 error the others reach: for "
+            f"every run of another method that took at least {p['min_timed_seconds']:g} s, the time the "
+            "best SPD needs for the same W1 (interpolated between its runs) is this many times smaller, at "
+            "least: smallest ratio over data and times",
+            rules["speedup_min"],
+            speedup,
+        )
+    )
     return rows
 
 
@@ -258,27 +378,59 @@ def behaviour_claims(b, p):
     # Past the collision the solver may stop at its budget before the end of the window: rates use
     # the time it reached.
     rates = (b["stall_after"] / np.maximum(b["stall_reached"] - b["stall_collision"], 1e-300)) / (
-        b["stall_before"] / b["stall_collision"])
+        b["stall_before"] / b["stall_collision"]
+    )
     dt = b["ltp_dt"]
     refusal = b["ltp_refusal"]
     # LTP: rho_h at the centre follows the exact 1/(1 - t) (max rho0 = 1), so dt rho_h reaches 1 at t = 1 - dt.
     refusal_miss = np.abs(refusal - (1.0 - dt[None, :])) / dt[None, :]
     return [
-        claim(c.at_most, "identity.first_collision", "the particle method stops at the first meeting of neighbours "
-              "moving at the SPD velocities: largest |event time - predicted time|", EVENT_TOLERANCE,
-              float(np.max(np.abs(b["collision_measured"] - b["collision_predicted"]))), source=SOURCE_IDENTITY),
-        claim(c.at_least, "particle.stall", "without the collision event DOP853 chatters past the collision (the "
-              "velocities jump as particles cross and recross): right-hand sides per unit time after it over before "
-              "it, smallest over data", p["claims"]["stall_rate_min"], float(np.min(rates)), kind="check",
-              source=SOURCE_IDENTITY),
-        claim(c.at_most, "ltp.refusal", "LTP with W = |x|/2 is refused by the explicit Euler bound dt rho_h < 1 at "
-              "t = 1 - dt, to within one step, as rho_h(0) follows the exact 1/(1 - t): largest "
-              "|t_refused - (1 - dt)|/dt", 1.0 + ROUNDING, float(np.max(refusal_miss)),
-              source="LTP paper (2.31)-(2.32); blob paper section 4.1 (blow-up)"),
-        claim(c.at_most, "ltp.edge_collapse", "why the refusal comes early where it does: at the refusal (finest h) "
-              "the densest LTP particle sits at the edge of the support and is narrower than the exact flow's "
-              "(1 - t) h: largest (its width / (1 - t) h) over the data refused more than a step early (infinite if "
-              "it is not within 10 % of the support's half-width from the edge; 0 if no refusal is early)", 0.5,
-              edge_collapse(b),
-              kind="check", source="LTP paper (2.31)-(2.32): the width update uses rho_h at the centre"),
+        claim(
+            c.at_most,
+            "identity.first_collision",
+            "derived",
+            SOURCE_IDENTITY,
+            "cross",
+            "the particle method stops at the first meeting of neighbours "
+            "moving at the SPD velocities: largest |event time - predicted time|",
+            EVENT_TOLERANCE,
+            float(np.max(np.abs(b["collision_measured"] - b["collision_predicted"]))),
+        ),
+        claim(
+            c.at_least,
+            "particle.stall",
+            "check",
+            SOURCE_IDENTITY,
+            "cross",
+            "without the collision event DOP853 chatters past the collision (the "
+            "velocities jump as particles cross and recross): right-hand sides per unit time after it over before "
+            "it, smallest over data",
+            p["claims"]["stall_rate_min"],
+            float(np.min(rates)),
+        ),
+        claim(
+            c.at_most,
+            "ltp.refusal",
+            "derived",
+            "LTP paper (2.31)-(2.32); blob paper section 4.1 (blow-up)",
+            "cross",
+            "LTP with W = |x|/2 is refused by the explicit Euler bound dt rho_h < 1 at "
+            "t = 1 - dt, to within one step, as rho_h(0) follows the exact 1/(1 - t): largest "
+            "|t_refused - (1 - dt)|/dt",
+            1.0 + ROUNDING,
+            float(np.max(refusal_miss)),
+        ),
+        claim(
+            c.at_most,
+            "ltp.edge_collapse",
+            "check",
+            "LTP paper (2.31)-(2.32): the width update uses rho_h at the centre",
+            "cross",
+            "why the refusal comes early where it does: at the refusal (finest h) "
+            "the densest LTP particle sits at the edge of the support and is narrower than the exact flow's "
+            "(1 - t) h: largest (its width / (1 - t) h) over the data refused more than a step early (infinite if "
+            "it is not within 10 % of the support's half-width from the edge; 0 if no refusal is early)",
+            0.5,
+            edge_collapse(b),
+        ),
     ]

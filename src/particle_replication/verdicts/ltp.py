@@ -9,6 +9,7 @@ a plausible wrong outcome and show it fails.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -23,8 +24,7 @@ PAPER = "ltp"
 ROUNDING = 1e-10
 
 
-def claim(compare, name, kind, source, figure, text, *args, **kwargs):
-    return compare(f"{PAPER}.{name}", PAPER, figure, text, *args, kind=kind, source=source, **kwargs)
+claim = functools.partial(c.claim, PAPER)
 
 
 def _case(d, suffix):

@@ -9,6 +9,7 @@ the config, and every fit is recorded with its pairwise and windowed slopes.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -27,8 +28,7 @@ EXACT_DISTANCE = 1e-12
 """An L1 distance this small between two solutions is rounding: they agree exactly."""
 
 
-def claim(compare, name, kind, source, figure, text, *args, **kwargs):
-    return compare(f"{PAPER}.{name}", PAPER, figure, text, *args, kind=kind, source=source, **kwargs)
+claim = functools.partial(c.claim, PAPER)
 
 
 def _farthest_from_centre(values, band):
