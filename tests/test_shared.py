@@ -1,5 +1,7 @@
 """Shared helpers: order fitting, claims table, validation."""
 
+import math
+
 import numpy as np
 import pytest
 
@@ -259,3 +261,11 @@ def test_catalogue_gives_every_claim_its_kind_and_source():
         catalogue.claim(c.at_most, "fig2.peaks", "2", "peaks", 1.0, 0.0)
     with pytest.raises(ValueError, match="must be one of"):
         c.Catalogue("x", {"a": ("theorem", "Theorem 1")})
+
+
+def test_farthest_from_centre_picks_the_value_that_decides_a_band():
+    from particle_replication.claims import farthest_from_centre
+
+    assert farthest_from_centre([0.95, 1.02, 1.3], (0.9, 1.1)) == 1.3
+    assert farthest_from_centre([0.5, 1.05], (0.9, 1.1)) == 0.5
+    assert math.isnan(farthest_from_centre([], (0.9, 1.1)))

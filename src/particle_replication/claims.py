@@ -25,6 +25,7 @@ import sys
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+import numpy as np
 import yaml
 
 from .rates import merge_rates
@@ -116,6 +117,15 @@ def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, t
     :func:`at_least` or :func:`between`) on the remaining arguments. Each paper binds its id once:
     ``claim = functools.partial(claims.claim, PAPER)``."""
     return compare(f"{paper}.{name}", paper, figure, text, *args, kind=kind, source=source, **kwargs)
+
+
+def farthest_from_centre(values, band) -> float:
+    """The value farthest from the middle of ``band`` (lower, upper): the one that decides whether all lie in
+    it; NaN for no value (a claim on nothing fails)."""
+    values = np.asarray(values, dtype=float)
+    if values.size == 0:
+        return math.nan
+    return float(values[np.argmax(np.abs(values - 0.5 * (band[0] + band[1])))])
 
 
 class Catalogue:

@@ -52,13 +52,6 @@ def cases(d):
     return [(str(d["data"][i]), float(d["times"][j]), str(d["methods"][k])) for i, j, k in seen]
 
 
-def _farthest(values, band):
-    values = np.asarray(values, dtype=float)
-    if values.size == 0:
-        return math.nan
-    return float(values[np.argmax(np.abs(values - 0.5 * (band[0] + band[1])))])
-
-
 def orders(d, rates: Recorder, methods, times, window: int, skip_collapsed: dict | None = None):
     """Fitted W1 orders of ``methods`` at ``times`` for every data, recorded; the cases whose exact
     solution is a single Dirac mass (``skip_collapsed[(data, t)]`` true) are left out."""
@@ -184,7 +177,7 @@ def study_claims(d, rates: Recorder, p):
             "blow-up (cases with a single Dirac mass left out): the discretised data are O(1/n) from the "
             "data, and the SPD is their exact entropy solution; worst fit",
             *rules["spd_order"],
-            _farthest(spd, rules["spd_order"]),
+            c.farthest_from_centre(spd, rules["spd_order"]),
         )
     )
 
@@ -233,7 +226,7 @@ def study_claims(d, rates: Recorder, p):
             f"W1 order of the blob method (m = {p['blob']['orders']}, "
             f"q = {p['blob']['q']}) before the blow-up: point masses on a grid, O(h); worst fit",
             *rules["blob_order_before"],
-            _farthest(orders(d, rates, blob, before, window), rules["blob_order_before"]),
+            c.farthest_from_centre(orders(d, rates, blob, before, window), rules["blob_order_before"]),
         )
     )
     rows.append(
@@ -261,7 +254,7 @@ def study_claims(d, rates: Recorder, p):
             "velocity (M - 2F)/2 is constant along characteristics, so explicit Euler moves centres "
             "exactly and the O(h^2) of the reconstruction remains; worst fit",
             *rules["ltp_order"],
-            _farthest(orders(d, rates, ("LTP",), before, window), rules["ltp_order"]),
+            c.farthest_from_centre(orders(d, rates, ("LTP",), before, window), rules["ltp_order"]),
         )
     )
     rows.append(
@@ -273,7 +266,7 @@ def study_claims(d, rates: Recorder, p):
             "cross",
             "W1 order of SP (eps = h) before the blow-up: O(eps^2) smoothing; worst fit",
             *rules["sp_order_before"],
-            _farthest(orders(d, rates, ("SP",), before, window), rules["sp_order_before"]),
+            c.farthest_from_centre(orders(d, rates, ("SP",), before, window), rules["sp_order_before"]),
         )
     )
     rows.append(
@@ -286,7 +279,7 @@ def study_claims(d, rates: Recorder, p):
             "W1 order of SP after the blow-up: the Dirac mass is reconstructed "
             "as its mass times phi_eps, W1 of order eps = h; worst fit",
             *rules["sp_order_after"],
-            _farthest(orders(d, rates, ("SP",), after, window), rules["sp_order_after"]),
+            c.farthest_from_centre(orders(d, rates, ("SP",), after, window), rules["sp_order_after"]),
         )
     )
     rows.append(
@@ -299,7 +292,9 @@ def study_claims(d, rates: Recorder, p):
             "W1 order of Godunov's scheme for F (cells), every data and time "
             "(single Dirac masses left out): first order; worst fit",
             *rules["godunov_order"],
-            _farthest(orders(d, rates, ("Godunov for F",), p["times"], window, single), rules["godunov_order"]),
+            c.farthest_from_centre(
+                orders(d, rates, ("Godunov for F",), p["times"], window, single), rules["godunov_order"]
+            ),
         )
     )
 
@@ -334,7 +329,7 @@ def study_claims(d, rates: Recorder, p):
             "but within delta = h^q of 0: (largest |x| of them)/delta, farthest from the band",
             1e-300,
             1.0,
-            _farthest(widths, (0.0, 1.0)) if np.all(np.asarray(widths) > 0) else 0.0,
+            c.farthest_from_centre(widths, (0.0, 1.0)) if np.all(np.asarray(widths) > 0) else 0.0,
         )
     )
 

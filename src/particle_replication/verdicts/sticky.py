@@ -31,14 +31,6 @@ EXACT_DISTANCE = 1e-12
 claim = functools.partial(c.claim, PAPER)
 
 
-def _farthest_from_centre(values, band):
-    """The value farthest from the middle of ``band`` (the one that decides a band verdict)."""
-    values = np.asarray(values, dtype=float)
-    if values.size == 0:
-        return math.nan
-    return float(values[np.argmax(np.abs(values - 0.5 * (band[0] + band[1])))])
-
-
 def burgers_claims(d, rates: Recorder, window: int):
     """Figure 2 (d): order 1/n for every t, curves ordered by t; (2.1) exact for even n."""
     slopes = [rates.add(order(f"{PAPER}.fig2d.order", "n", d["error_n"], row, window, f"t = {t:g}")) * np.log(2)
@@ -110,12 +102,12 @@ def concave_claims(d, rates: Recorder, window: int, band):
         claim(c.between, "fig3d.decay_plotted", "paper", "Figure 3 (d), section 5.1.3", "3d",
               f"past the plateau the error decays like log(n)/n, in the plotted range: slope of n error against "
               f"log n on the {window} largest plotted n, for the {len(plotted)} times whose window is past the "
-              "plateau; the value farthest from the band's centre", lower, upper, _farthest_from_centre(plotted, band),
+              "plateau; the value farthest from the band's centre", lower, upper, c.farthest_from_centre(plotted, band),
               published="log(n)/n"),
         claim(c.between, "fig3d.decay_asymptotic", "paper", "Figure 3 (d), section 5.1.3", "3d",
               f"the decay rate is that of the initial discretisation, log(n)/n: slope of n error against log n for "
               f"n = {', '.join(f'2^{int(np.log2(v))}' for v in rate_n)}, every t; the value farthest from the band's "
-              "centre", lower, upper, _farthest_from_centre(asymptotic, band), published="log(n)/n"),
+              "centre", lower, upper, c.farthest_from_centre(asymptotic, band), published="log(n)/n"),
         claim(c.at_most, "fig3d.ordering", "paper", "Figure 3 (d) caption", "3d",
               "higher curves for smaller t: largest ratio error(t_next)/error(t) over all n", 1.0 + ROUNDING,
               float(ratios.max()), published="<= 1"),
