@@ -3,7 +3,7 @@
 import numpy as np
 
 from particle_methods.convergence import fit_order, pairwise_orders
-from particle_replication.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure, suptitle
+from particle_replication.plotting import label_h_axis, label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 TITLES = {"regular, blob": "A. regular data, blob $m = 4$", "regular, particle": "B. regular data, particle",
@@ -30,7 +30,7 @@ def run(d, t, output):
         label_h_axis(ax, h)
         ax.tick_params(axis="x", labelsize="small")
         ax.legend(loc="upper left", handlelength=1.8, labelspacing=0.25, borderaxespad=0.3)
-        label_panel(ax, TITLES.get(label, mathtext(label)))
+        label_panel(ax, TITLES.get(label, label))
         ax.title.set_fontsize(9)
     first = np.atleast_1d(axes)[0]
     low, high = first.get_ylim()

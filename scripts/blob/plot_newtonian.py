@@ -9,7 +9,7 @@ method) and (C) the trajectory errors against h.
 import numpy as np
 
 from particle_methods.convergence import fit_order
-from particle_replication.plotting import label_h_axis, label_panel, mathtext, new_figure, save_figure, suptitle
+from particle_replication.plotting import label_h_axis, label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 TRAJECTORIES_SHOWN = 26
@@ -80,7 +80,7 @@ def run(d, title, error_t, output):
     ax_d.set_ylim(low, high * (high / low) ** 0.35)   # room for the legend above the data
     ax_d.legend(loc="upper left")
     label_panel(ax_d, f"{next(letters)}. errors against $h$")
-    suptitle(fig, mathtext(title))
+    suptitle(fig, title)
     save_figure(fig, output.pdf, output.png)
 
 

@@ -3,7 +3,7 @@
 import matplotlib as mpl
 import numpy as np
 
-from particle_replication.plotting import mathtext, new_figure, save_figure, suptitle
+from particle_replication.plotting import new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
 ROWS = ("potential $W$", r"density $\rho_h$", r"velocity $-W' * \rho_h$", "particle size $h_k / h$")
@@ -31,7 +31,7 @@ def run(d, title, output):
         times = d[f"{prefix}_times"][shown]
         colours = mpl.colormaps["viridis"](np.linspace(0, 0.9, shown.size))
         axes[0, column].plot(d["x_potential"], d[f"{prefix}_potential"], "k-")
-        axes[0, column].set_title(mathtext(f"W = {label}"))
+        axes[0, column].set_title(f"W = {label}")
         for colour, t, density, index in zip(colours, times, d[f"{prefix}_densities"], shown):
             centres = d[f"{prefix}_centres"][index]
             axes[1, column].plot(d["grid"], density, color=colour, label=f"t = {t:.3g}")
@@ -46,7 +46,7 @@ def run(d, title, output):
         # Rows density, velocity and particle size share the snapshot colours of this column.
         time_colorbar(fig, axes[1:, column], colours, times)
     fig.get_layout_engine().set(wspace=0.06)
-    suptitle(fig, mathtext(title))
+    suptitle(fig, title)
     save_figure(fig, output.pdf, output.png)
 
 

@@ -264,7 +264,7 @@ def _tiled_2d_sums(positions, masses, constants, terms, self_lap):
 
 
 
-def tiled_2d_supported(kinds, parameters) -> bool:
+def tiled_2d_supported(kinds) -> bool:
     """Whether a 2D kernel's terms are all of the kinds the tiled path takes: powers, Gaussian log terms
     and tables (the mollified kernels of section 4.4 other than the Newtonian one), raw log and
     exponential terms (the particle method on them)."""
@@ -349,7 +349,7 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
         return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters, newtonian_2d)
     if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > TABLE_REACH * steps.min():
         raise ValueError("positions spread over more than 2^40 steps of the kernel's radial table")
-    if positions.shape[1] == 2 and tiled_2d_supported(kinds, parameters):
+    if positions.shape[1] == 2 and tiled_2d_supported(kinds):
         _check_span(positions, parameters[kinds == GAUSS_LOG_2D], parameters[kinds == EXP])
         _, self_lap = profile_forces_kernel(kinds, coefficients, parameters, 0.0, 2, tables, steps)
         return _tiled_2d_sums(positions, masses, (0.0,) * 7, (kinds, coefficients, parameters, tables, steps),
