@@ -26,11 +26,10 @@
 # %%
 import matplotlib.pyplot as plt
 import numpy as np
-from IPython.display import Image, display
 
 from particle_methods.blob import data_1d, newtonian_exact, run_1d
 from particle_methods.convergence import fit_order
-from particle_replication.paths import FIGURES, RESULTS
+from particle_replication.paths import RESULTS
 from particle_replication.tour import show_figure, show_other_claims, summary
 from particle_replication.workflow import load_results
 
@@ -80,7 +79,7 @@ plt.show()
 
 # %%
 show_figure("blob", 4)
-display(Image(filename=str(FIGURES / "blob" / "repulsive.png")))
+show_figure("blob", "repulsive")
 
 # %%
 fig4 = load_results(RESULTS / "blob" / "fig4.npz")
@@ -101,7 +100,7 @@ plt.show()
 # gives densities near first order: the published m q = 3.6 fits the caption's kernel.
 
 # %%
-display(Image(filename=str(FIGURES / "blob" / "fig4log.png")))
+show_figure("blob", "fig4log")
 
 # %% [markdown]
 # ## Figures 5 and 6: the Newtonian kernel log|x| / (2 pi) in two dimensions

@@ -25,11 +25,11 @@
 # %%
 import matplotlib.pyplot as plt
 import numpy as np
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
 
 from particle_methods.cross import AggregationSolution, methods
-from particle_replication.paths import FIGURES, RESULTS
-from particle_replication.tour import show_other_claims, summary
+from particle_replication.paths import RESULTS
+from particle_replication.tour import show_figure, show_other_claims, summary
 from particle_replication.verdicts.cross import fastest_table
 from particle_replication.workflow import load_results
 
@@ -45,8 +45,8 @@ print(summary("cross"))
 # eps = h. Godunov's scheme for F is first order.
 
 # %%
-for name in ("error_size", "error_time"):
-    display(Image(filename=str(FIGURES / "cross" / f"{name}.png")))
+show_figure("cross", "error_size")
+show_figure("cross", "error_time")
 
 # %% [markdown]
 # Wall time to reach W1 = 1e-6 (interpolated between runs; * marks an extrapolation from the two

@@ -25,12 +25,11 @@
 # %%
 import matplotlib.pyplot as plt
 import numpy as np
-from IPython.display import Image, display
 
 from particle_methods.convergence import fit_order
 from particle_methods.ltp import density_named, exact_density, potential, simulate
 from particle_methods.ltp.measures import shrink_rate_inverse
-from particle_replication.paths import FIGURES, RESULTS
+from particle_replication.paths import RESULTS
 from particle_replication.tour import show_figure, show_other_claims, summary
 from particle_replication.workflow import load_results
 
@@ -124,13 +123,13 @@ show_figure("ltp", 6)
 # %%
 show_figure("ltp", 7)
 show_figure("ltp", 8)
-display(Image(filename=str(FIGURES / "ltp" / "long_time.png")))
+show_figure("ltp", "long_time")
 
 # %% [markdown]
 # ## Beyond the affine test case: a singular power potential, and the centre of mass
 
 # %%
-display(Image(filename=str(FIGURES / "ltp" / "nonaffine.png")))
+show_figure("ltp", "nonaffine")
 
 # %% [markdown]
 # ## Claims on several figures at once: exact mass and centre of mass

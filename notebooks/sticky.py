@@ -25,7 +25,7 @@
 # %%
 import matplotlib.pyplot as plt
 import numpy as np
-from IPython.display import Image, Markdown, display
+from IPython.display import Markdown, display
 
 from particle_methods.norms import w1_between_samples, w1_to_measure
 from particle_methods.sticky import (
@@ -41,7 +41,7 @@ from particle_methods.sticky import (
 )
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_replication.claims import markdown_table
-from particle_replication.paths import FIGURES, RESULTS
+from particle_replication.paths import RESULTS
 from particle_replication.tour import paper_claims, show_figure, show_other_claims, summary
 from particle_replication.workflow import load_results
 
@@ -155,7 +155,7 @@ for delta in (0.04, 0.02, 0.01, 0.005):
     print(f"Delta = {delta}: W1 to the exact MSPD {sum(map(w1_between_samples, approx, exact[0])):.2e}")
 
 # %%
-for name in ("beyond_limits", "beyond_cost"):
-    display(Image(filename=str(FIGURES / "sticky" / f"{name}.png")))
+show_figure("sticky", "beyond_limits")
+show_figure("sticky", "beyond_cost")
 display(Markdown(markdown_table([claim for claim in paper_claims("sticky") if ".beyond." in claim.id],
                                 heading=False)))

@@ -5,6 +5,7 @@ from pathlib import Path
 
 from snakemake.utils import validate
 
+from particle_replication import registry
 from particle_replication.configuration import check_configuration
 from particle_replication.workflow import module_dependencies
 
@@ -43,38 +44,8 @@ def imports(script):
 CAPTION = str(ROOT / "report" / "caption.rst")
 
 
-def figure(path_without_suffix):
-    """PDF and PNG outputs of one figure; the PNG goes to the Snakemake report with the rule's
-    ``params.caption`` as caption, filed under its paper and figure."""
-    paper, name = path_without_suffix.split("/")[-2:]
-    return {
-        "pdf": f"{path_without_suffix}.pdf",
-        "png": report(
-            f"{path_without_suffix}.png", caption=CAPTION, category=paper, subcategory=name
-        ),
-    }
-
-
-def listing(values):
-    """Values of a caption: all of them when few, else the first two, an ellipsis and the last."""
-    values = [f"{value:g}" for value in values]
-    return ", ".join(values if len(values) <= 4 else [*values[:2], "...", values[-1]])
-
-
-def power(exponent):
-    """|x|^a/a in a caption."""
-    return f"|x|^{exponent:g}/{exponent:g}"
-
-
-def _rst(text):
+def rst(text):
     """Escape the characters reStructuredText would read as markup (|x|, delta_1, a*b)."""
     for character in "|_*":
         text = text.replace(character, f"\\{character}")
     return text
-
-
-def caption(captions, figure=None):
-    """Caption of a figure from a paper's CAPTIONS table (by wildcard when ``figure`` is None)."""
-    if figure is not None:
-        return _rst(captions[figure])
-    return lambda wildcards: _rst(captions[wildcards.figure])

@@ -3,17 +3,7 @@ particles, the particle and blob methods, LTP, SP and Godunov's scheme, against 
 """
 
 CROSS = config["cross"]
-CROSS_CAPTIONS = {
-    "error_size": (
-        f"K = |x|/2 from (4.3) and (4.4): W1 distance to the exact solution against the number of particles or cells, at t = {listing(CROSS['times'])} (blow-up at t = 1). Dotted: W1 = {CROSS['target_error']:g}."
-    ),
-    "error_time": (
-        f"K = |x|/2 from (4.3) and (4.4): W1 distance to the exact solution against wall time after JIT warm-up (the same runs, timed on 2 cores with no other rule running), at t = {listing(CROSS['times'])}."
-    ),
-}
-CROSS_FIGURES = expand(
-    "figures/cross/{figure}.{ext}", figure=["error_size", "error_time"], ext=["pdf", "png"]
-)
+CROSS_FIGURES = registry.figure_outputs("cross")
 
 
 rule cross_errors:
@@ -75,29 +65,6 @@ rule cross_behaviour:
         cfg=CROSS,
     script:
         "../scripts/cross/behaviour_data.py"
-
-
-rule cross_figure:
-    """Work-precision diagrams: W1 against size, and against wall time."""
-    input:
-        data="results/cross/study.npz",
-        code=imports("cross/plot_study.py"),
-    output:
-        **figure("figures/cross/{figure}"),
-    log:
-        "logs/cross/{figure}.log",
-    benchmark:
-        "logs/benchmarks/cross_figure_{figure}.tsv"
-    wildcard_constraints:
-        figure="error_size|error_time",
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        caption=caption(CROSS_CAPTIONS, None),
-        cfg=CROSS,
-    script:
-        "../scripts/cross/plot_study.py"
 
 
 rule cross_claims:

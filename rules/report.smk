@@ -56,23 +56,10 @@ rule verify:
         "| tee {log}; exit ${{PIPESTATUS[0]}}"
 
 
-# Each notebook shows its paper's figures and claims, and plots some cached results.
+# Each notebook shows its paper's figures and claims, and plots some cached results (the registry's).
 NOTEBOOK_INPUTS = {
-    "sticky": ["results/sticky/fig2.npz", "results/sticky/fig3.npz", "results/sticky/claims.csv"],
-    "ltp": ["results/ltp/quadratic.npz", "results/ltp/fig5.npz", "results/ltp/claims.csv"],
-    "blob": [
-        "results/blob/fig4.npz",
-        "results/blob/fig5.npz",
-        "results/blob/fig7.npz",
-        "results/blob/claims.csv",
-    ],
-    "cross": ["results/cross/study.npz", "results/cross/behaviour.npz", "results/cross/claims.csv"],
-}
-NOTEBOOK_FIGURES = {
-    "sticky": STICKY_FIGURES,
-    "ltp": LTP_FIGURES,
-    "blob": BLOB_FIGURES,
-    "cross": CROSS_FIGURES,
+    paper.id: [*paper.notebook, f"results/{paper.id}/claims.csv"]
+    for paper in registry.PAPERS.values()
 }
 NOTEBOOKS = expand("notebooks/executed/{paper}.ipynb", paper=NOTEBOOK_INPUTS)
 
@@ -82,7 +69,7 @@ rule notebook:
     input:
         source=source(ROOT / "notebooks" / "{paper}.py"),
         data=lambda wildcards: NOTEBOOK_INPUTS[wildcards.paper],
-        figures=lambda wildcards: NOTEBOOK_FIGURES[wildcards.paper],
+        figures=lambda wildcards: registry.figure_outputs(wildcards.paper),
         code=lambda wildcards: [
             source(path)
             for path in module_dependencies(ROOT / "notebooks" / f"{wildcards.paper}.py", PACKAGES)
@@ -176,7 +163,7 @@ rule manuscript:
     input:
         source=source(ROOT / "paper" / "ms.tex"),
         snippets=SNIPPETS,
-        figures=[*STICKY_FIGURES, *LTP_FIGURES, *BLOB_FIGURES, *CROSS_FIGURES],
+        figures=registry.figure_outputs(),
         tables=["results/cross/table.tex", "results/blob/fig5_orders.tex"],
     output:
         "paper/ms.pdf",

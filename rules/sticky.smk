@@ -1,70 +1,7 @@
 """Jourdain and Reygner: sticky particle dynamics (SPD) and multitype SPD, Figures 1-7."""
 
 STICKY = config["sticky"]
-RAREFACTION, SHOCKS = STICKY["psystem"]["rarefaction"], STICKY["psystem"]["shocks"]
-STICKY_CAPTIONS = {
-    "fig1": (
-        "One iteration of the Brenier-Grenier hull algorithm (section 5.1.1): the list L before the iteration, the removal of a concave corner, and L after it."
-    ),
-    "fig2": (
-        f"Burgers equation from (delta_-1 + delta_1)/2: (a) trajectories of {STICKY['fig2']['trajectory_particles']} particles, (b) u(t, x), (c) profiles at t = {listing(STICKY['fig2']['profile_times'])} with the exact fans dashed, (d) log L1 error against p for n = 2^p, t = {listing(STICKY['fig2']['error_times'])}: slope -log 2."
-    ),
-    "fig3": (
-        f"Concave flux u(1-u)/2 from the Laplace law: (a) {STICKY['fig3']['trajectory_particles']} trajectories, (b) u(t, x), (c) profiles at t = {listing(STICKY['fig3']['profile_times'])} with the exact solution, (d) log L1 error against p, t = {listing(STICKY['fig3']['error_times'])}: plateau, then log(n)/n decay."
-    ),
-    "fig4": (
-        f"p-system, w0+ >= w0- (x0 = {RAREFACTION['x0']}): MSPD trajectories by the iterated TSPD (Delta = {RAREFACTION['delta']}), {RAREFACTION['trajectory_particles']} particles per type; no same-type collision."
-    ),
-    "fig5": (
-        f"p-system, w0+ >= w0-: w-, w+, specific volume u and velocity v in the space-time plane (n = {RAREFACTION['field_particles']} per type, Delta = {RAREFACTION['delta']})."
-    ),
-    "fig6": (
-        f"p-system with shocks (x0 = {SHOCKS['x0']}, w0+ = 1{{x >= 0}}): trajectories, {SHOCKS['trajectory_particles']} per type (Delta = {SHOCKS['delta']}); the + cluster forms, then breaks up after crossing."
-    ),
-    "fig7": (
-        f"p-system with shocks: w-, w+, u and v in the space-time plane (n = {SHOCKS['field_particles']} per type, Delta = {SHOCKS['delta']})."
-    ),
-    "beyond_limits": (
-        f"Beyond the paper, p-system at t = {STICKY['beyond']['t']}: (a, b) w- and w+ of the exact MSPD (n = {STICKY['beyond']['limit_n'][-1]} per type), the conservative HLL scheme and the upwind scheme for (1.7) ({STICKY['beyond']['reference_cells']} cells), rarefaction and shock cases; (c) W1 distance of the exact MSPD to both schemes against n, with each reference's distance to its half-resolution run."
-    ),
-    "beyond_cost": (
-        "Beyond the paper, the cost argument of section 5.2: error against operation count (top) and wall time (bottom); SPD and Godunov on the scalar cases of Figures 2 and 3, iterated TSPD (L = n), exact MSPD and upwind scheme for (1.7) on the two p-system cases. Dotted: error proportional to work^-1 (steep) and work^-1/2."
-    ),
-}
-
-
-# Figures 4-7 show two p-system runs: figure -> (case, panel kind).
-PSYSTEM_FIGURES = {
-    "fig4": ("rarefaction", "trajectories"),
-    "fig5": ("rarefaction", "fields"),
-    "fig6": ("shocks", "trajectories"),
-    "fig7": ("shocks", "fields"),
-}
-STICKY_FIGURES = expand(
-    "figures/sticky/{name}.{ext}",
-    name=[f"fig{number}" for number in range(1, 8)] + ["beyond_limits", "beyond_cost"],
-    ext=["pdf", "png"],
-)
-
-
-rule sticky_fig1:
-    """Figure 1: one iteration of the hull algorithm on a small random example."""
-    input:
-        code=imports("sticky/plot_fig1.py"),
-    output:
-        **figure("figures/sticky/fig1"),
-    log:
-        "logs/sticky/fig1.log",
-    benchmark:
-        "logs/benchmarks/sticky_fig1.tsv"
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        caption=caption(STICKY_CAPTIONS, "fig1"),
-        cfg=STICKY["fig1"],
-    script:
-        "../scripts/sticky/plot_fig1.py"
+STICKY_FIGURES = registry.figure_outputs("sticky")
 
 
 rule sticky_scalar_data:
@@ -88,29 +25,6 @@ rule sticky_scalar_data:
         "../scripts/sticky/scalar_data.py"
 
 
-rule sticky_scalar_figure:
-    """Figures 2 and 3: plot panels (a)-(d) from the cached results."""
-    input:
-        data="results/sticky/{figure}.npz",
-        code=imports("sticky/plot_scalar.py"),
-    output:
-        **figure("figures/sticky/{figure}"),
-    log:
-        "logs/sticky/{figure}_plot.log",
-    benchmark:
-        "logs/benchmarks/sticky_scalar_figure_{figure}.tsv"
-    wildcard_constraints:
-        figure="fig2|fig3",
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        caption=caption(STICKY_CAPTIONS),
-        case=lambda wildcards: STICKY[wildcards.figure]["case"],
-    script:
-        "../scripts/sticky/plot_scalar.py"
-
-
 rule sticky_psystem_data:
     """Figures 4-7: iterated TSPD for the p-system, trajectories and space-time fields."""
     input:
@@ -131,31 +45,6 @@ rule sticky_psystem_data:
         cfg=lambda wildcards: STICKY["psystem"][wildcards.case],
     script:
         "../scripts/sticky/psystem_data.py"
-
-
-rule sticky_psystem_figure:
-    """Figures 4 and 6 (trajectories), 5 and 7 (w-, w+, u, v) from the cached runs."""
-    input:
-        data=lambda wildcards: f"results/sticky/psystem_{PSYSTEM_FIGURES[wildcards.figure][0]}.npz",
-        code=imports("sticky/plot_psystem.py"),
-    output:
-        **figure("figures/sticky/{figure}"),
-    log:
-        "logs/sticky/{figure}_plot.log",
-    benchmark:
-        "logs/benchmarks/sticky_psystem_figure_{figure}.tsv"
-    wildcard_constraints:
-        figure="fig4|fig5|fig6|fig7",
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        caption=caption(STICKY_CAPTIONS),
-        case=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][0],
-        kind=lambda wildcards: PSYSTEM_FIGURES[wildcards.figure][1],
-        x0=lambda wildcards: STICKY["psystem"][PSYSTEM_FIGURES[wildcards.figure][0]]["x0"],
-    script:
-        "../scripts/sticky/plot_psystem.py"
 
 
 rule sticky_lemma21:
@@ -285,29 +174,6 @@ rule sticky_beyond:
         cfg=STICKY["beyond"],
     script:
         "../scripts/sticky/beyond_data.py"
-
-
-rule sticky_beyond_figure:
-    """Beyond the paper: the limits and the work-precision diagrams from the cached study."""
-    input:
-        data="results/sticky/beyond.npz",
-        code=imports("sticky/plot_beyond.py"),
-    output:
-        **figure("figures/sticky/{figure}"),
-    log:
-        "logs/sticky/{figure}_plot.log",
-    benchmark:
-        "logs/benchmarks/sticky_beyond_figure_{figure}.tsv"
-    wildcard_constraints:
-        figure="beyond_limits|beyond_cost",
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        caption=caption(STICKY_CAPTIONS),
-        cfg=STICKY["beyond"],
-    script:
-        "../scripts/sticky/plot_beyond.py"
 
 
 rule sticky_claims:

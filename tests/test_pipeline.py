@@ -10,17 +10,13 @@ from pathlib import Path
 import pytest
 import yaml
 
+from particle_replication import registry
 from particle_replication.claims import COLUMNS, KINDS, read_verdicts
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
-FIGURES = {"sticky": 7, "ltp": 8, "blob": 8}
-# Figures of our own studies beyond the papers
-OWN_FIGURES = {"sticky": ["beyond_limits", "beyond_cost"], "ltp": ["long_time", "nonaffine"],
-               "blob": ["repulsive", "fig4log"]}
-EXPECTED_FIGURES = [f"figures/{paper}/{name}.{ext}" for paper, count in FIGURES.items()
-                    for name in [*(f"fig{number}" for number in range(1, count + 1)), *OWN_FIGURES[paper]]
-                    for ext in ("pdf", "png")]
+# Every figure, from the registry; the notebooks show their paper's.
+EXPECTED_FIGURES = registry.figure_outputs()
 # Every claim of the quick run, with its expected verdict (`snakemake verify` checks them).
 EXPECTED_VERDICTS = read_verdicts(ROOT / "config" / "verdicts.yaml", "quick")
 # Claims whose measured values are timings, different on every run.
@@ -99,7 +95,9 @@ def test_one_paper_at_a_time(workdir, paper):
     planned = planned_rules(result)
     others = {"sticky", "ltp", "blob"} - {paper}
     assert f"{paper}_claims" in planned and "notebook" in planned
-    assert not any(rule.startswith(tuple(f"{other}_" for other in others)) for rule in planned), planned
+    foreign = tuple(f"{prefix}{other}_" for other in others for prefix in ("", "plot_"))
+    assert not any(rule.startswith(foreign) for rule in planned), planned
+    assert f"plot_{paper}_fig1" in planned
 
 
 def test_every_figure_is_built(workdir):
@@ -112,15 +110,15 @@ def test_every_figure_is_built(workdir):
 def test_every_notebook_runs_on_the_quick_results(workdir):
     import json
 
-    for paper, count in FIGURES.items():
-        notebook = json.loads((workdir / "notebooks" / "executed" / f"{paper}.ipynb").read_text())
+    for paper in registry.PAPERS.values():
+        notebook = json.loads((workdir / "notebooks" / "executed" / f"{paper.id}.ipynb").read_text())
         code = [cell for cell in notebook["cells"] if cell["cell_type"] == "code"]
-        assert not any(o.get("output_type") == "error" for cell in code for o in cell["outputs"]), paper
+        assert not any(o.get("output_type") == "error" for cell in code for o in cell["outputs"]), paper.id
         images = [o for cell in code for o in cell["outputs"] if "image/png" in o.get("data", {})]
         plots = [cell for cell in code if "plt.show()" in "".join(cell["source"])]
-        # every figure of the paper, every figure of our own studies and every plot
-        assert len(images) == count + len(OWN_FIGURES[paper]) + len(plots), paper
-        assert any("text/markdown" in o.get("data", {}) for cell in code for o in cell["outputs"]), paper
+        # every figure of the paper and of our own studies (the registry's), and every plot
+        assert len(images) == len(paper.figures) + len(plots), paper.id
+        assert any("text/markdown" in o.get("data", {}) for cell in code for o in cell["outputs"]), paper.id
 
 
 def test_measured_values_match_the_last_build(workdir):

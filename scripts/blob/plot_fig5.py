@@ -42,5 +42,5 @@ def run(d, t, output):
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(load_results(snakemake.input.data), float(snakemake.config["blob"]["fig5"]["t"]),  # noqa: F821
+    run(load_results(snakemake.input.data), float(snakemake.params.t),  # noqa: F821
         snakemake.output)  # noqa: F821

@@ -141,5 +141,5 @@ def run(d, shown, cfg, output):
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(load_results(snakemake.input.data), snakemake.params.shown,  # noqa: F821
-        snakemake.config["blob"]["fig6"], snakemake.output)  # noqa: F821
+    cfg = snakemake.params.cfg  # noqa: F821
+    run(load_results(snakemake.input.data), cfg["top"]["trajectories"], cfg, snakemake.output)  # noqa: F821

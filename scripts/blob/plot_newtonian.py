@@ -86,4 +86,4 @@ def run(d, title, error_t, output):
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     run(load_results(snakemake.input.data), snakemake.params.title,  # noqa: F821
-        float(snakemake.config["blob"][snakemake.wildcards.figure]["error_t"]), snakemake.output)  # noqa: F821
+        float(snakemake.params.error_t), snakemake.output)  # noqa: F821

@@ -53,5 +53,5 @@ def run(d, p, figure, output):
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(load_results(snakemake.input.data), snakemake.params.cfg, snakemake.wildcards.figure,  # noqa: F821
+    run(load_results(snakemake.input.data), snakemake.params.cfg, snakemake.params.figure,  # noqa: F821
         snakemake.output)  # noqa: F821

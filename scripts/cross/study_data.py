@@ -13,7 +13,7 @@ import numpy as np
 
 from particle_methods.cross import distances, methods
 from particle_methods.cross.exact import AggregationSolution
-from particle_replication.workflow import logged, progress, save_results, timed
+from particle_replication.workflow import load_results, logged, progress, save_results, timed
 
 
 def count(output) -> int:
@@ -127,7 +127,7 @@ def errors(p, output):
 
 def times(p, errors_path, output):
     """Every run timed (after a warm-up per method, data and time), merged with the errors."""
-    results = dict(np.load(errors_path))
+    results = load_results(errors_path)
     seconds = []
     for _, data, _, t, _, name, sizes, method, _ in runs(p):
         method(data, sizes[0], t)  # warm-up: compile and fill caches

@@ -27,7 +27,7 @@ from particle_methods.sticky.mspd import mspd_positions
 from particle_methods.sticky.multitype_events import mspd_exact
 from particle_methods.sticky.spd import spd_positions
 from particle_methods.systems import PSystem
-from particle_replication.workflow import logged, progress, save_results, timed
+from particle_replication.workflow import load_results, logged, progress, save_results, timed
 
 FLUXES = {"burgers_two_atoms": BURGERS, "concave_laplace": CONCAVE}
 PSYSTEM_CASES = ("rarefaction", "shocks")
@@ -63,7 +63,7 @@ def scalar_study(name, p, repeats):
 def run(system_params, cases, p, limits, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
     t, cfl, repeats = p["t"], p["cfl"], p["repeats"]
-    limits = dict(np.load(limits))
+    limits = load_results(limits)
     results = {}
     for name in PSYSTEM_CASES:
         x0 = cases[name]["x0"]

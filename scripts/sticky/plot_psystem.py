@@ -4,11 +4,6 @@ from particle_methods.systems import MINUS, PLUS
 from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
-CASE_TITLES = {
-    "rarefaction": "p-system, w0+ >= w0- (x0 = {x0:g})",
-    "shocks": "p-system with shocks, w0+ = 1{{x >= 0}} (x0 = {x0:g})",
-}
-
 
 def trajectories(d, title, output):
     fig, ax = new_figure(1, 1, width=7, height=5.5)
@@ -47,5 +42,5 @@ def fields(d, title, output):
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     data = load_results(snakemake.input.data)  # noqa: F821
-    heading = CASE_TITLES[snakemake.params.case].format(x0=snakemake.params.x0)  # noqa: F821
-    {"trajectories": trajectories, "fields": fields}[snakemake.params.kind](data, heading, snakemake.output)  # noqa: F821
+    draw = {"trajectories": trajectories, "fields": fields}[snakemake.params.kind]  # noqa: F821
+    draw(data, snakemake.params.title, snakemake.output)  # noqa: F821

@@ -6,13 +6,8 @@ import numpy as np
 from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
-TITLES = {
-    "burgers_two_atoms": r"Burgers equation (5.1) from $(\delta_{-1} + \delta_1)/2$",
-    "concave_laplace": "concave flux $u(1-u)/2$ (5.3) from the Laplace law (5.4)",
-}
 
-
-def run(d, case, output):
+def run(d, case, title, output):
     fig, axes = new_figure(2, 2, width=11, height=8.5)
     ax = axes[0, 0]
     ax.plot(d["trajectories"], d["trajectory_times"], color="C0", lw=0.8)
@@ -53,9 +48,10 @@ def run(d, case, output):
         ax.legend(loc="lower left")
     ax.set(xlabel="p  (n = 2^p particles)", ylabel="log L1 error")
     label_panel(ax, "(d) L1 error of the SPD")
-    suptitle(fig, TITLES[case])
+    suptitle(fig, title)
     save_figure(fig, output.pdf, output.png)
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(load_results(snakemake.input.data), snakemake.params.case, snakemake.output)  # noqa: F821
+    run(load_results(snakemake.input.data), snakemake.params.case, snakemake.params.title,  # noqa: F821
+        snakemake.output)  # noqa: F821

@@ -24,10 +24,15 @@ def paper_claims(paper: str) -> list[Claim]:
     return read_claims(RESULTS / paper / "claims.csv")
 
 
-def show_figure(paper: str, number: int) -> None:
-    """Display figure ``number`` of ``paper`` and the table of the claims checked on it."""
-    display(Image(filename=str(FIGURES / paper / f"fig{number}.png")))
-    claims = [claim for claim in paper_claims(paper) if number in figures_of(claim)]
+def show_figure(paper: str, figure: int | str) -> None:
+    """Display a figure of ``paper``, by the paper's number (``2`` for ``fig2``) or by its name in
+    the registry (``"long_time"``), and the table of the claims checked on a numbered figure."""
+    if isinstance(figure, bool) or not isinstance(figure, int | str):
+        raise TypeError(f"figure must be a figure number or name, got {figure!r}")
+    display(Image(filename=str(FIGURES / paper / (f"fig{figure}" if isinstance(figure, int) else figure)) + ".png"))
+    if not isinstance(figure, int):
+        return
+    claims = [claim for claim in paper_claims(paper) if figure in figures_of(claim)]
     if claims:
         display(Markdown(markdown_table(claims, heading=False)))
 

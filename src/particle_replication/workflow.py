@@ -14,6 +14,8 @@ import numpy as np
 
 from particle_methods.threads import available, use_threads
 
+from .registry.results import result
+
 
 @contextlib.contextmanager
 def logged(log_path, threads: int = 1):
@@ -59,7 +61,9 @@ def timed(function, repeats: int):
 
 def save_results(path, **arrays) -> None:
     """Write ``arrays`` to an ``.npz`` file through a temporary name, so that an
-    interrupted run never leaves a truncated result behind."""
+    interrupted run never leaves a truncated result behind. A file the registry knows
+    (:mod:`particle_replication.registry.results`) must hold exactly its declared keys."""
+    _check_keys(path, arrays)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(path.name + ".tmp")
@@ -73,9 +77,17 @@ def save_results(path, **arrays) -> None:
 
 
 def load_results(path) -> dict:
-    """Load an ``.npz`` result file into a plain dictionary of arrays."""
+    """Load an ``.npz`` result file into a plain dictionary of arrays, checking a registered
+    file's keys against the registry (a file written by older code fails here, not later)."""
     with np.load(path) as data:
+        _check_keys(path, data.files)
         return {key: data[key] for key in data.files}
+
+
+def _check_keys(path, keys) -> None:
+    entry = result(path)
+    if entry is not None:
+        entry.check_keys(keys)
 
 
 def module_dependencies(script, package_dirs) -> list[str]:

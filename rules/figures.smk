@@ -1,0 +1,55 @@
+"""Every figure's plot rule, generated from the registry (particle_replication.registry): one rule
+per plot job, named plot_<paper>_<figures>, reading the registered result files and drawing the
+registered figures with their captions and titles."""
+
+
+def figure_outputs(paper, plot):
+    """PDF and PNG of each figure of a plot job (``pdf``/``png``, or ``<figure>_pdf``/``<figure>_png``
+    for a job that draws several); each PNG goes to the Snakemake report with its caption."""
+    outputs = {}
+    for entry in plot.figures:
+        prefix = "" if len(plot.figures) == 1 else f"{entry.name}_"
+        path = f"figures/{paper.id}/{entry.name}"
+        outputs[f"{prefix}pdf"] = f"{path}.pdf"
+        outputs[f"{prefix}png"] = report(
+            f"{path}.png", caption=CAPTION, category=paper.id, subcategory=entry.name
+        )
+    return outputs
+
+
+def plot_parameters(paper, plot):
+    """The plot job's params: the captions (for the report), the figure's name and title when it
+    draws one figure, and the job's own parameters from the paper's section of the config."""
+    section = config[paper.id]
+    parameters = {"caption": " ".join(rst(entry.caption(section)) for entry in plot.figures)}
+    if len(plot.figures) == 1:
+        parameters["figure"] = plot.figures[0].name
+        if plot.figures[0].title is not None:
+            parameters["title"] = plot.figures[0].title(section)
+    return {**parameters, **plot.params(section)}
+
+
+for paper in registry.PAPERS.values():
+    for plot in paper.plots:
+
+        rule:
+            name:
+                plot.rule(paper.id)
+            input:
+                **plot.data,
+                code=imports(f"{paper.id}/{plot.script}"),
+            output:
+                **figure_outputs(paper, plot),
+            log:
+                f"logs/{paper.id}/{'_'.join(plot.names)}_plot.log",
+            benchmark:
+                f"logs/benchmarks/{plot.rule(paper.id)}.tsv"
+            conda:
+                ENVIRONMENT
+            threads: 1
+            params:
+                **plot_parameters(paper, plot),
+                script=f"{paper.id}/{plot.script}",
+            script:
+                # Formatted when the job runs (a loop variable here would be the loop's last value then).
+                "../scripts/{params.script}"

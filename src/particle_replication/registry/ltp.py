@@ -1,0 +1,143 @@
+"""Campos Pinto, Carrillo, Charles and Choi, linearly transformed particles: Figures 1-8 and our
+long-time and non-affine studies."""
+
+from .records import Figure, Paper, Plot, listing, power
+
+
+def _rows(name, label, formula, parameter):
+    return Plot(
+        "plot_rows.py",
+        (
+            Figure(
+                name,
+                label,
+                lambda s: (
+                    f"W = {formula} from (6.2), {parameter} = {listing(case[parameter] for case in s[name]['cases'])}, "
+                    f"h = {s[name]['h']}, {s[name]['steps']} steps: potential, density, velocity and particle sizes."
+                ),
+                lambda s: f"LTP, W = {formula} from (6.2), h = {s[name]['h']}, {s[name]['steps']} steps",
+            ),
+        ),
+        data={"data": f"results/ltp/{name}.npz"},
+    )
+
+
+PAPER = Paper(
+    id="ltp",
+    plots=(
+        Plot(
+            "plot_fig1.py",
+            (
+                Figure(
+                    "fig1",
+                    "hat shape and its bi-orthogonal kernel",
+                    lambda s: "The hat shape function (2.12) and its bi-orthogonal kernel (dotted).",
+                ),
+            ),
+            params=lambda s: {"cfg": s["fig1"]},
+        ),
+        Plot(
+            "plot_quadratic.py",
+            (
+                Figure(
+                    "fig2",
+                    "exact vs LTP, errors vs h, SP with several eps",
+                    lambda s: (
+                        f"W = x^2 from (6.1), t = {s['quadratic']['t']}: exact against LTP densities for several "
+                        f"h; LTP L1 and Linf errors against h; SP densities with h = {s['quadratic']['sp_h']} and "
+                        f"fixed widths eps."
+                    ),
+                ),
+                Figure(
+                    "fig3",
+                    "SP errors over eps; SP and LTP errors vs h",
+                    lambda s: (
+                        f"SP against LTP errors, W = x^2: (a) SP errors over eps with the LTP error as reference "
+                        f"(h = {s['quadratic']['eps_scan']['h']}, dt = {s['quadratic']['eps_scan']['dt']}); (b) "
+                        f"errors against h with eps = h (dt = {s['quadratic']['dt']})."
+                    ),
+                ),
+            ),
+            data={"data": "results/ltp/quadratic.npz"},
+        ),
+        Plot(
+            "plot_fig4.py",
+            (
+                Figure(
+                    "fig4",
+                    "exact, LTP, SP with hat and B3 shapes",
+                    lambda s: (
+                        f"W = x^2/2 from (6.1), h = {s['fig4']['h']}, dt = {s['fig4']['dt']}: exact, LTP and SP "
+                        f"densities with hat (left) and B3 (right) shapes."
+                    ),
+                ),
+            ),
+            data={"data": "results/ltp/fig4.npz"},
+        ),
+        _rows("fig5", "abs(x)^a/a, a = 1.5, 2.5 (four rows)", "|x|^a/a", "a"),
+        _rows("fig6", "abs(x)^3/3 - abs(x)^b/b, b = 1.1, 1.5, 2.5", "|x|^3/3 - |x|^b/b", "b"),
+        Plot(
+            "plot_fig7.py",
+            (
+                Figure(
+                    "fig7",
+                    "density snapshots from (6.3)",
+                    lambda s: (
+                        f"W = {power(s['fig7']['a'])} - {power(s['fig7']['b'])} from (6.3), {s['fig7']['steps']} "
+                        f"steps: density snapshots, concentrating on two points."
+                    ),
+                ),
+            ),
+            data={"data": "results/ltp/fig7.npz"},
+        ),
+        Plot(
+            "plot_fig8.py",
+            (
+                Figure(
+                    "fig8",
+                    "SP vs LTP at the paper's time and at the SP steady time, particle sizes",
+                    lambda s: (
+                        f"W = {power(s['fig8']['a'])} - {power(s['fig8']['b'])} from (6.2), h = {s['fig8']['h']}, "
+                        f"{s['fig8']['steps']} steps up to t = {s['fig8']['t']}: SP (eps = {s['fig8']['sp_eps']}) and "
+                        f"LTP densities at the paper's time and at the SP steady time, and particle sizes."
+                    ),
+                ),
+            ),
+            data={"data": "results/ltp/fig8.npz"},
+        ),
+        Plot(
+            "plot_long_time.py",
+            (
+                Figure(
+                    "long_time",
+                    "long-time measures of Figures 5-8",
+                    lambda s: (
+                        f"Long-time measures: the collapse measure of Figure 5, the concentration of Figures 6-7 up to "
+                        f"t = {s['fig6']['t_long']}, and the peaks of Figure 8 up to t = {s['fig8']['t_long']}."
+                    ),
+                    ours=True,
+                ),
+            ),
+            data={name: f"results/ltp/{name}.npz" for name in ("fig5", "fig6", "fig7", "fig8")},
+            params=lambda s: {"cfg": s},
+        ),
+        Plot(
+            "plot_nonaffine.py",
+            (
+                Figure(
+                    "nonaffine",
+                    "convergence on a non-affine flow, centre-of-mass drift",
+                    lambda s: (
+                        f"W = {power(s['nonaffine']['a'])} from (6.1), t = {s['nonaffine']['t']}, dt = "
+                        f"{s['nonaffine']['dt']}: LTP errors against h = {s['nonaffine']['reference_h']}; drift of the "
+                        f"centre of mass for W = {power(s['nonaffine']['centre_of_mass']['a'])} - "
+                        f"{power(s['nonaffine']['centre_of_mass']['b'])}."
+                    ),
+                    ours=True,
+                ),
+            ),
+            data={"data": "results/ltp/nonaffine.npz"},
+        ),
+    ),
+    notebook=("results/ltp/quadratic.npz", "results/ltp/fig5.npz"),
+)

@@ -1,0 +1,103 @@
+"""What the registry records: a figure, the plot job that draws it, a result file and its keys,
+a paper's whole entry. Captions, titles and plot parameters are functions of the paper's section
+of the configuration, so that a figure's text follows the values it was computed with."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from fnmatch import fnmatchcase
+
+Section = Mapping  # one paper's section of the configuration (config[paper])
+
+
+def _nothing(section: Section) -> dict:
+    return {}
+
+
+@dataclass(frozen=True)
+class Figure:
+    """One figure: ``figures/<paper>/<name>.{pdf,png}``.
+
+    ``label`` is the line of the README's figure map, ``caption`` the Snakemake report's caption,
+    ``title`` the figure's own heading (None when the plot script composes it from its data), and
+    ``ours`` marks a figure of our own studies, not of the paper.
+    """
+
+    name: str
+    label: str
+    caption: Callable[[Section], str]
+    title: Callable[[Section], str] | None = None
+    ours: bool = False
+
+
+@dataclass(frozen=True)
+class Plot:
+    """One plot job: ``scripts/<paper>/<script>`` draws ``figures`` from the result files ``data``
+    (input names to paths under the run's root), with ``params`` from the paper's section."""
+
+    script: str
+    figures: tuple[Figure, ...]
+    data: Mapping[str, str] = field(default_factory=dict)
+    params: Callable[[Section], dict] = _nothing
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(figure.name for figure in self.figures)
+
+    def rule(self, paper: str) -> str:
+        """Name of the generated Snakemake rule."""
+        return "_".join(["plot", paper, *self.names])
+
+
+@dataclass(frozen=True)
+class Result:
+    """One ``.npz`` result file: its path under the run's root (``results/<paper>/...``), the
+    script of ``scripts/<paper>/`` that writes it and its keys, as ``fnmatch`` patterns
+    (``case*_density``) where the config decides the names. The writer and every reader check the
+    file against these keys (:func:`check_keys`)."""
+
+    path: str
+    writer: str
+    keys: tuple[str, ...]
+
+    def check_keys(self, keys) -> None:
+        """Raise KeyError unless ``keys`` are exactly those declared: every key matches a pattern,
+        every plain name is present and every pattern matches at least one key."""
+        keys = set(keys)
+        stray = sorted(key for key in keys if not any(fnmatchcase(key, pattern) for pattern in self.keys))
+        missing = [pattern for pattern in self.keys if not any(fnmatchcase(key, pattern) for key in keys)]
+        if stray or missing:
+            raise KeyError(
+                f"{self.path}: keys not declared in the registry {stray}, declared keys "
+                f"missing {missing} (particle_replication.registry)"
+            )
+
+
+@dataclass(frozen=True)
+class Paper:
+    """A paper's entry: its plot jobs and the result files its notebook (``notebooks/<id>.py``)
+    reads besides its claims table."""
+
+    id: str
+    plots: tuple[Plot, ...]
+    notebook: tuple[str, ...]
+
+    @property
+    def figures(self) -> tuple[Figure, ...]:
+        return tuple(figure for plot in self.plots for figure in plot.figures)
+
+    def outputs(self) -> list[str]:
+        """Every figure file of the paper, PDF and PNG."""
+        return [f"figures/{self.id}/{figure.name}.{ext}" for figure in self.figures for ext in ("pdf", "png")]
+
+
+def listing(values) -> str:
+    """Values of a caption: all of them when few, else the first two, an ellipsis and the last."""
+    values = [f"{value:g}" for value in values]
+    return ", ".join(values if len(values) <= 4 else [*values[:2], "...", values[-1]])
+
+
+def power(exponent) -> str:
+    """|x|^a/a in a caption."""
+    return f"|x|^{exponent:g}/{exponent:g}"

@@ -1,0 +1,156 @@
+"""Jourdain and Reygner, sticky particle dynamics: Figures 1-7 and the study beyond the paper."""
+
+from .records import Figure, Paper, Plot, listing
+
+
+def _psystem(section, case):
+    return section["psystem"][case]
+
+
+def _rarefaction_title(s):
+    return f"p-system, w0+ >= w0- (x0 = {_psystem(s, 'rarefaction')['x0']:g})"
+
+
+def _shocks_title(s):
+    return f"p-system with shocks, w0+ = 1{{x >= 0}} (x0 = {_psystem(s, 'shocks')['x0']:g})"
+
+
+def _psystem_plot(name, label, case, kind, caption, title):
+    return Plot(
+        "plot_psystem.py",
+        (Figure(name, label, caption, title),),
+        data={"data": f"results/sticky/psystem_{case}.npz"},
+        params=lambda s: {"kind": kind},
+    )
+
+
+def _beyond_plot(name, label, caption):
+    return Plot(
+        "plot_beyond.py",
+        (Figure(name, label, caption, ours=True),),
+        data={"data": "results/sticky/beyond.npz"},
+        params=lambda s: {"cfg": s["beyond"]},
+    )
+
+
+PAPER = Paper(
+    id="sticky",
+    plots=(
+        Plot(
+            "plot_fig1.py",
+            (
+                Figure(
+                    "fig1",
+                    "one iteration of the hull algorithm",
+                    lambda s: (
+                        "One iteration of the Brenier-Grenier hull algorithm (section 5.1.1): the list L before the "
+                        "iteration, the removal of a concave corner, and L after it."
+                    ),
+                ),
+            ),
+            params=lambda s: {"cfg": s["fig1"]},
+        ),
+        *(
+            Plot(
+                "plot_scalar.py",
+                (Figure(name, label, caption, title),),
+                data={"data": f"results/sticky/{name}.npz"},
+                params=lambda s, name=name: {"case": s[name]["case"]},
+            )
+            for name, label, caption, title in (
+                (
+                    "fig2",
+                    "Burgers, two atoms (a-d)",
+                    lambda s: (
+                        f"Burgers equation from (delta_-1 + delta_1)/2: (a) trajectories of "
+                        f"{s['fig2']['trajectory_particles']} particles, (b) u(t, x), (c) profiles at t = "
+                        f"{listing(s['fig2']['profile_times'])} with the exact fans dashed, (d) log L1 error against "
+                        f"p for n = 2^p, t = {listing(s['fig2']['error_times'])}: slope -log 2."
+                    ),
+                    lambda s: r"Burgers equation (5.1) from $(\delta_{-1} + \delta_1)/2$",
+                ),
+                (
+                    "fig3",
+                    "concave flux, Laplace data (a-d)",
+                    lambda s: (
+                        f"Concave flux u(1-u)/2 from the Laplace law: (a) {s['fig3']['trajectory_particles']} "
+                        f"trajectories, (b) u(t, x), (c) profiles at t = {listing(s['fig3']['profile_times'])} with "
+                        f"the exact solution, (d) log L1 error against p, t = {listing(s['fig3']['error_times'])}: "
+                        f"plateau, then log(n)/n decay."
+                    ),
+                    lambda s: "concave flux $u(1-u)/2$ (5.3) from the Laplace law (5.4)",
+                ),
+            )
+        ),
+        _psystem_plot(
+            "fig4",
+            "MSPD trajectories, w0+ >= w0-",
+            "rarefaction",
+            "trajectories",
+            lambda s: (
+                f"p-system, w0+ >= w0- (x0 = {_psystem(s, 'rarefaction')['x0']}): MSPD trajectories by the "
+                f"iterated TSPD (Delta = {_psystem(s, 'rarefaction')['delta']}), "
+                f"{_psystem(s, 'rarefaction')['trajectory_particles']} particles per type; no same-type "
+                f"collision."
+            ),
+            _rarefaction_title,
+        ),
+        _psystem_plot(
+            "fig5",
+            "w-, w+, u, v, same case",
+            "rarefaction",
+            "fields",
+            lambda s: (
+                f"p-system, w0+ >= w0-: w-, w+, specific volume u and velocity v in the space-time plane "
+                f"(n = {_psystem(s, 'rarefaction')['field_particles']} per type, Delta = "
+                f"{_psystem(s, 'rarefaction')['delta']})."
+            ),
+            _rarefaction_title,
+        ),
+        _psystem_plot(
+            "fig6",
+            "MSPD trajectories with shocks",
+            "shocks",
+            "trajectories",
+            lambda s: (
+                f"p-system with shocks (x0 = {_psystem(s, 'shocks')['x0']}, w0+ = 1{{x >= 0}}): trajectories, "
+                f"{_psystem(s, 'shocks')['trajectory_particles']} per type (Delta = "
+                f"{_psystem(s, 'shocks')['delta']}); the + cluster forms, then breaks up after crossing."
+            ),
+            _shocks_title,
+        ),
+        _psystem_plot(
+            "fig7",
+            "w-, w+, u, v, same case",
+            "shocks",
+            "fields",
+            lambda s: (
+                f"p-system with shocks: w-, w+, u and v in the space-time plane (n = "
+                f"{_psystem(s, 'shocks')['field_particles']} per type, Delta = {_psystem(s, 'shocks')['delta']})."
+            ),
+            _shocks_title,
+        ),
+        _beyond_plot(
+            "beyond_limits",
+            "exact MSPD against conservative HLL and upwind (1.7)",
+            lambda s: (
+                f"Beyond the paper, p-system at t = {s['beyond']['t']}: (a, b) w- and w+ of the exact MSPD "
+                f"(n = {s['beyond']['limit_n'][-1]} per type), the conservative HLL scheme and the upwind scheme "
+                f"for (1.7) ({s['beyond']['reference_cells']} cells), rarefaction and shock cases; (c) W1 "
+                f"distance of the exact MSPD to both schemes against n, with each reference's distance to its "
+                f"half-resolution run."
+            ),
+        ),
+        _beyond_plot(
+            "beyond_cost",
+            "error against operations and wall time: SPD/Godunov, TSPD/exact MSPD/upwind",
+            lambda s: (
+                "Beyond the paper, the cost argument of section 5.2: error against operation count (top) and "
+                "wall time (bottom); SPD and Godunov on the scalar cases of Figures 2 and 3, iterated TSPD "
+                "(L = n), exact MSPD and upwind scheme for (1.7) on the two p-system cases. Dotted: error "
+                "proportional to work^-1 (steep) and work^-1/2."
+            ),
+        ),
+    ),
+    notebook=("results/sticky/fig2.npz", "results/sticky/fig3.npz"),
+)

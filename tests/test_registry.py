@@ -1,0 +1,90 @@
+"""The registry (particle_replication.registry) is the one list of figures and result files: the
+README's figure map, the report, the notebooks and the scripts agree with it, and the result
+files' keys are checked against it when written and read."""
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from particle_replication import registry
+from particle_replication.workflow import load_results, save_results
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+
+
+def test_readme_figure_map_is_the_generated_one():
+    readme = (ROOT / "README.md").read_text()
+    found = re.search(r"<!-- figure map:.*?-->\n(.*?)\n<!-- end of the figure map -->", readme, flags=re.DOTALL)
+    assert found, "README.md has lost the markers of its figure map"
+    assert found.group(1) == registry.figure_map(), "run `python -m particle_replication.registry` into README.md"
+
+
+def test_report_shows_every_registered_figure_once():
+    tex = (ROOT / "paper" / "ms.tex").read_text()
+    shown = re.findall(r"\\fig(?:\[[0-9.]+\])?\{([a-z]+/[a-z0-9_]+)\.pdf\}", tex)
+    registered = [f"{paper.id}/{figure.name}" for paper in registry.PAPERS.values() for figure in paper.figures]
+    assert sorted(shown) == sorted(registered)
+
+
+def test_every_notebook_shows_its_papers_figures():
+    for paper in registry.PAPERS.values():
+        notebook = (ROOT / "notebooks" / f"{paper.id}.py").read_text()
+        numbers = {int(n) for n in re.findall(rf'show_figure\("{paper.id}", (\d+)\)', notebook)}
+        numbers |= {int(n) for n in re.findall(r"for number in \((\d+(?:, \d+)*)\)", notebook) for n in n.split(", ")}
+        for figure in paper.figures:
+            numbered = re.fullmatch(r"fig(\d+)", figure.name)
+            assert (int(numbered.group(1)) in numbers) if numbered else (f'"{figure.name}"' in notebook), (
+                paper.id, figure.name)
+
+
+def test_scripts_captions_and_titles_exist_for_every_figure():
+    names = [(paper.id, figure.name) for paper in registry.PAPERS.values() for figure in paper.figures]
+    assert len(names) == len(set(names))
+    for paper in registry.PAPERS.values():
+        section = CONFIG[paper.id]
+        for plot in paper.plots:
+            assert (ROOT / "scripts" / paper.id / plot.script).is_file(), plot.script
+            assert set(plot.params(section)).isdisjoint({"caption", "figure", "title"})
+            for path in plot.data.values():
+                assert registry.result(path) is not None and registry.result(path).path == path, path
+            for figure in plot.figures:
+                assert figure.caption(section).endswith(".") and figure.label
+                assert figure.title is None or figure.title(section)
+    for entry in registry.RESULTS:
+        paper = entry.path.split("/")[1]
+        assert (ROOT / "scripts" / paper / entry.writer).is_file(), entry.writer
+
+
+def test_result_keys_are_checked_when_written_and_read(tmp_path):
+    entry = registry.result("results/ltp/fig7.npz")
+    arrays = {key: np.zeros(1) for key in entry.keys}
+    path = tmp_path / "results" / "ltp" / "fig7.npz"
+    save_results(path, **arrays)
+    assert set(load_results(path)) == set(entry.keys)
+    with pytest.raises(KeyError, match="declared keys missing \\['weights'\\]"):
+        save_results(path, **{key: value for key, value in arrays.items() if key != "weights"})
+    with pytest.raises(KeyError, match="not declared in the registry \\['spare'\\]"):
+        save_results(path, **arrays, spare=np.zeros(1))
+    np.savez(path, **{key: value for key, value in arrays.items() if key != "grid"})  # a file of older code
+    with pytest.raises(KeyError, match="grid"):
+        load_results(path)
+    save_results(tmp_path / "scratch.npz", anything=np.zeros(1))  # files the registry does not know: unchecked
+
+
+def test_patterns_need_a_match():
+    entry = registry.result("results/blob/fig5.npz")
+    arrays = {key.replace("*", "0"): np.zeros(1) for key in entry.keys}
+    entry.check_keys(arrays)
+    with pytest.raises(KeyError, match="case\\*_density"):
+        entry.check_keys({key: value for key, value in arrays.items() if key != "case0_density"})
+
+
+def test_figure_outputs():
+    assert registry.figure_outputs("ltp")[:2] == ["figures/ltp/fig1.pdf", "figures/ltp/fig1.png"]
+    assert len(registry.figure_outputs()) == 2 * sum(len(p.figures) for p in registry.PAPERS.values())
+    with pytest.raises(ValueError, match="paper"):
+        registry.figure_outputs("nope")
