@@ -232,8 +232,9 @@ def test_spd_error_growing_in_time_fails():
 
 def test_spd_not_exact_once_the_mass_has_collapsed_fails():
     def inexact(row):
+        # one particle (mass M/n, M = 2) left one grid step 2/n from the Dirac mass: W1 = 2M/n^2
         if row["method"] == "SPD, equal masses" and collapsed(row["data"], row["t"]):
-            row["error"] = 1e-9 / row["size"]
+            row["error"] = 4.0 / row["size"] ** 2
 
     claims = run_study(study(inexact))
     assert status(claims, "spd.collapse_exact") == "fail"

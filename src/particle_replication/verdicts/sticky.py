@@ -3,8 +3,10 @@
 Each function takes the arrays a data rule saved and the rules written in the config (windows,
 bands, tolerances), and returns claims; the tests feed them plausible wrong outcomes to show each
 verdict can fail. Tolerances follow from what a statement means: identities that hold in exact
-arithmetic get :data:`ROUNDING`; rates are decided on a window of the finest resolutions named in
-the config, and every fit is recorded with its pairwise and windowed slopes.
+arithmetic get the shared rounding tolerance :data:`particle_replication.claims.ROUNDING` times the
+scale of the quantity compared (1 for ratios and relative gaps; W1 and L1 distances are between
+probability measures on lengths of order 1: scale 1); rates are decided on a window of the finest
+resolutions named in the config, and every fit is recorded with its pairwise and windowed slopes.
 """
 
 from __future__ import annotations
@@ -23,9 +25,9 @@ from ..rates import Recorder, fit, order
 from ..steady import holds_from
 
 PAPER = "sticky"
-ROUNDING = 1e-9
-EXACT_DISTANCE = 1e-12
-"""An L1 distance this small between two solutions is rounding: they agree exactly."""
+#: Scale of the W1 and L1 distances compared with 0: unit mass on positions of order 1 (the atoms at -1
+#: and 1 of Figure 2, the Laplace law of Figure 3): a distance below ROUNDING times it is rounding.
+DISTANCE_SCALE = 1.0
 
 
 claim = functools.partial(c.claim, PAPER)
@@ -43,18 +45,18 @@ def burgers_claims(d, rates: Recorder, window: int):
               f"log L1 error against p (n = 2^p) has slope -log 2 for every t (order 1/n), fitted on the {window} "
               "largest n; worst line", -np.log(2), worst, 0.02),
         claim(c.at_least, "fig2d.ordering", "paper", "Figure 2 (d) caption", "2d",
-              "higher curves for larger t: smallest ratio error(t_next)/error(t) over all n", 1.0 + ROUNDING,
+              "higher curves for larger t: smallest ratio error(t_next)/error(t) over all n", 1.0 + c.ROUNDING,
               float(ratios.min()), published="> 1"),
         claim(c.at_most, "fig2d.no_initial_error", "check", "(2.1) with two atoms, section 5.1.2", "2d",
               "(2.1) puts n/2 particles on each atom for even n, so W1(m, mu_n) = 0: largest value over even n",
-              ROUNDING, float(np.abs(d["initial_errors"][even]).max()), published="0"),
+              c.ROUNDING * DISTANCE_SCALE, float(np.abs(d["initial_errors"][even]).max()), published="0"),
     ]
 
 
 def plateau_length(errors) -> int:
-    """Number of leading entries equal to the first one (relative gap <= ROUNDING)."""
+    """Number of leading entries equal to the first one (relative gap <= the rounding tolerance)."""
     errors = np.asarray(errors, dtype=float)
-    equal = np.abs(errors / errors[0] - 1.0) <= ROUNDING
+    equal = np.abs(errors / errors[0] - 1.0) <= c.ROUNDING
     return int(np.argmin(equal)) if not equal.all() else errors.size
 
 
@@ -68,7 +70,7 @@ def concave_claims(d, rates: Recorder, window: int, band):
         decreasing = bool(np.all(np.diff(row[length - 1:]) < 0))
         # The paper's reason for the plateau: every particle is in the shock, so the error is the
         # distance from u(t) to the step function.
-        at_step = length < 2 or abs(row[0] / heaviside - 1.0) <= ROUNDING
+        at_step = length < 2 or abs(row[0] / heaviside - 1.0) <= c.ROUNDING
         violations += (not decreasing) + (not at_step)
         if length >= 2 and length < row.size:  # a plateau and a decay, both inside the plotted range
             both += 1
@@ -109,7 +111,7 @@ def concave_claims(d, rates: Recorder, window: int, band):
               f"n = {', '.join(f'2^{int(np.log2(v))}' for v in rate_n)}, every t; the value farthest from the band's "
               "centre", lower, upper, c.farthest_from_centre(asymptotic, band), published="log(n)/n"),
         claim(c.at_most, "fig3d.ordering", "paper", "Figure 3 (d) caption", "3d",
-              "higher curves for smaller t: largest ratio error(t_next)/error(t) over all n", 1.0 + ROUNDING,
+              "higher curves for smaller t: largest ratio error(t_next)/error(t) over all n", 1.0 + c.ROUNDING,
               float(ratios.max()), published="<= 1"),
     ]
 
@@ -124,7 +126,7 @@ def theorem31_claims(burgers, concave):
         ratios.append((d["errors"][moving] / bound).max())
     return [claim(c.at_most, "thm31.bound", "paper", "Theorem 3.1", "2d, 3d",
                   "error <= W1(m, mu_0) + t L_LC / n: largest ratio error/bound over t > 0 in Figures 2 (d) and 3 (d)",
-                  1.0 + ROUNDING, float(max(ratios)), published="<= 1")]
+                  1.0 + c.ROUNDING, float(max(ratios)), published="<= 1")]
 
 
 def remark33_claims(d, rates: Recorder, window: int, order_min: float, convex_tolerance: float):
@@ -136,7 +138,8 @@ def remark33_claims(d, rates: Recorder, window: int, order_min: float, convex_to
     orders, exact = [], 0
     for n_, per_n in zip(d["godunov_n"], d["distances"]):
         for t_, row in zip(d["godunov_times"], per_n):
-            if row[-1] <= EXACT_DISTANCE:  # every particle in one stationary shock on a cell edge: no error to fit
+            # every particle in one stationary shock on a cell edge: exact to rounding, no error to fit
+            if row[-1] <= c.ROUNDING * DISTANCE_SCALE:
                 exact += 1
                 continue
             orders.append(rates.add(order(f"{PAPER}.remark33.concave", "dx", h, row, window, f"n = {n_}, t = {t_:g}")))
@@ -146,7 +149,7 @@ def remark33_claims(d, rates: Recorder, window: int, order_min: float, convex_to
     refined = pairwise_orders(1.0 / d["refined_cells"].astype(float), d["refined_distances"])
     return [
         claim(c.at_most, "remark33.dirac", "paper", "Remark 3.3", "Remark 3.3",
-              "Burgers from delta_0: error exactly t/(4n); largest relative gap", ROUNDING, float(dirac_gap),
+              "Burgers from delta_0: error exactly t/(4n); largest relative gap", c.ROUNDING, float(dirac_gap),
               published="t/(4n)"),
         claim(c.at_least, "remark33.concave", "paper", "Remark 3.3", "Remark 3.3",
               f"concave flux: the SPD is the entropy solution of the discretised data. L1 distance between a "
@@ -168,7 +171,7 @@ def remark33_claims(d, rates: Recorder, window: int, order_min: float, convex_to
         claim(c.at_most, "remark33.contraction", "derived", "Remark 3.3 with the L1 stability of Theorem 1.1",
               "Remark 3.3",
               "concave flux: the SPD error never exceeds the initial discretisation error; largest ratio over t > 0",
-              1.0 + ROUNDING, float(contraction), published="<= 1"),
+              1.0 + c.ROUNDING, float(contraction), published="<= 1"),
     ]
 
 
@@ -183,13 +186,13 @@ def lemma21_claims(d, rates: Recorder, window: int, weibull_band, growth_ratio: 
     out = [
         claim(c.at_most, "lemma21.iii", "paper", "Lemma 2.1 (iii)", "Lemma 2.1",
               f"W1(m, mu_n) <= (b - a)/(2n) for m on [a, b]; largest ratio over {', '.join(compact)}, even and odd n",
-              1.0 + ROUNDING, float(bound_ratio)),
+              1.0 + c.ROUNDING, float(bound_ratio)),
         claim(c.at_most, "lemma21.ii", "paper", "Lemma 2.1 (ii)", "Lemma 2.1",
               f"W1(m, mu_n) <= n^(-1/2) int sqrt(F(1 - F)); largest ratio over {len(sqrt_names)} measures",
               1.0 + 1e-6, float(ratio_ii)),
         claim(c.at_most, "lemma21.iv.uniform", "check", "Lemma 2.1 (iv)", "Lemma 2.1",
               "uniform law on [0, 1]: n W1 = 1/4 exactly for every n (an identity, a check of the W1 computation); "
-              "largest relative gap", ROUNDING, float(np.abs(n_values * d["uniform"] / 0.25 - 1.0).max()),
+              "largest relative gap", c.ROUNDING, float(np.abs(n_values * d["uniform"] / 0.25 - 1.0).max()),
               published="1/4"),
     ]
     for name in [m for m in compact if m.startswith("exponential_")]:
@@ -303,7 +306,7 @@ def plus_cluster_threshold(system, n: int) -> int:
         levels = np.column_stack([np.full(n + 1, k / n), np.arange(n + 1) / n])
         velocities = n * np.diff(system.speed_primitive(PLUS, levels))
         prefix = np.cumsum(velocities) / np.arange(1, n + 1)
-        return bool(np.all(prefix[:-1] >= velocities.mean() - 1e-12 * np.abs(velocities).max()))
+        return bool(np.all(prefix[:-1] >= velocities.mean() - c.ROUNDING * np.abs(velocities).max()))
 
     holding = [k for k in range(n + 1) if holds(k)]
     return n - min(holding) + 1
