@@ -457,6 +457,13 @@ def test_early_refusal_explained_by_the_edge_particle_passes_and_other_causes_fa
     assert behaviour_status(early, "ltp.edge_collapse") == "pass"
     assert behaviour_status(early | {"ltp_peak_position": np.zeros(edge.size)}, "ltp.edge_collapse") == "fail"
     assert behaviour_status(early | {"ltp_peak_width": np.full(edge.size, 0.02)}, "ltp.edge_collapse") == "fail"
+    # the edge's neighbourhood and the largest width are the config's
+    proximity, width = RULES["edge_proximity"], RULES["edge_width"] * (1.0 - 0.98)
+    for position, expected in ((1.0 - 0.5 * proximity, "pass"), (1.0 - 2.0 * proximity, "fail")):
+        assert behaviour_status(early | {"ltp_peak_position": position * edge}, "ltp.edge_collapse") == expected
+    for factor, expected in ((0.9, "pass"), (1.1, "fail")):
+        peak_width = np.full(edge.size, factor * width)
+        assert behaviour_status(early | {"ltp_peak_width": peak_width}, "ltp.edge_collapse") == expected
 
 
 def test_time_to_error_does_not_extrapolate_a_cost_that_did_not_grow():

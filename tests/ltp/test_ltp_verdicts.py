@@ -18,6 +18,8 @@ from particle_replication.verdicts import ltp as v
 CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["ltp"]
 QUADRATIC, NONAFFINE = CONFIG["quadratic"], CONFIG["nonaffine"]
 FIG5, FIG8, CONCENTRATION = CONFIG["fig5"], CONFIG["fig8"], CONFIG["concentration"]
+RULES = CONFIG["claims"]  # the tolerances no figure's section holds, as the claims script passes them
+DT_ORDER = RULES["dt_order_band"]
 
 
 def status(claims, name):
@@ -76,46 +78,46 @@ def quadratic(power=2.0, sp_first=HOLES, sp_last=SMEARED, ltp_over_sp=None, coef
 
 
 def test_quadratic_claims_all_pass_on_second_order_errors_holes_and_smearing():
-    claims = v.quadratic_claims(quadratic(), quiet(), QUADRATIC)
+    claims = v.quadratic_claims(quadratic(), quiet(), QUADRATIC, RULES)
     assert not failing(claims)
 
 
 def test_fig2_order_half_fails_the_first_order_claims():
-    claims = v.quadratic_claims(quadratic(power=0.5), quiet(), QUADRATIC)
+    claims = v.quadratic_claims(quadratic(power=0.5), quiet(), QUADRATIC, RULES)
     assert status(claims, "fig2.order_l1") == "fail" and status(claims, "fig2.order_linf") == "fail"
 
 
 def test_fig2_first_order_passes_theorem_1_but_fails_the_affine_order_two():
-    claims = v.quadratic_claims(quadratic(power=1.1), quiet(), QUADRATIC)
+    claims = v.quadratic_claims(quadratic(power=1.1), quiet(), QUADRATIC, RULES)
     assert status(claims, "fig2.order_l1") == "pass" and status(claims, "fig2.order_linf") == "pass"
     assert status(claims, "fig2.affine_order_l1") == "fail" and status(claims, "fig2.affine_order_linf") == "fail"
 
 
 def test_fig2_order_three_fails_the_affine_order_two():
-    claims = v.quadratic_claims(quadratic(power=3.0), quiet(), QUADRATIC)
+    claims = v.quadratic_claims(quadratic(power=3.0), quiet(), QUADRATIC, RULES)
     assert status(claims, "fig2.affine_order_l1") == "fail" and status(claims, "fig2.affine_order_linf") == "fail"
 
 
 def test_fig2_smooth_sp_density_at_small_eps_has_no_holes():
-    claims = v.quadratic_claims(quadratic(sp_first=wobble(0.01)), quiet(), QUADRATIC)
+    claims = v.quadratic_claims(quadratic(sp_first=wobble(0.01)), quiet(), QUADRATIC, RULES)
     assert status(claims, "fig2.sp_holes") == "fail"
 
 
 def test_fig2_accurate_sp_density_at_large_eps_is_not_smeared():
-    claims = v.quadratic_claims(quadratic(sp_last=wobble(0.015)), quiet(), QUADRATIC)
+    claims = v.quadratic_claims(quadratic(sp_last=wobble(0.015)), quiet(), QUADRATIC, RULES)
     assert status(claims, "fig2.sp_smeared") == "fail"
 
 
 @pytest.mark.parametrize("index", [0, 2, 4])
 def test_fig3_ltp_above_sp_at_one_h_fails(index):
-    claims = v.quadratic_claims(quadratic(ltp_over_sp=(index, 1.2)), quiet(), QUADRATIC)
+    claims = v.quadratic_claims(quadratic(ltp_over_sp=(index, 1.2)), quiet(), QUADRATIC, RULES)
     assert status(claims, "fig3.ltp_below_sp") == "fail"
 
 
 def test_fig3_best_sp_check_fails_when_sp_beats_ltp_at_some_eps():
     data = quadratic()
     data["scan_sp"][5] = data["scan_ltp"] / 3
-    assert status(v.quadratic_claims(data, quiet(), QUADRATIC), "fig3.best_sp_l1") == "fail"
+    assert status(v.quadratic_claims(data, quiet(), QUADRATIC, RULES), "fig3.best_sp_l1") == "fail"
 
 
 @pytest.mark.parametrize("coefficient, expected", [
@@ -125,20 +127,20 @@ def test_fig3_best_sp_check_fails_when_sp_beats_ltp_at_some_eps():
     (lambda h: 1.0 + 1e-3 / h**2, "fail"),  # a dt term plus a dominant dt/h^2 term
 ])
 def test_thm1_time_error_coefficient_must_grow_at_most_like_one_over_h(coefficient, expected):
-    claims = v.dt_claims(time_gaps(coefficient), quiet())
+    claims = v.dt_claims(time_gaps(coefficient), quiet(), DT_ORDER)
     assert status(claims, "thm1.dt_over_h") == expected
     assert status(claims, "thm1.dt_order") == "pass"
 
 
 def test_thm1_time_error_exactly_dt_over_h_meets_the_bound():
-    assert status(v.dt_claims(time_gaps(lambda h: 0.3 / h), quiet()), "thm1.dt_over_h") == "pass"
+    assert status(v.dt_claims(time_gaps(lambda h: 0.3 / h), quiet(), DT_ORDER), "thm1.dt_over_h") == "pass"
 
 
 def test_thm1_dt_order_check_fails_for_a_second_order_time_error():
     data = time_gaps(lambda h: 1.0 + 0.01 / h)
     dt = data["dt_values"]
     data["dt_gaps"] = data["dt_gaps"] * (dt[:-1] - dt[-1])[None, :, None]
-    assert status(v.dt_claims(data, quiet()), "thm1.dt_order") == "fail"
+    assert status(v.dt_claims(data, quiet(), DT_ORDER), "thm1.dt_order") == "fail"
 
 
 # Non-affine flow
@@ -154,18 +156,18 @@ def nonaffine(power=1.3):
 
 
 def test_nonaffine_claims_pass_on_an_order_above_one():
-    assert not failing(v.nonaffine_claims(nonaffine(), quiet(), NONAFFINE))
+    assert not failing(v.nonaffine_claims(nonaffine(), quiet(), NONAFFINE, RULES))
 
 
 def test_nonaffine_order_half_fails():
-    claims = v.nonaffine_claims(nonaffine(power=0.5), quiet(), NONAFFINE)
+    claims = v.nonaffine_claims(nonaffine(power=0.5), quiet(), NONAFFINE, RULES)
     assert status(claims, "nonaffine.order_l1") == "fail" and status(claims, "nonaffine.order_linf") == "fail"
 
 
 def test_nonaffine_reference_check_fails_when_the_reference_is_as_far_as_the_errors():
     data = nonaffine()
     data["reference_gap"] = data["errors"][-1]
-    assert status(v.nonaffine_claims(data, quiet(), NONAFFINE), "nonaffine.reference") == "fail"
+    assert status(v.nonaffine_claims(data, quiet(), NONAFFINE, RULES), "nonaffine.reference") == "fail"
 
 
 # Figure 4: hat against B3 shapes
@@ -184,16 +186,16 @@ def fig4(hat_ratio=0.2, b3_ratio=0.6):
 
 
 def test_fig4_claims_pass_when_hat_gains_more_than_b3():
-    assert not failing(v.fig4_claims(fig4()))
+    assert not failing(v.fig4_claims(fig4(), RULES))
 
 
 def test_fig4_hat_ratio_above_half_fails():
-    claims = v.fig4_claims(fig4(hat_ratio=0.7, b3_ratio=0.9))
+    claims = v.fig4_claims(fig4(hat_ratio=0.7, b3_ratio=0.9), RULES)
     assert status(claims, "fig4.hat") == "fail" and status(claims, "fig4.hat_gain_larger") == "pass"
 
 
 def test_fig4_hat_gain_smaller_than_b3_fails():
-    claims = v.fig4_claims(fig4(hat_ratio=0.45, b3_ratio=0.4))
+    claims = v.fig4_claims(fig4(hat_ratio=0.45, b3_ratio=0.4), RULES)
     assert status(claims, "fig4.hat") == "pass" and status(claims, "fig4.hat_gain_larger") == "fail"
 
 
@@ -211,32 +213,32 @@ def fig5(small=lambda t: (2.0 - t) ** 2, large=lambda t: (1.0 + t) ** -2.0, cont
 
 
 def test_fig5_claims_pass_on_power_collapse_and_algebraic_shrinking():
-    assert not failing(v.fig5_claims(fig5(), FIG5))
+    assert not failing(v.fig5_claims(fig5(), FIG5, RULES))
 
 
 @pytest.mark.parametrize("small", [lambda t: np.exp(-t), lambda t: np.exp(-3.0 * t), lambda t: (1.0 + t) ** -2.0],
                          ids=["exp", "fast_exp", "algebraic"])
 def test_fig5_exponential_or_algebraic_shrinking_is_no_blowup(small):
-    assert status(v.fig5_claims(fig5(small=small), FIG5), "fig5.blowup_a1.5") == "fail"
+    assert status(v.fig5_claims(fig5(small=small), FIG5, RULES), "fig5.blowup_a1.5") == "fail"
 
 
 @pytest.mark.parametrize("large", [lambda t: (5.0 - t) ** 2, lambda t: 0.1 * (4.5 - t) ** 0.5],
                          ids=["square", "sqrt"])
 def test_fig5_finite_time_collapse_fails_no_blowup(large):
-    assert status(v.fig5_claims(fig5(large=large), FIG5), "fig5.no_blowup_a2.5") == "fail"
+    assert status(v.fig5_claims(fig5(large=large), FIG5, RULES), "fig5.no_blowup_a2.5") == "fail"
 
 
 def test_fig5_exponential_shrinking_of_the_a2_5_run_is_no_blowup():
-    assert status(v.fig5_claims(fig5(large=lambda t: np.exp(-t)), FIG5), "fig5.no_blowup_a2.5") == "pass"
+    assert status(v.fig5_claims(fig5(large=lambda t: np.exp(-t)), FIG5, RULES), "fig5.no_blowup_a2.5") == "pass"
 
 
 def test_fig5_centres_that_do_not_contract_fail_dirac():
-    assert status(v.fig5_claims(fig5(contraction=0.5), FIG5), "fig5.dirac") == "fail"
+    assert status(v.fig5_claims(fig5(contraction=0.5), FIG5, RULES), "fig5.dirac") == "fail"
 
 
 def test_fig5_collapse_time_check_fails_when_the_extrapolations_disagree():
     # s = (2 - t)^2 exp(-4 t^2): g bends, so the successive windows extrapolate to different times
-    claims = v.fig5_claims(fig5(small=lambda t: (2.0 - t) ** 2 * np.exp(-4.0 * t**2)), FIG5)
+    claims = v.fig5_claims(fig5(small=lambda t: (2.0 - t) ** 2 * np.exp(-4.0 * t**2)), FIG5, RULES)
     assert status(claims, "fig5.collapse_time_stable") == "fail"
 
 
@@ -266,40 +268,40 @@ def fig6(b25_widths=SHRINKING, b25_masses=GATHERING, b15_widths=SETTLING, b15_ma
 
 
 def test_fig6_claims_pass_on_dirac_masses_for_b2_5_and_a_steady_profile_for_b1_5():
-    assert not failing(v.fig6_claims(fig6(), CONCENTRATION))
+    assert not failing(v.fig6_claims(fig6(), CONCENTRATION, RULES))
 
 
 @pytest.mark.parametrize("widths", [SETTLING, SLOWING], ids=["settling", "algebraic"])
 def test_fig6_width_that_settles_or_slows_does_not_concentrate(widths):
-    assert status(v.fig6_claims(fig6(b25_widths=widths), CONCENTRATION), "fig6.b2.5_concentrates") == "fail"
+    assert status(v.fig6_claims(fig6(b25_widths=widths), CONCENTRATION, RULES), "fig6.b2.5_concentrates") == "fail"
 
 
 def test_fig6_l1_profile_mass_near_the_peaks_is_no_dirac_mass():
-    assert status(v.fig6_claims(fig6(b25_masses=SPREAD), CONCENTRATION), "fig6.b2.5_dirac_mass") == "fail"
+    assert status(v.fig6_claims(fig6(b25_masses=SPREAD), CONCENTRATION, RULES), "fig6.b2.5_dirac_mass") == "fail"
 
 
 def test_fig6_b1_5_width_still_shrinking_is_not_steady():
-    claims = v.fig6_claims(fig6(b15_widths=SHRINKING), CONCENTRATION)
+    claims = v.fig6_claims(fig6(b15_widths=SHRINKING), CONCENTRATION, RULES)
     assert status(claims, "fig6.b1.5_steady") == "fail"
     assert math.isinf(float([c for c in claims if c.id == "ltp.fig6.b1.5_steady"][0].measured))
 
 
 def test_fig6_b1_5_mass_gathering_near_the_peaks_is_no_l1_profile():
-    assert status(v.fig6_claims(fig6(b15_masses=GATHERING), CONCENTRATION), "fig6.b1.5_profile") == "fail"
+    assert status(v.fig6_claims(fig6(b15_masses=GATHERING), CONCENTRATION, RULES), "fig6.b1.5_profile") == "fail"
 
 
 def test_fig6_b1_5_profile_is_measured_at_its_steady_time():
     # mass gathers near the peaks only after the steady time: the profile claim looks at the steady time
     late = np.where(TIMES < 40.0, 0.1, 0.45)
-    assert status(v.fig6_claims(fig6(b15_masses=late), CONCENTRATION), "fig6.b1.5_profile") == "pass"
+    assert status(v.fig6_claims(fig6(b15_masses=late), CONCENTRATION, RULES), "fig6.b1.5_profile") == "pass"
 
 
 def test_fig6_b1_5_flat_profile_has_no_edge_growth():
-    assert status(v.fig6_claims(fig6(edge_ratio=1.0), CONCENTRATION), "fig6.b1.5_edges") == "fail"
+    assert status(v.fig6_claims(fig6(edge_ratio=1.0), CONCENTRATION, RULES), "fig6.b1.5_edges") == "fail"
 
 
 def test_fig6_equal_split_check_fails_on_unequal_masses():
-    claims = v.fig6_claims(fig6(b25_weights=(0.3, 0.3, 0.2, 0.2)), CONCENTRATION)
+    claims = v.fig6_claims(fig6(b25_weights=(0.3, 0.3, 0.2, 0.2)), CONCENTRATION, RULES)
     assert status(claims, "fig6.b2.5_equal_split") == "fail"
 
 
@@ -359,41 +361,41 @@ def test_fig8_densities_are_what_their_names_say():
 
 
 def test_fig8_claims_pass_on_steady_runs_with_sp_rippled_and_ltp_smooth():
-    assert not failing(v.fig8_claims(fig8(), FIG8))
+    assert not failing(v.fig8_claims(fig8(), FIG8, RULES))
 
 
 def test_fig8_sp_centres_that_keep_moving_are_not_steady():
-    assert status(v.fig8_claims(fig8(sp_centres=MOVING_CENTRES), FIG8), "fig8.sp_steady") == "fail"
+    assert status(v.fig8_claims(fig8(sp_centres=MOVING_CENTRES), FIG8, RULES), "fig8.sp_steady") == "fail"
 
 
 def test_fig8_ltp_centres_that_keep_moving_are_not_steady():
-    assert status(v.fig8_claims(fig8(ltp_centres=MOVING_CENTRES), FIG8), "fig8.ltp_steady") == "fail"
+    assert status(v.fig8_claims(fig8(ltp_centres=MOVING_CENTRES), FIG8, RULES), "fig8.ltp_steady") == "fail"
 
 
 def test_fig8_sp_without_ripples_does_not_oscillate():
-    assert status(v.fig8_claims(fig8(sp=[SMOOTH] * T8.size), FIG8), "fig8.sp_oscillates") == "fail"
+    assert status(v.fig8_claims(fig8(sp=[SMOOTH] * T8.size), FIG8, RULES), "fig8.sp_oscillates") == "fail"
 
 
 def test_fig8_sp_ripples_only_before_its_steady_time_do_not_count():
     sp = [OSCILLATING if t < 5.0 else SMOOTH for t in T8]
-    claims = v.fig8_claims(fig8(sp=sp), FIG8)
+    claims = v.fig8_claims(fig8(sp=sp), FIG8, RULES)
     assert status(claims, "fig8.sp_oscillates") == "fail" and status(claims, "fig8.sp_transient") == "fail"
 
 
 def test_fig8_ltp_with_ripples_is_not_smooth():
-    assert status(v.fig8_claims(fig8(ltp=[OSCILLATING] * T8.size), FIG8), "fig8.ltp_smooth") == "fail"
+    assert status(v.fig8_claims(fig8(ltp=[OSCILLATING] * T8.size), FIG8, RULES), "fig8.ltp_smooth") == "fail"
 
 
 def test_fig8_ltp_ripples_at_a_single_record_are_not_smooth():
     ltp = [SMOOTH] * T8.size
     ltp[30] = OSCILLATING
-    assert status(v.fig8_claims(fig8(ltp=ltp), FIG8), "fig8.ltp_smooth") == "fail"
+    assert status(v.fig8_claims(fig8(ltp=ltp), FIG8, RULES), "fig8.ltp_smooth") == "fail"
 
 
 def test_fig8_inf_steady_time_fails():
     data = fig8()
     data["sp_steady"] = data["ltp_steady"] = math.inf
-    claims = v.fig8_claims(data, FIG8)
+    claims = v.fig8_claims(data, FIG8, RULES)
     assert status(claims, "fig8.sp_steady") == "fail" and status(claims, "fig8.ltp_steady") == "fail"
 
 
@@ -410,8 +412,8 @@ COVERED = {
 
 
 def test_every_paper_and_derived_claim_has_a_failing_test_here():
-    claims = [*v.quadratic_claims(quadratic(), quiet(), QUADRATIC),
-              *v.nonaffine_claims(nonaffine(), quiet(), NONAFFINE), *v.fig4_claims(fig4()),
-              *v.fig5_claims(fig5(), FIG5), *v.fig6_claims(fig6(), CONCENTRATION),
-              *v.fig7_claims(fig7(), CONCENTRATION), *v.fig8_claims(fig8(), FIG8)]
+    claims = [*v.quadratic_claims(quadratic(), quiet(), QUADRATIC, RULES),
+              *v.nonaffine_claims(nonaffine(), quiet(), NONAFFINE, RULES), *v.fig4_claims(fig4(), RULES),
+              *v.fig5_claims(fig5(), FIG5, RULES), *v.fig6_claims(fig6(), CONCENTRATION, RULES),
+              *v.fig7_claims(fig7(), CONCENTRATION), *v.fig8_claims(fig8(), FIG8, RULES)]
     assert {claim.id.removeprefix("ltp.") for claim in claims if claim.kind in ("paper", "derived")} == COVERED

@@ -3,14 +3,18 @@ paper states and fails on a plausible wrong one (a rate without its log factor, 
 that never recovers, a cluster that splits at the wrong crossing, a quadratic cost)."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
+import yaml
 
 from particle_methods.systems import MINUS, PLUS, PSystem
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import sticky as v
 
+CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["sticky"]
+RULES = CONFIG["claims"]  # the tolerances no figure's section holds, as the claims script passes them
 N = 2.0 ** np.arange(1, 10)
 BAND = (0.25, 1.0)
 
@@ -28,16 +32,21 @@ def burgers(errors):
             "initial_errors": np.zeros(N.size), "flux_lipschitz": 1.0}
 
 
+def fig2d_claims(errors):
+    """The Figure 2 (d) claims on ``errors`` (nine n: the order fitted on all), with the config's tolerance."""
+    return v.burgers_claims(burgers(errors), quiet(), 9, RULES["order_tolerance"])
+
+
 @pytest.mark.parametrize("power, expected", [(1.0, "pass"), (0.5, "fail"), (2.0, "fail")])
 def test_fig2d_order_needs_order_one(power, expected):
     errors = np.array([t / 4 * N**-power for t in (10.0, 20.0)])
-    assert status(v.burgers_claims(burgers(errors), quiet(), 9), "fig2d.order") == expected
+    assert status(fig2d_claims(errors), "fig2d.order") == expected
 
 
 def test_fig2d_curves_must_be_ordered_by_time():
     errors = np.array([t / 4 / N for t in (10.0, 20.0)])
-    assert status(v.burgers_claims(burgers(errors), quiet(), 9), "fig2d.ordering") == "pass"
-    assert status(v.burgers_claims(burgers(errors[::-1]), quiet(), 9), "fig2d.ordering") == "fail"
+    assert status(fig2d_claims(errors), "fig2d.ordering") == "pass"
+    assert status(fig2d_claims(errors[::-1]), "fig2d.ordering") == "fail"
 
 
 def concave(shape):
@@ -149,22 +158,30 @@ def lemma21(exponential_limit=0.25, weibull=lambda n, a: (0.25 * np.log(n) ** (1
     return data
 
 
+def lemma21_claims(data):
+    """The Lemma 2.1 claims on ``data`` (six n: rates on the four largest), with the config's band, ratio
+    and tolerances."""
+    lemma21 = CONFIG["lemma21"]
+    return v.lemma21_claims(data, quiet(), 4, lemma21["weibull_band"], lemma21["heavy_tail"]["growth_ratio"],
+                            RULES["quadrature_margin"], RULES["positive_density_tolerance"], RULES["pareto_tolerance"])
+
+
 def test_lemma21_passes_on_the_stated_behaviour():
-    claims = v.lemma21_claims(lemma21(), quiet(), 4, (0.125, 0.5), 0.5)
+    claims = lemma21_claims(lemma21())
     assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims]
 
 
 @pytest.mark.parametrize("weibull", [lambda n, a: 1.0 / n, lambda n, a: np.log(n) ** (2 / a) / n])
 def test_lemma21_weibull_rates_need_their_log_factor(weibull):
-    claims = v.lemma21_claims(lemma21(weibull=weibull), quiet(), 4, (0.125, 0.5), 0.5)
+    claims = lemma21_claims(lemma21(weibull=weibull))
     assert status(claims, "lemma21.weibull_1") == "fail"
 
 
 def test_lemma21_iv_limit_and_i_growth_can_fail():
-    claims = v.lemma21_claims(lemma21(exponential_limit=0.5), quiet(), 4, (0.125, 0.5), 0.5)
+    claims = lemma21_claims(lemma21(exponential_limit=0.5))
     assert status(claims, "lemma21.iv.exponential_1") == "fail"
     finite_moment = lambda r: 0.2 - r ** -0.5  # noqa: E731  (a tail with alpha = 1.5 saturates)
-    claims = v.lemma21_claims(lemma21(heavy=finite_moment), quiet(), 4, (0.125, 0.5), 0.5)
+    claims = lemma21_claims(lemma21(heavy=finite_moment))
     assert status(claims, "lemma21.i.heavy_tail") == "fail"
 
 
@@ -173,7 +190,7 @@ def test_lemma21_bounds_and_pareto_rate_can_fail():
     data["uniform_odd"] = 0.6 / (data["odd_n"])  # above (b - a)/(2n)
     data["uniform"] = data["uniform"] * 8  # above n^(-1/2) int sqrt(F(1 - F)) at the largest n
     data["pareto_1.5"] = data["n_values"] ** -0.5  # the rate of a lighter tail than alpha = 1.5
-    claims = v.lemma21_claims(data, quiet(), 4, (0.125, 0.5), 0.5)
+    claims = lemma21_claims(data)
     assert [status(claims, name) for name in ("lemma21.iii", "lemma21.ii", "lemma21.pareto_1.5")] == ["fail"] * 3
 
 

@@ -352,17 +352,17 @@ def study_claims(d, rates: Recorder, p):
     return rows
 
 
-def edge_collapse(b) -> float:
+def edge_collapse(b, proximity: float) -> float:
     """Largest (width of the densest LTP particle at the refusal) / (exact (1 - t) h) over the data whose
     refusal (finest h) came more than one step early: the explanation of an early refusal. Infinite for
-    such data if that particle is not at the support's edge (within 10 % of its half-width): the
-    explanation does not hold there; 0 when no refusal came early (nothing to explain)."""
+    such data if that particle is not at the support's edge (within ``proximity`` times its half-width):
+    the explanation does not hold there; 0 when no refusal came early (nothing to explain)."""
     dt, refusal = b["ltp_dt"][-1], b["ltp_refusal"][:, -1]
     with np.errstate(invalid="ignore"):
         early = (1.0 - dt - refusal) / dt > 1.0 + c.ROUNDING
     if not np.any(early):
         return 0.0
-    at_edge = np.abs(b["ltp_peak_position"] - b["ltp_peak_edge"]) <= 0.1 * np.abs(b["ltp_peak_edge"])
+    at_edge = np.abs(b["ltp_peak_position"] - b["ltp_peak_edge"]) <= proximity * np.abs(b["ltp_peak_edge"])
     ratios = np.where(at_edge, b["ltp_peak_width"] / (1.0 - refusal), np.inf)
     return float(np.max(ratios[early]))
 
@@ -379,6 +379,7 @@ def behaviour_claims(b, p):
     refusal = b["ltp_refusal"]
     # LTP: rho_h at the centre follows the exact 1/(1 - t) (max rho0 = 1), so dt rho_h reaches 1 at t = 1 - dt.
     refusal_miss = np.abs(refusal - (1.0 - dt[None, :])) / dt[None, :]
+    rules = p["claims"]
     return [
         claim(
             c.at_most,
@@ -402,7 +403,7 @@ def behaviour_claims(b, p):
             "without the collision event DOP853 chatters past the collision (the "
             "velocities jump as particles cross and recross): right-hand sides per unit time after it over before "
             "it, smallest over data",
-            p["claims"]["stall_rate_min"],
+            rules["stall_rate_min"],
             float(np.min(rates)),
         ),
         claim(
@@ -426,8 +427,9 @@ def behaviour_claims(b, p):
             "why the refusal comes early where it does: at the refusal (finest h) "
             "the densest LTP particle sits at the edge of the support and is narrower than the exact flow's "
             "(1 - t) h: largest (its width / (1 - t) h) over the data refused more than a step early (infinite if "
-            "it is not within 10 % of the support's half-width from the edge; 0 if no refusal is early)",
-            0.5,
-            edge_collapse(b),
+            f"it is not within {100 * rules['edge_proximity']:g} % of the support's half-width from the edge; 0 if no "
+            "refusal is early)",
+            rules["edge_width"],
+            edge_collapse(b, rules["edge_proximity"]),
         ),
     ]
