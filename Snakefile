@@ -30,7 +30,7 @@ include: "rules/sticky.smk"
 include: "rules/ltp.smk"
 include: "rules/blob.smk"
 include: "rules/cross.smk"
-include: "rules/figures.smk"
+include: "rules/registry.smk"
 include: "rules/report.smk"
 
 

@@ -3,17 +3,6 @@
 BLOB = config["blob"]
 BLOB_FIGURES = registry.figure_outputs("blob")
 
-# Figure 4 (fig4) and the reading of its row label, K = -log|x|/(2 pi) (fig4log).
-BLOB_FIG4_STUDIES = {
-    "fig4": BLOB["fig4"],
-    "fig4log": {
-        **BLOB["fig4"],
-        **BLOB["fig4"]["log_reading"],
-        "kernels": ["log_repulsive"],
-        "diagnostic_q": None,
-    },
-}
-
 # Figure 5's runs in jobs: 1/h below FIG5_OWN_JOB together (up to 5,000 particles: 2 to 11 s), each finer grid
 # alone (20,000 particles and more: tens of seconds to minutes), in the order of the config's inverse_h.
 FIG5_OWN_JOB = 80
@@ -27,69 +16,6 @@ FIG5_GROUPS = {
 }
 # What one run reads from the config: a new grid step leaves the other runs alone.
 FIG5_RUN = {key: BLOB["fig5"][key] for key in ("kernel", "cases", "t", "q", "rtol", "atol")}
-
-
-rule blob_newtonian_data:
-    """Figures 1-3: blob or particle runs against exact solutions, errors against h."""
-    input:
-        code=imports("blob/newtonian_data.py"),
-    output:
-        "results/blob/{figure}.npz",
-    log:
-        "logs/blob/{figure}_data.log",
-    benchmark:
-        "logs/benchmarks/blob_newtonian_data_{figure}.tsv"
-    wildcard_constraints:
-        figure="fig1|fig2|fig3",
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        cfg=lambda wildcards: BLOB[wildcards.figure],
-    script:
-        "../scripts/blob/newtonian_data.py"
-
-
-rule blob_fig4_data:
-    """Figure 4: particle, m = 4 and m = 6 errors for two kernels; the same for the row label's kernel."""
-    input:
-        code=imports("blob/fig4_data.py"),
-    output:
-        "results/blob/{figure}.npz",
-    log:
-        "logs/blob/{figure}_data.log",
-    benchmark:
-        "logs/benchmarks/blob_fig4_data_{figure}.tsv"
-    wildcard_constraints:
-        figure="fig4|fig4log",
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        cfg=lambda wildcards: BLOB_FIG4_STUDIES[wildcards.figure],
-    script:
-        "../scripts/blob/fig4_data.py"
-
-
-rule blob_repulsive_data:
-    """Figure 4, K = -|x|/2: the density error split into quadrature and regularisation parts, and
-    the runs extended to finer h."""
-    input:
-        fig4="results/blob/fig4.npz",
-        code=imports("blob/repulsive_data.py"),
-    output:
-        "results/blob/repulsive.npz",
-    log:
-        "logs/blob/repulsive_data.log",
-    benchmark:
-        "logs/benchmarks/blob_repulsive_data.tsv"
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        cfg={**BLOB["fig4"], **BLOB["fig4"]["repulsive"]},
-    script:
-        "../scripts/blob/repulsive_data.py"
 
 
 rule blob_claims:
@@ -191,43 +117,3 @@ rule blob_fig5_orders:
         extended=source(ROOT / "runs" / "fig5-extended" / "results" / "blob" / "fig5.npz"),
     script:
         "../scripts/blob/fig5_orders.py"
-
-
-rule blob_fig6_data:
-    """Figure 6: 2D blob runs for the Newtonian, quadratic and cubic kernels."""
-    input:
-        code=imports("blob/fig6_data.py"),
-    output:
-        "results/blob/fig6.npz",
-    log:
-        "logs/blob/fig6_data.log",
-    benchmark:
-        "logs/benchmarks/blob_fig6_data.tsv"
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        cfg=BLOB["fig6"],
-    script:
-        "../scripts/blob/fig6_data.py"
-
-
-rule blob_compare_data:
-    """Figures 7 and 8: particle and blob runs for repulsive-attractive kernels in 2D."""
-    input:
-        code=imports("blob/compare_data.py"),
-    output:
-        "results/blob/{figure}.npz",
-    log:
-        "logs/blob/{figure}_data.log",
-    benchmark:
-        "logs/benchmarks/blob_compare_data_{figure}.tsv"
-    wildcard_constraints:
-        figure="fig7|fig8",
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        cfg=lambda wildcards: BLOB[wildcards.figure],
-    script:
-        "../scripts/blob/compare_data.py"

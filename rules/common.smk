@@ -13,6 +13,7 @@ ROOT = Path(workflow.basedir)
 PACKAGE = ROOT / "src" / "particle_methods"  # the numerics
 REPLICATION = ROOT / "src" / "particle_replication"  # claims, verdicts, the pipeline's support
 PACKAGES = [PACKAGE, REPLICATION]
+REGISTRY = (REPLICATION / "registry").resolve()  # names and texts, not code inputs (see imports)
 
 # Software of every rule under `--software-deployment-method conda`. Its post-deploy script
 # installs the package from this clone, which it finds through PARTICLE_METHODS_SOURCE: set
@@ -31,14 +32,25 @@ def source(path):
     return os.path.relpath(path)
 
 
+def code_inputs(path):
+    """Modules of the two packages that ``path`` imports, directly or through each other, but for
+    the registry (see :func:`imports`)."""
+    return [
+        source(module)
+        for module in module_dependencies(path, PACKAGES)
+        if not Path(module).is_relative_to(REGISTRY)
+    ]
+
+
 def imports(script):
     """Modules of the two packages that scripts/<script> imports, directly or through each other.
 
     Rules list them among their inputs, so editing a module reruns exactly the
     results computed with it; the list is read from the import statements, so it
-    cannot drift from the code.
+    cannot drift from the code. The registry is left out: what it gives a job reaches the
+    job as its params, inputs and script, which Snakemake tracks (see its docstring).
     """
-    return [source(path) for path in module_dependencies(ROOT / "scripts" / script, PACKAGES)]
+    return code_inputs(ROOT / "scripts" / script)
 
 
 CAPTION = str(ROOT / "report" / "caption.rst")

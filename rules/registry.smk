@@ -1,6 +1,6 @@
-"""Every figure's plot rule, generated from the registry (particle_replication.registry): one rule
-per plot job, named plot_<paper>_<figures>, reading the registered result files and drawing the
-registered figures with their captions and titles."""
+"""The rules generated from the registry (particle_replication.registry): one data rule per result
+file that has a job, named data_<paper>_<file>, and one plot rule per plot job, named
+plot_<paper>_<figures>, drawing the registered figures with their captions and titles."""
 
 
 def figure_outputs(paper, plot):
@@ -30,6 +30,32 @@ def plot_parameters(paper, plot):
 
 
 for paper in registry.PAPERS.values():
+    for entry in paper.results:
+        if entry.job is None:
+            continue
+
+        rule:
+            name:
+                entry.rule
+            input:
+                **entry.job.inputs,
+                code=imports(f"{paper.id}/{entry.writer}"),
+            output:
+                entry.path,
+            log:
+                f"logs/{paper.id}/{entry.rule.removeprefix(f'data_{paper.id}_')}_data.log",
+            benchmark:
+                f"logs/benchmarks/{entry.rule}.tsv"
+            conda:
+                ENVIRONMENT
+            threads: workflow.cores if entry.job.threads == "all" else entry.job.threads
+            params:
+                **entry.job.params(config[paper.id]),
+                script=f"{paper.id}/{entry.writer}",
+            script:
+                # Formatted when the job runs (a loop variable here would be the loop's last value then).
+                "../scripts/{params.script}"
+
     for plot in paper.plots:
 
         rule:

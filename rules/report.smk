@@ -70,10 +70,7 @@ rule notebook:
         source=source(ROOT / "notebooks" / "{paper}.py"),
         data=lambda wildcards: NOTEBOOK_INPUTS[wildcards.paper],
         figures=lambda wildcards: registry.figure_outputs(wildcards.paper),
-        code=lambda wildcards: [
-            source(path)
-            for path in module_dependencies(ROOT / "notebooks" / f"{wildcards.paper}.py", PACKAGES)
-        ],
+        code=lambda wildcards: code_inputs(ROOT / "notebooks" / f"{wildcards.paper}.py"),
     output:
         "notebooks/executed/{paper}.ipynb",
     log:

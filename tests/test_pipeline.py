@@ -199,7 +199,7 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     # run does only the unfinished part of the blob figures and nothing of the other studies.
     plan = planned_rules(snakemake(workdir, "--dry-run"))
     assert "plot_blob_fig8" in plan
-    assert plan <= {"blob_compare_data", "plot_blob_fig7", "plot_blob_fig8", "blob_claims", "claims_table",
+    assert plan <= {"data_blob_fig7", "data_blob_fig8", "plot_blob_fig7", "plot_blob_fig8", "blob_claims", "claims_table",
                     "report_snippets", "notebook", "manuscript", "all"}
     assert snakemake(workdir).returncode == 0
     resumed = snakemake(workdir, "--dry-run")
@@ -213,7 +213,7 @@ def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
     assert result.returncode == 0, result.stderr[-2000:]
     import shutil
 
-    expected = {"sticky_lemma21", "sticky_claims", "claims_table", "notebook", "all"}
+    expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "all"}
     if shutil.which("latexmk") and shutil.which("pdflatex"):  # the snippets are made for the report alone
         expected |= {"report_snippets", "manuscript"}
     assert planned_rules(result) == expected
@@ -279,7 +279,7 @@ def test_a_configuration_file_is_laid_over_the_full_one(tmp_path):
                              str(tmp_path), "--dry-run", "--configfile", str(path)], capture_output=True, text=True,
                             timeout=300)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "sticky_cost" in planned_rules(result)
+    assert "data_sticky_cost" in planned_rules(result)
 
 
 def test_a_forced_rerun_gives_an_identical_claims_table(workdir):

@@ -54,9 +54,25 @@ def test_scripts_captions_and_titles_exist_for_every_figure():
             for figure in plot.figures:
                 assert figure.caption(section).endswith(".") and figure.label
                 assert figure.title is None or figure.title(section)
-    for entry in registry.RESULTS:
-        paper = entry.path.split("/")[1]
-        assert (ROOT / "scripts" / paper / entry.writer).is_file(), entry.writer
+    for paper in registry.PAPERS.values():
+        produced = {entry.path for entry in paper.results}
+        for entry in paper.results:
+            assert entry.path.startswith(f"results/{paper.id}/"), entry.path
+            assert (ROOT / "scripts" / paper.id / entry.writer).is_file(), entry.writer
+            if entry.job is not None:
+                assert entry.job.about and entry.job.threads in (1, "all")
+                assert set(entry.job.inputs.values()) <= produced, entry.path
+                assert "script" not in entry.job.params(CONFIG[paper.id])
+    rules = [entry.rule for entry in registry.RESULTS if entry.job] + [
+        plot.rule(paper.id) for paper in registry.PAPERS.values() for plot in paper.plots]
+    assert len(rules) == len(set(rules))
+
+
+def test_the_registry_is_not_a_code_input_of_the_jobs():
+    """Its captions and parameters reach the jobs as params, which Snakemake tracks: editing a
+    caption must not rerun a computation (rules/common.smk leaves the registry out of `imports`)."""
+    common = (ROOT / "rules" / "common.smk").read_text()
+    assert 'REGISTRY = (REPLICATION / "registry")' in common and "is_relative_to(REGISTRY)" in common
 
 
 def test_result_keys_are_checked_when_written_and_read(tmp_path):

@@ -59,4 +59,4 @@ def run(case, system_params, p, output):
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(snakemake.wildcards.case, snakemake.params.system, snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+    run(snakemake.params.case, snakemake.params.system, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

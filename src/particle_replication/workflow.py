@@ -14,7 +14,7 @@ import numpy as np
 
 from particle_methods.threads import available, use_threads
 
-from .registry.results import result
+from .registry import result
 
 
 @contextlib.contextmanager
@@ -62,7 +62,7 @@ def timed(function, repeats: int):
 def save_results(path, **arrays) -> None:
     """Write ``arrays`` to an ``.npz`` file through a temporary name, so that an
     interrupted run never leaves a truncated result behind. A file the registry knows
-    (:mod:`particle_replication.registry.results`) must hold exactly its declared keys."""
+    (:mod:`particle_replication.registry`) must hold exactly its declared keys."""
     _check_keys(path, arrays)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)

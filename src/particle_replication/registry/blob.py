@@ -1,7 +1,7 @@
 """Craig and Bertozzi, the blob method: Figures 1-8 (1D and 2D), the reading of Figure 4's row
 label and the study of the repulsive density error."""
 
-from .records import Figure, Paper, Plot, listing
+from .records import Figure, Job, Paper, Plot, Result, listing
 
 
 def _newtonian(name, label, caption, title):
@@ -27,6 +27,164 @@ def _compare(name, label, kernels, title):
         data={"data": f"results/blob/{name}.npz"},
     )
 
+
+NEWTONIAN_KEYS = (
+    "times",
+    "positions",
+    "densities",
+    "exact_times",
+    "exact_paths",
+    "density_times",
+    "density_index",
+    "exact_densities",
+    "masses",
+    "energies",
+    "h_values",
+    "trajectory_errors",
+    "density_errors",
+    "evaluations",
+    "mass_defect",
+    "tight_errors",
+    "method",
+    "order",
+    "q",
+    "fit_points",
+    "zoom",
+    "h",
+)
+
+FIG4_KEYS = (
+    "h_values",
+    "kernels",
+    "fit_points",
+    "q",
+    "*_particle_trajectory",
+    "*_particle_density",
+    "*_blob4_trajectory",
+    "*_blob4_density",
+    "*_blob6_trajectory",
+    "*_blob6_density",
+    "*_reference_error",
+)
+
+COMPARE_KEYS = (
+    "h",
+    "delta",
+    "paper_tables",
+    "labels",
+    "case*_particle",
+    "case*_blob",
+    "case*_blob_paper_tables",
+    "case*_times",
+)
+
+
+def _fig4_study(s, name):
+    """Figure 4 (fig4), or the reading of its row label, K = -log|x|/(2 pi) (fig4log)."""
+    if name == "fig4":
+        return s["fig4"]
+    return {**s["fig4"], **s["fig4"]["log_reading"], "kernels": ["log_repulsive"], "diagnostic_q": None}
+
+
+def _newtonian_result(name):
+    return Result(
+        f"results/blob/{name}.npz",
+        "newtonian_data.py",
+        NEWTONIAN_KEYS,
+        Job(
+            "blob or particle runs against exact solutions, errors against h (Figures 1-3)", lambda s: {"cfg": s[name]}
+        ),
+    )
+
+
+def _fig4_result(name, extra=()):
+    return Result(
+        f"results/blob/{name}.npz",
+        "fig4_data.py",
+        (*FIG4_KEYS, *extra),
+        Job(
+            "particle, m = 4 and m = 6 errors for two kernels (Figure 4), or for the row label's kernel",
+            lambda s: {"cfg": _fig4_study(s, name)},
+        ),
+    )
+
+
+def _compare_result(name):
+    return Result(
+        f"results/blob/{name}.npz",
+        "compare_data.py",
+        COMPARE_KEYS,
+        Job("particle and blob runs for repulsive-attractive kernels in 2D (Figures 7, 8)", lambda s: {"cfg": s[name]}),
+    )
+
+
+RESULTS = (
+    _newtonian_result("fig1"),
+    _newtonian_result("fig2"),
+    _newtonian_result("fig3"),
+    _fig4_result("fig4", ("diagnostic_*",)),
+    _fig4_result("fig4log"),
+    Result(
+        "results/blob/repulsive.npz",
+        "repulsive_data.py",
+        (
+            "inverse_h",
+            "base_count",
+            "q",
+            "t",
+            "m*_total",
+            "m*_quadrature",
+            "m*_regularisation",
+            "m*_combined",
+            "jacobian",
+        ),
+        Job(
+            "Figure 4, K = -|x|/2: the density error split into quadrature and regularisation parts, the runs "
+            "extended to finer h",
+            lambda s: {"cfg": {**s["fig4"], **s["fig4"]["repulsive"]}},
+            inputs={"fig4": "results/blob/fig4.npz"},
+        ),
+    ),
+    # Figure 5's runs are grouped into jobs by grid size: their rules are in rules/blob.smk.
+    Result(
+        "results/blob/fig5/case*.npz",
+        "fig5_data.py",
+        ("label", "inverse_h", "trajectory", "density", "particles", "evaluations"),
+    ),
+    Result(
+        "results/blob/fig5.npz",
+        "fig5_merge.py",
+        (
+            "h_values",
+            "fit_points",
+            "q",
+            "labels",
+            "case*_trajectory",
+            "case*_density",
+            "case*_particles",
+            "case*_evaluations",
+        ),
+    ),
+    Result(
+        "results/blob/fig6.npz",
+        "fig6_data.py",
+        (
+            "kernels",
+            "times",
+            "density_index",
+            "star_t",
+            "*_positions",
+            "*_densities",
+            "*_energies",
+            "*_mass_defect",
+            "*_star_positions",
+            "*_star_densities",
+        ),
+        Job("2D blob runs for the Newtonian, quadratic and cubic kernels (Figure 6)", lambda s: {"cfg": s["fig6"]}),
+    ),
+    _compare_result("fig7"),
+    _compare_result("fig8"),
+)
 
 PAPER = Paper(
     id="blob",
@@ -152,5 +310,6 @@ PAPER = Paper(
             "Morse kernels, data (4.7) and star patch (4.6): particle (top) and blob (bottom) methods",
         ),
     ),
+    results=RESULTS,
     notebook=("results/blob/fig4.npz", "results/blob/fig5.npz", "results/blob/fig7.npz"),
 )

@@ -1,6 +1,6 @@
 """Our cross-method study: the 1D aggregation equation with K = |x|/2 by every method."""
 
-from .records import Figure, Paper, Plot, listing
+from .records import Figure, Job, Paper, Plot, Result, listing
 
 
 def _study(name, label, caption):
@@ -11,6 +11,68 @@ def _study(name, label, caption):
         params=lambda s: {"cfg": s},
     )
 
+
+STUDY_KEYS = (
+    "data",
+    "times",
+    "methods",
+    "data_index",
+    "time_index",
+    "method_index",
+    "size",
+    "count",
+    "error",
+    "dirac_width",
+    "spd_difference",
+    "case_data",
+    "case_times",
+    "case_mass",
+    "case_dirac",
+)
+
+RESULTS = (
+    Result(
+        "results/cross/study_errors.npz",
+        "study_data.py",
+        STUDY_KEYS,
+        Job(
+            "every method at every size on both data and times, each run once: W1 errors and diagnostics",
+            lambda s: {"cfg": s, "part": "errors"},
+        ),
+    ),
+    Result(
+        "results/cross/study.npz",
+        "study_data.py",
+        (*STUDY_KEYS, "seconds"),
+        Job(
+            "the same runs timed after JIT warm-up (alone on the cores), merged with the errors",
+            lambda s: {"cfg": s, "part": "times"},
+            inputs={"errors": "results/cross/study_errors.npz"},
+            threads="all",
+        ),
+    ),
+    Result(
+        "results/cross/behaviour.npz",
+        "behaviour_data.py",
+        (
+            "data",
+            "collision_predicted",
+            "collision_measured",
+            "stall_collision",
+            "stall_before",
+            "stall_after",
+            "stall_reached",
+            "ltp_peak_position",
+            "ltp_peak_width",
+            "ltp_peak_edge",
+            "ltp_inverse_h",
+            "ltp_dt",
+            "ltp_refusal",
+            "stall_window",
+        ),
+        Job("the particle method at its first collision, LTP at the blow-up", lambda s: {"cfg": s}),
+    ),
+)
 
 PAPER = Paper(
     id="cross",
@@ -34,5 +96,6 @@ PAPER = Paper(
             ),
         ),
     ),
+    results=RESULTS,
     notebook=("results/cross/study.npz", "results/cross/behaviour.npz"),
 )

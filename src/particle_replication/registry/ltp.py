@@ -1,7 +1,7 @@
 """Campos Pinto, Carrillo, Charles and Choi, linearly transformed particles: Figures 1-8 and our
 long-time and non-affine studies."""
 
-from .records import Figure, Paper, Plot, listing, power
+from .records import Figure, Job, Paper, Plot, Result, listing, power
 
 
 def _rows(name, label, formula, parameter):
@@ -21,6 +21,177 @@ def _rows(name, label, formula, parameter):
         data={"data": f"results/ltp/{name}.npz"},
     )
 
+
+ROWS_KEYS = (
+    "grid",
+    "x_potential",
+    "h",
+    "steps",
+    "labels",
+    "case*_times",
+    "case*_figure_t",
+    "case*_centres",
+    "case*_widths",
+    "case*_velocities",
+    "case*_weights",
+    "case*_shown",
+    "case*_densities",
+    "case*_potential",
+)
+
+
+def _rows_result(name, extra=()):
+    return Result(
+        f"results/ltp/{name}.npz",
+        "rows_data.py",
+        (*ROWS_KEYS, *extra),
+        Job(
+            "LTP runs with power and attractive-repulsive potentials (Figures 5, 6)",
+            lambda s: {"cfg": s[name], "concentration": s["concentration"]},
+        ),
+    )
+
+
+RESULTS = (
+    Result(
+        "results/ltp/quadratic.npz",
+        "quadratic_data.py",
+        (
+            "grid",
+            "exact",
+            "h_values",
+            "ltp_errors",
+            "sp_errors",
+            "mass_error",
+            "centre_drift",
+            "plot_h",
+            "plot_density",
+            "sp_eps",
+            "sp_densities",
+            "eps_values",
+            "scan_ltp",
+            "scan_sp",
+            "order_points",
+            "t",
+            "dt",
+            "sp_h",
+            "scan_dt",
+            "scan_h",
+            "fine_dt",
+            "scan_ltp_fine",
+            "scan_sp_fine",
+            "dt_h",
+            "dt_values",
+            "dt_errors",
+            "dt_gaps",
+            "dt_fit_points",
+        ),
+        Job(
+            "LTP and SP runs for W = x^2 against the exact solution (6.4) (Figures 2, 3)",
+            lambda s: {"cfg": s["quadratic"]},
+        ),
+    ),
+    Result(
+        "results/ltp/fig4.npz",
+        "fig4_data.py",
+        (
+            "grid",
+            "exact",
+            "shapes",
+            "eps_values",
+            "h",
+            "sp_eps",
+            "*_ltp",
+            "*_sp",
+            "*_ltp_errors",
+            "*_sp_errors",
+            "*_scan_errors",
+        ),
+        Job("LTP and SP with hat and B3 shapes for W = x^2/2 (Figure 4)", lambda s: {"cfg": s["fig4"]}),
+    ),
+    _rows_result("fig5"),
+    _rows_result("fig6", ("case*_concentration_widths", "case*_concentration_masses", "case*_edge_ratio")),
+    Result(
+        "results/ltp/fig7.npz",
+        "fig7_data.py",
+        (
+            "grid",
+            "times",
+            "densities",
+            "record_times",
+            "concentration_widths",
+            "concentration_masses",
+            "weights",
+            "label",
+            "h",
+            "dt",
+            "steps",
+        ),
+        Job(
+            "density snapshots from (6.3) (Figure 7)", lambda s: {"cfg": s["fig7"], "concentration": s["concentration"]}
+        ),
+    ),
+    Result(
+        "results/ltp/fig8.npz",
+        "fig8_data.py",
+        (
+            "grid",
+            "label",
+            "h",
+            "dt",
+            "steps",
+            "t",
+            "sp_eps",
+            "paper_time",
+            "steady_time",
+            "widest_centre",
+            "widest_width",
+            "widest_weight",
+            "widest_share",
+            *(
+                f"{method}_{key}"
+                for method in ("ltp", "sp")
+                for key in (
+                    "times",
+                    "peaks",
+                    "oscillation",
+                    "steady",
+                    "centres",
+                    "widths",
+                    "weights",
+                    "paper_x",
+                    "paper_density",
+                    "steady_x",
+                    "steady_density",
+                )
+            ),
+        ),
+        Job("SP and LTP end states (Figure 8)", lambda s: {"cfg": s["fig8"]}),
+    ),
+    Result(
+        "results/ltp/nonaffine.npz",
+        "nonaffine_data.py",
+        (
+            "h_values",
+            "errors",
+            "reference_h",
+            "reference_gap",
+            "order_points",
+            "label",
+            "t",
+            "dt",
+            "grid",
+            "reference",
+            "centre_h",
+            "centre_drift",
+            "centre_label",
+        ),
+        Job(
+            "convergence on a flow that is not affine; the centre of mass on asymmetric data",
+            lambda s: {"cfg": s["nonaffine"]},
+        ),
+    ),
+)
 
 PAPER = Paper(
     id="ltp",
@@ -139,5 +310,6 @@ PAPER = Paper(
             data={"data": "results/ltp/nonaffine.npz"},
         ),
     ),
+    results=RESULTS,
     notebook=("results/ltp/quadratic.npz", "results/ltp/fig5.npz"),
 )

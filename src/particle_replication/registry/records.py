@@ -51,15 +51,34 @@ class Plot:
 
 
 @dataclass(frozen=True)
+class Job:
+    """How a result file is computed: its data rule runs the result's writer with ``params`` from
+    the paper's section, reading the result files ``inputs`` (input names to paths), on one thread
+    or, for a timing study that must not share the cores, on ``threads="all"``."""
+
+    about: str
+    params: Callable[[Section], dict]
+    inputs: Mapping[str, str] = field(default_factory=dict)
+    threads: int | str = 1
+
+
+@dataclass(frozen=True)
 class Result:
     """One ``.npz`` result file: its path under the run's root (``results/<paper>/...``), the
-    script of ``scripts/<paper>/`` that writes it and its keys, as ``fnmatch`` patterns
-    (``case*_density``) where the config decides the names. The writer and every reader check the
-    file against these keys (:func:`check_keys`)."""
+    script of ``scripts/<paper>/`` that writes it, its keys as ``fnmatch`` patterns
+    (``case*_density``) where the config decides the names, and its :class:`Job` (None when a rule
+    written by hand in ``rules/<paper>.smk`` computes it). The writer and every reader check the file
+    against these keys (:func:`check_keys`)."""
 
     path: str
     writer: str
     keys: tuple[str, ...]
+    job: Job | None = None
+
+    @property
+    def rule(self) -> str:
+        """Name of the generated data rule: data_<paper>_<file stem>."""
+        return "data_" + self.path.removeprefix("results/").removesuffix(".npz").replace("/", "_")
 
     def check_keys(self, keys) -> None:
         """Raise KeyError unless ``keys`` are exactly those declared: every key matches a pattern,
@@ -70,17 +89,19 @@ class Result:
         if stray or missing:
             raise KeyError(
                 f"{self.path}: keys not declared in the registry {stray}, declared keys "
-                f"missing {missing} (particle_replication.registry)"
+                f"missing {missing} (particle_replication.registry; a file written by older code: "
+                f"rerun the job that writes it)"
             )
 
 
 @dataclass(frozen=True)
 class Paper:
-    """A paper's entry: its plot jobs and the result files its notebook (``notebooks/<id>.py``)
-    reads besides its claims table."""
+    """A paper's entry: its plot jobs, its result files, and the result files its notebook
+    (``notebooks/<id>.py``) reads besides its claims table."""
 
     id: str
     plots: tuple[Plot, ...]
+    results: tuple[Result, ...]
     notebook: tuple[str, ...]
 
     @property

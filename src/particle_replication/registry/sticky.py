@@ -1,6 +1,6 @@
 """Jourdain and Reygner, sticky particle dynamics: Figures 1-7 and the study beyond the paper."""
 
-from .records import Figure, Paper, Plot, listing
+from .records import Figure, Job, Paper, Plot, Result, listing
 
 
 def _psystem(section, case):
@@ -32,6 +32,221 @@ def _beyond_plot(name, label, caption):
         params=lambda s: {"cfg": s["beyond"]},
     )
 
+
+PSYSTEM_KEYS = (
+    "times",
+    "trajectories",
+    "field_path",
+    "field_x",
+    "w_minus",
+    "w_plus",
+    "u",
+    "v",
+    "trajectories_end",
+    "field_end",
+    "max_time",
+)
+
+SCALAR_KEYS = (
+    "trajectory_times",
+    "trajectories",
+    "field_times",
+    "field_x",
+    "field",
+    "profile_times",
+    "profile_particle_cdf",
+    "profile_exact_cdf",
+    "error_p",
+    "error_n",
+    "error_times",
+    "errors",
+    "rate_n",
+    "rate_errors",
+    "initial_errors",
+    "heaviside_errors",
+    "clusters",
+    "flux_lipschitz",
+)
+
+LIMIT_KEYS = (
+    "t",
+    "cases",
+    "limit_n",
+    "reference_cells",
+    "*_limit_to_hll",
+    "*_limit_to_upwind",
+    "*_mspd_gap",
+    "*_hll_gap",
+    "*_upwind_gap",
+    "*_hll_to_upwind",
+    "*_hll_w",
+    "*_upwind_w",
+    "*_mspd",
+)
+
+
+def _system(s):
+    return {key: s["psystem"][key] for key in ("nu", "kappa")}
+
+
+def _cases(s):
+    return {case: s["psystem"][case] for case in ("rarefaction", "shocks")}
+
+
+def _scalar_result(name):
+    return Result(
+        f"results/sticky/{name}.npz",
+        "scalar_data.py",
+        SCALAR_KEYS,
+        Job("SPD trajectories, u(t, x), profiles and exact L1 errors (Figures 2, 3)", lambda s: {"cfg": s[name]}),
+    )
+
+
+def _psystem_result(case):
+    return Result(
+        f"results/sticky/psystem_{case}.npz",
+        "psystem_data.py",
+        PSYSTEM_KEYS,
+        Job(
+            "iterated TSPD for the p-system: trajectories and space-time fields (Figures 4-7)",
+            lambda s: {"case": case, "system": _system(s), "cfg": s["psystem"][case]},
+        ),
+    )
+
+
+RESULTS = (
+    _scalar_result("fig2"),
+    _scalar_result("fig3"),
+    _psystem_result("rarefaction"),
+    _psystem_result("shocks"),
+    Result(
+        "results/sticky/lemma21.npz",
+        "lemma21_data.py",
+        (
+            "n_values",
+            "odd_n",
+            "pareto_alpha",
+            "weibull_alpha",
+            "*_odd",
+            "*_sqrt_variance",
+            "*_support",
+            "uniform",
+            "two_atoms",
+            "laplace",
+            "exponential_*",
+            "pareto_*",
+            "weibull_*",
+            "heavy_upper",
+            "heavy_errors",
+        ),
+        Job("Lemma 2.1 and the tail examples: W1 error of the discretisation (2.1)", lambda s: {"cfg": s["lemma21"]}),
+    ),
+    Result(
+        "results/sticky/remark33.npz",
+        "remark33_data.py",
+        (
+            "refined_cells",
+            "refined_distances",
+            "refined_n",
+            "refined_t",
+            "dirac_n",
+            "dirac_times",
+            "dirac_errors",
+            "godunov_n",
+            "godunov_times",
+            "cells_per_unit",
+            "distances",
+            "total_errors",
+            "initial_errors",
+            "convex_distances",
+            "convex_n",
+            "convex_t",
+        ),
+        Job(
+            "Remark 3.3: the exact t/(4n) error from one Dirac mass; SPD against front tracking",
+            lambda s: {"cfg": s["remark33"]},
+        ),
+    ),
+    Result(
+        "results/sticky/tspd_convergence.npz",
+        "tspd_convergence_data.py",
+        (
+            "cases",
+            "times",
+            "deltas",
+            "delta_n",
+            "reference_delta",
+            "delta_errors",
+            "delta_reference_gap",
+            "n_values",
+            "n_delta",
+            "reference_n",
+            "n_errors",
+            "bounds",
+            "n_reference_gap",
+        ),
+        Job(
+            "Theorem 4.4: iterated TSPD errors, a Delta sweep at fixed n and an n sweep at small Delta",
+            lambda s: {"system": _system(s), "cases": _cases(s), "cfg": s["tspd_convergence"]},
+        ),
+    ),
+    Result(
+        "results/sticky/cost.npz",
+        "cost_data.py",
+        (
+            "hull_n",
+            "hull_times",
+            "hull_free_times",
+            "rank_n",
+            "rank_times",
+            "tspd_n",
+            "tspd_times",
+            "tspd_steps",
+            "steps_values",
+            "steps_times",
+            "steps_n",
+        ),
+        Job(
+            "sections 5.1.1 and 5.2.1: time of the compiled kernels against n and the number of steps (timed: "
+            "alone on the cores)",
+            lambda s: {"cfg": s["cost"]},
+            threads="all",
+        ),
+    ),
+    Result(
+        "results/sticky/beyond_limits.npz",
+        "beyond_limits.py",
+        LIMIT_KEYS,
+        Job(
+            "beyond the paper: the exact MSPD against conservative and upwind finite volumes (untimed)",
+            lambda s: {"system": _system(s), "cases": _cases(s), "cfg": s["beyond"]},
+        ),
+    ),
+    Result(
+        "results/sticky/beyond.npz",
+        "beyond_data.py",
+        (
+            *LIMIT_KEYS,
+            "tspd_n",
+            "exact_n",
+            "upwind_cells",
+            "scalar_cases",
+            "*_tspd",
+            "*_exact",
+            "*_upwind",
+            "*_spd",
+            "*_godunov",
+            "*_spd_n",
+            "*_cells",
+        ),
+        Job(
+            "beyond the paper: the cost study (timed runs, alone on the cores), merged with the limits",
+            lambda s: {"system": _system(s), "cases": _cases(s), "cfg": s["beyond"]},
+            inputs={"limits": "results/sticky/beyond_limits.npz"},
+            threads="all",
+        ),
+    ),
+)
 
 PAPER = Paper(
     id="sticky",
@@ -152,5 +367,6 @@ PAPER = Paper(
             ),
         ),
     ),
+    results=RESULTS,
     notebook=("results/sticky/fig2.npz", "results/sticky/fig3.npz"),
 )
