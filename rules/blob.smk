@@ -1,4 +1,6 @@
-"""Craig and Bertozzi: the blob method for the aggregation equation, Figures 1-4 (1D) and 5-8 (2D)."""
+"""Craig and Bertozzi: the blob method for the aggregation equation, Figures 1-4 (1D) and 5-8 (2D). Its
+rules are generated from its registry (particle_replication.registry.blob, rules/registry.smk) but for
+Figure 5's runs, which this file groups into jobs by grid size."""
 
 BLOB = config["blob"]
 BLOB_FIGURES = registry.figure_outputs("blob")
@@ -16,36 +18,6 @@ FIG5_GROUPS = {
 }
 # What one run reads from the config: a new grid step leaves the other runs alone.
 FIG5_RUN = {key: BLOB["fig5"][key] for key in ("kernel", "cases", "t", "q", "rtol", "atol")}
-
-
-rule blob_claims:
-    """Measure every blob claim of Figures 1-8 from the cached results; record every fitted rate."""
-    input:
-        fig1="results/blob/fig1.npz",
-        fig2="results/blob/fig2.npz",
-        fig3="results/blob/fig3.npz",
-        fig4="results/blob/fig4.npz",
-        fig4log="results/blob/fig4log.npz",
-        fig5="results/blob/fig5.npz",
-        fig6="results/blob/fig6.npz",
-        fig7="results/blob/fig7.npz",
-        fig8="results/blob/fig8.npz",
-        repulsive="results/blob/repulsive.npz",
-        code=imports("blob/claims.py"),
-    output:
-        claims="results/blob/claims.csv",
-        rates="results/blob/rates.json",
-    log:
-        "logs/blob/claims.log",
-    benchmark:
-        "logs/benchmarks/blob_claims.tsv"
-    conda:
-        ENVIRONMENT
-    threads: 1
-    params:
-        cfg=BLOB,
-    script:
-        "../scripts/blob/claims.py"
 
 
 rule blob_fig5_case:

@@ -1,30 +1,28 @@
 """One equation, every method: the 1D aggregation equation with K = |x|/2 solved by the sticky
 particles, the particle and blob methods, LTP, SP and Godunov's scheme, against its exact solution.
+Its rules are generated from its registry (particle_replication.registry.cross, rules/registry.smk)
+but for the report's table, written here.
 """
 
 CROSS = config["cross"]
 CROSS_FIGURES = registry.figure_outputs("cross")
 
 
-rule cross_claims:
-    """Measure every claim of the comparison from the cached results; record every fitted rate; write
-    the report's table of errors and times."""
+rule cross_table:
+    """The report's table of errors at the largest size and wall times to the target error."""
     input:
         study="results/cross/study.npz",
-        behaviour="results/cross/behaviour.npz",
-        code=imports("cross/claims.py"),
+        code=imports("cross/table.py"),
     output:
-        claims="results/cross/claims.csv",
-        rates="results/cross/rates.json",
-        table="results/cross/table.tex",
+        "results/cross/table.tex",
     log:
-        "logs/cross/claims.log",
+        "logs/cross/table.log",
     benchmark:
-        "logs/benchmarks/cross_claims.tsv"
+        "logs/benchmarks/cross_table.tsv"
     conda:
         ENVIRONMENT
     threads: 1
     params:
         cfg=CROSS,
     script:
-        "../scripts/cross/claims.py"
+        "../scripts/cross/table.py"

@@ -1,6 +1,7 @@
 """The rules generated from the registry (particle_replication.registry): one data rule per result
-file that has a job, named data_<paper>_<file>, and one plot rule per plot job, named
-plot_<paper>_<figures>, drawing the registered figures with their captions and titles."""
+file that has a job, named data_<paper>_<file>, one plot rule per plot job, named
+plot_<paper>_<figures>, drawing the registered figures with their captions and titles, and each
+paper's claims rule, <paper>_claims, measuring every registered result file of the paper."""
 
 
 def figure_outputs(paper, plot):
@@ -79,3 +80,25 @@ for paper in registry.PAPERS.values():
             script:
                 # Formatted when the job runs (a loop variable here would be the loop's last value then).
                 "../scripts/{params.script}"
+
+    rule:
+        name:
+            f"{paper.id}_claims"
+        input:
+            **paper.claim_inputs(),
+            code=imports(f"{paper.id}/claims.py"),
+        output:
+            claims=f"results/{paper.id}/claims.csv",
+            rates=f"results/{paper.id}/rates.json",
+        log:
+            f"logs/{paper.id}/claims.log",
+        benchmark:
+            f"logs/benchmarks/{paper.id}_claims.tsv"
+        conda:
+            ENVIRONMENT
+        threads: 1
+        params:
+            cfg=config[paper.id],
+            script=f"{paper.id}/claims.py",
+        script:
+            "../scripts/{params.script}"

@@ -6,7 +6,7 @@ import shutil
 
 from particle_replication.environment import commit
 
-PAPERS = ["sticky", "ltp", "blob", "cross"]
+PAPERS = list(registry.PAPERS)
 CLAIM_SOURCES = expand("results/{paper}/claims.csv", paper=PAPERS)
 RATE_SOURCES = expand("results/{paper}/rates.json", paper=PAPERS)
 VERDICTS = source(ROOT / config["verdicts"])

@@ -199,8 +199,8 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     # run does only the unfinished part of the blob figures and nothing of the other studies.
     plan = planned_rules(snakemake(workdir, "--dry-run"))
     assert "plot_blob_fig8" in plan
-    assert plan <= {"data_blob_fig7", "data_blob_fig8", "plot_blob_fig7", "plot_blob_fig8", "blob_claims", "claims_table",
-                    "report_snippets", "notebook", "manuscript", "all"}
+    assert plan <= {"data_blob_fig7", "data_blob_fig8", "plot_blob_fig7", "plot_blob_fig8", "blob_claims",
+                    "claims_table", "report_snippets", "notebook", "manuscript", "all"}
     assert snakemake(workdir).returncode == 0
     resumed = snakemake(workdir, "--dry-run")
     assert "Nothing to be done" in resumed.stdout + resumed.stderr

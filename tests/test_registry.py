@@ -63,6 +63,10 @@ def test_scripts_captions_and_titles_exist_for_every_figure():
                 assert entry.job.about and entry.job.threads in (1, "all")
                 assert set(entry.job.inputs.values()) <= produced, entry.path
                 assert "script" not in entry.job.params(CONFIG[paper.id])
+    for paper in registry.PAPERS.values():  # the claims read every result file, by its stem
+        inputs = paper.claim_inputs()
+        assert set(inputs.values()) == {entry.path for entry in paper.results if "*" not in entry.path}
+        assert len(inputs) == len({entry.path for entry in paper.results if "*" not in entry.path})
     rules = [entry.rule for entry in registry.RESULTS if entry.job] + [
         plot.rule(paper.id) for paper in registry.PAPERS.values() for plot in paper.plots]
     assert len(rules) == len(set(rules))

@@ -1,55 +1,9 @@
-"""Every checked claim of the cross-method comparison, from the cached results and the config's rules.
+"""Every checked claim of the cross-method comparison: its registered result files measured by
+particle_replication.verdicts.cross.claims, with the tolerances and windows of the config."""
 
-The measures live in :mod:`particle_replication.verdicts.cross`, where the tests feed them wrong outcomes;
-this script only loads the results and writes the claims and their rate tables.
-"""
-
-from particle_replication import claims as c
-from particle_replication.rates import Recorder
-from particle_replication.verdicts import cross as v
-from particle_replication.workflow import load_results, logged, progress
-
-
-def latex_number(value: float) -> str:
-    if value != value:
-        return "--"
-    if value == float("inf"):
-        return "$\\infty$"
-    mantissa, exponent = f"{value:.2e}".split("e")
-    return f"${mantissa}\\times 10^{{{int(exponent)}}}$"
-
-
-def work_precision_table(d, cfg) -> str:
-    """LaTeX rows: per method and case, the W1 error at the largest size and the wall time to the target
-    (an asterisk marks an extrapolation from the two largest runs)."""
-    table = v.fastest_table(d, cfg["target_error"], cfg["min_timed_seconds"])
-    keys = list(table)
-    head = " & ".join(f"({data}, $t = {t:g}$)" for data, t in keys)
-    lines = ["\\begin{tabular}{@{}l" + "r" * len(keys) + "@{}}\\toprule", f"method & {head} \\\\ \\midrule"]
-    for method in map(str, d["methods"]):
-        cells = []
-        for data, t in keys:
-            if method not in table[(data, t)]:
-                cells.append("--")
-                continue
-            _, _, errors, _ = v.series(d, data, t, method)
-            seconds, extrapolated = table[(data, t)][method]
-            cells.append(f"{latex_number(errors[-1])} / {latex_number(seconds)}{'*' if extrapolated else ''}")
-        lines.append(f"{method} & " + " & ".join(cells) + " \\\\")
-    lines.append("\\bottomrule\\end{tabular}")
-    return "\n".join(lines) + "\n"
-
-
-def run(inputs, cfg, output):
-    rates = Recorder(progress)
-    study = load_results(inputs.study)
-    with open(output.table, "w") as handle:
-        handle.write(work_precision_table(study, cfg))
-    rows = [*v.study_claims(study, rates, cfg),
-            *v.behaviour_claims(load_results(inputs.behaviour), cfg)]
-    c.write_claims(output.claims, rows, log=progress)
-    rates.write(output.rates)
-
+from particle_replication.claims import measure_paper
+from particle_replication.verdicts import cross
+from particle_replication.workflow import logged, progress
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(snakemake.input, snakemake.params.cfg, snakemake.output)  # noqa: F821
+    measure_paper(snakemake.input, snakemake.params.cfg, snakemake.output, cross.claims, log=progress)  # noqa: F821

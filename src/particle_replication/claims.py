@@ -28,7 +28,8 @@ from pathlib import Path
 import numpy as np
 import yaml
 
-from .rates import merge_rates
+from .rates import Recorder, merge_rates
+from .workflow import load_results
 
 COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status", "value")
 KINDS = ("paper", "derived", "check")
@@ -160,6 +161,16 @@ class Catalogue:
         """:func:`claim` with the kind and source of the entry ``name``."""
         kind, source = self.kind_and_source(name)
         return claim(self.paper, compare, name, kind, source, figure, text, *args, **kwargs)
+
+
+def measure_paper(inputs, cfg, output, measure, log=None) -> None:
+    """A paper's claims job: load its result files (``inputs``, by file stem; the ``code`` inputs
+    aside), measure them with ``measure(results, cfg, recorder)`` (a verdict module's ``claims``),
+    and write the claims table to ``output.claims`` and every fitted rate to ``output.rates``."""
+    recorder = Recorder(log)
+    results = {name: load_results(path) for name, path in inputs.items() if name != "code"}
+    write_claims(output.claims, measure(results, cfg, recorder), log=log)
+    recorder.write(output.rates)
 
 
 def write_claims(path, claims, log=None) -> None:

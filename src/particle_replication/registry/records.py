@@ -108,6 +108,15 @@ class Paper:
     def figures(self) -> tuple[Figure, ...]:
         return tuple(figure for plot in self.plots for figure in plot.figures)
 
+    def claim_inputs(self) -> dict[str, str]:
+        """The result files its claims are measured on, by file stem: every registered file but
+        those whose names the config decides (patterns)."""
+        return {
+            entry.path.rsplit("/", 1)[-1].removesuffix(".npz"): entry.path
+            for entry in self.results
+            if "*" not in entry.path
+        }
+
     def outputs(self) -> list[str]:
         """Every figure file of the paper, PDF and PNG."""
         return [f"figures/{self.id}/{figure.name}.{ext}" for figure in self.figures for ext in ("pdf", "png")]

@@ -591,3 +591,19 @@ def fig8_claims(d, p, rules):
                          f"{window:g} time units from then to the end, at least {hold:g} time units)", 1.0, ratio,
                          published="only that case"))
     return [*out, paper_tables_claim(d, p, "fig8", float(rules["paper_tables_gap"]))]
+
+
+def claims(results, p, recorder: Recorder) -> list:
+    """Every claim of the blob paper from its result files (``results``: file stem -> arrays), with the
+    tolerances, thresholds and cut-offs of ``p["claims"]`` and the figures' sections of ``p``."""
+    rules = p["claims"]
+    return [
+        *newtonian_claims(results["fig1"], results["fig2"], results["fig3"], rules, recorder),
+        *fig4_claims(results["fig4"], rules, recorder),
+        *fig4log_claims(results["fig4log"], results["fig4"], rules, recorder),
+        *repulsive_claims(results["repulsive"], p["fig4"], rules, recorder),
+        *fig5_claims(results["fig5"], rules, recorder),
+        *fig6_claims(results["fig6"], rules),
+        *fig7_claims(results["fig7"], p["fig7"], rules),
+        *fig8_claims(results["fig8"], p["fig8"], rules),
+    ]

@@ -433,3 +433,9 @@ def behaviour_claims(b, p):
             edge_collapse(b, rules["edge_proximity"]),
         ),
     ]
+
+
+def claims(results, cfg, recorder: Recorder) -> list:
+    """Every claim of the comparison from its result files (``results``: file stem -> arrays) and the
+    bands and tolerances of ``cfg``."""
+    return [*study_claims(results["study"], recorder, cfg), *behaviour_claims(results["behaviour"], cfg)]

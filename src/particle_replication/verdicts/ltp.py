@@ -323,3 +323,24 @@ def conservation_claims(runs):
     return [claim(c.at_most, "mass.weights", "check", "weights constant in time by construction, section 2.2 (2.27)",
                   "5-8", "mass is conserved exactly: |sum_k omega_k - 1|, largest over the runs of Figures 5-8",
                   c.ROUNDING * 1.0, float(max(masses)), published="exact")]  # an identity; scale: the unit mass
+
+
+def claims(results, p, recorder: Recorder) -> list:
+    """Every claim of the LTP paper from its result files (``results``: file stem -> arrays), with the
+    thresholds and bands of ``p["claims"]`` and the figures' sections of ``p``."""
+    rules = p["claims"]
+    d5, d6, d7 = results["fig5"], results["fig6"], results["fig7"]
+    return [
+        *quadratic_claims(results["quadratic"], recorder, p["quadratic"], rules),
+        *nonaffine_claims(results["nonaffine"], recorder, p["nonaffine"], rules),
+        *fig4_claims(results["fig4"], rules),
+        *fig5_claims(d5, p["fig5"], rules),
+        *fig6_claims(d6, p["concentration"], rules),
+        *fig7_claims(d7, p["concentration"]),
+        *fig8_claims(results["fig8"], p["fig8"], rules),
+        *conservation_claims([
+            (d5, [f"case{i}_" for i in range(len(d5["labels"]))]),
+            (d6, [f"case{i}_" for i in range(len(d6["labels"]))]),
+            (d7, [""]),
+        ]),
+    ]

@@ -18,7 +18,7 @@ import numpy as np
 
 from particle_methods.convergence import pairwise_orders
 from particle_methods.sticky.spd import cluster_sizes
-from particle_methods.systems import MINUS, PLUS
+from particle_methods.systems import MINUS, PLUS, PSystem
 
 from .. import claims as c
 from ..rates import Recorder, fit, order
@@ -518,3 +518,28 @@ def beyond_claims(d, rates: Recorder, p):
                      "the cost study's reference (exact MSPD) is accurate: its distance to n/2 over the smallest error "
                      "it measures, largest over the two cases", p["reference_share"], reference_share))
     return out
+
+
+def claims(results, cfg, recorder: Recorder) -> list:
+    """Every claim of the sticky-particle paper from its result files (``results``: file stem ->
+    arrays), with the windows and bands of the sections of ``cfg`` and the tolerances of
+    ``cfg["claims"]``."""
+    burgers, concave = results["fig2"], results["fig3"]
+    r33, l21, tspd, cost = cfg["remark33"], cfg["lemma21"], cfg["tspd_convergence"], cfg["cost"]
+    rules = cfg["claims"]  # the tolerances no figure's section holds
+    return [
+        *burgers_claims(burgers, recorder, cfg["fig2"]["order_window"], rules["order_tolerance"]),
+        *concave_claims(concave, recorder, cfg["fig3"]["decay_window"], cfg["fig3"]["decay_band"]),
+        *theorem31_claims(burgers, concave),
+        *remark33_claims(results["remark33"], recorder, r33["window"], r33["order_min"], r33["convex"]["tolerance"]),
+        *lemma21_claims(results["lemma21"], recorder, l21["rate_window"], l21["weibull_band"],
+                        l21["heavy_tail"]["growth_ratio"], rules["quadrature_margin"],
+                        rules["positive_density_tolerance"], rules["pareto_tolerance"]),
+        *tspd_claims(results["tspd_convergence"], recorder, tspd["window"], tspd["delta_order_min"],
+                     tspd["growth_max"], tspd["reference_share"], tspd["constant_ratio"]),
+        *psystem_claims(results["psystem_rarefaction"], results["psystem_shocks"],
+                        cfg["psystem"]["shocks"]["shock_fraction"],
+                        PSystem(nu=cfg["psystem"]["nu"], kappa=cfg["psystem"]["kappa"])),
+        *cost_claims(results["cost"], recorder, cost["window"], cost["band"]),
+        *beyond_claims(results["beyond"], recorder, cfg["beyond"]),
+    ]
