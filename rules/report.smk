@@ -14,11 +14,12 @@ COMMIT = commit()
 
 
 rule claims_table:
-    """Merge every paper's claims into results/claims.csv and results/claims.md, and every
-    paper's fitted rates into results/rates.json."""
+    """Merge every paper's claims into results/claims.csv and results/claims.md (with the failures
+    by cause, from the expected verdicts), and every paper's fitted rates into results/rates.json."""
     input:
         sources=CLAIM_SOURCES,
         rates=RATE_SOURCES,
+        expected=VERDICTS,
         code=[source(REPLICATION / "claims.py"), source(REPLICATION / "rates.py")],
     output:
         csv="results/claims.csv",
@@ -31,9 +32,12 @@ rule claims_table:
     conda:
         ENVIRONMENT
     threads: 1
+    params:
+        run=config["verdicts_run"],
     shell:
         "python -m particle_replication.claims merge {input.sources} --rates {input.rates} "
-        "--csv {output.csv} --markdown {output.markdown} --rates-output {output.rates} > {log} 2>&1"
+        "--csv {output.csv} --markdown {output.markdown} --rates-output {output.rates} "
+        "--expected {input.expected} --run {params.run} > {log} 2>&1"
 
 
 rule verify:
@@ -139,6 +143,7 @@ rule report_snippets:
         claims="results/claims.csv",
         rates="results/rates.json",
         versions="results/versions.md",
+        expected=VERDICTS,
         code=imports("report/snippets.py"),
     output:
         SNIPPETS,
@@ -151,6 +156,7 @@ rule report_snippets:
     threads: 1
     params:
         outdir=lambda wildcards, output: os.path.dirname(output[0]),
+        run=config["verdicts_run"],
     script:
         "../scripts/report/snippets.py"
 

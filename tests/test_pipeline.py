@@ -230,10 +230,11 @@ def test_verify_works_as_the_readme_writes_it(workdir):
 
 
 def test_verify_fails_when_a_verdict_changes(workdir, tmp_path):
-    changed_id = next(i for i, (status, _) in EXPECTED_VERDICTS.items() if status == "pass")
-    passing = [i for i, (status, _) in EXPECTED_VERDICTS.items() if status == "pass" and i != changed_id]
-    failing = {i: reason for i, (status, reason) in EXPECTED_VERDICTS.items() if status == "fail"}
-    failing[changed_id] = "pretend it used to fail"
+    changed_id = next(i for i, verdict in EXPECTED_VERDICTS.items() if verdict.status == "pass")
+    passing = [i for i, verdict in EXPECTED_VERDICTS.items() if verdict.status == "pass" and i != changed_id]
+    failing = {i: {"cause": verdict.cause, "reason": verdict.reason}
+               for i, verdict in EXPECTED_VERDICTS.items() if verdict.status == "fail"}
+    failing[changed_id] = {"cause": "contradicts", "reason": "pretend it used to fail"}
     expected = tmp_path / "verdicts.yaml"
     expected.write_text(yaml.safe_dump({"pass": passing, "fail": failing}))
     result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml",

@@ -4,7 +4,7 @@ import re
 
 import pytest
 
-from particle_replication.claims import Claim, write_claims
+from particle_replication.claims import Claim, Expected, write_claims
 from particle_replication.rates import order, write_rates
 from particle_replication.report import cell, number, tex, write_snippets
 
@@ -55,8 +55,10 @@ def snippets(tmp_path):
                                           "Modified since the commit: no\n\n"
                                           "| package | version |\n|---|---|\n| python | 3.11.7 |\n| numpy | 2.0 |\n")
     config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]}}
+    expected = {"demo.fig1.order": Expected("pass"), "other.mass": Expected("pass"),
+                "demo.fig2.peaks": Expected("fail", "three, not two", "contradicts")}
     write_snippets(tmp_path / "claims.csv", tmp_path / "rates.json", tmp_path / "versions.md", config,
-                   tmp_path / "out")
+                   tmp_path / "out", expected)
     return {path.stem: path.read_text() for path in (tmp_path / "out").iterdir()}
 
 
@@ -86,6 +88,8 @@ def test_counts_tables_and_failures(snippets):
     assert body.count(r" \\") == 2 and "other.mass" not in body
     assert "demo.\\allowbreak{}fig2.\\allowbreak{}peaks" in snippets["failures"]
     assert "fig1" not in snippets["failures"].split(r"\endlastfoot")[1]
+    assert "contradicts" in snippets["failures"] and "three, not two" in snippets["failures"]
+    assert counts["claimcount@cause.contradicts"] == "1" and counts["claimcount@cause.defect"] == "0"
     assert "numpy & 2.0" in snippets["versions"]
     assert snippets["configuration"].count(r"\par") == 3
 

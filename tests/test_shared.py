@@ -85,16 +85,28 @@ def write_expected(path, text):
 
 
 def test_verify_passes_when_every_verdict_is_as_expected(tables, capsys):
-    expected = write_expected(tables / "v.yaml", "pass: [x.a]\nfail:\n  y.b: the bound is loose\n")
+    expected = write_expected(tables / "v.yaml", "pass: [x.a]\nfail:\n  y.b: {cause: our-inference, reason: loose}\n")
     assert c.main(["verify", str(tables / "all.csv"), "--expected", str(expected)]) == 0
     out = capsys.readouterr().out
     assert "pass x.a (Figure 1): published -1, measured -0.98" in out and "y.b" not in out.split("\n")[1]
+    assert "expected: 1 failures: 0 contradict the paper, 0 pre-asymptotic, 1 our inference was wrong" in out
+
+
+def test_the_markdown_counts_failures_by_cause(tables):
+    expected = write_expected(tables / "v.yaml", "pass: [x.a]\nfail:\n  y.b: {cause: pre-asymptotic, reason: coarse}\n")
+    claims = c.read_claims(tables / "all.csv")
+    text = c.failures_by_cause(claims, c.read_verdicts(expected))
+    assert "1 failures: 0 contradict the paper, 1 pre-asymptotic" in text and "| `y.b` |" in text
+    text = c.failures_by_cause(claims, c.read_verdicts(write_expected(tables / "w.yaml", "pass: [x.a, y.b]\n")))
+    assert "1 not expected" in text and "| unexpected |" in text
 
 
 @pytest.mark.parametrize("text, message", [
     ("pass: [x.a, y.b]\n", "CHANGED y.b: expected pass, got fail"),  # a verdict changed
-    ("pass: []\nfail: {x.a: once failed, y.b: loose}\n", "CHANGED x.a: expected fail (once failed), got pass"),
-    ("pass: [x.a]\nfail: {y.b: loose, z.c: gone}\n", "MISSING z.c"),  # an expected claim is missing
+    ("pass: []\nfail: {x.a: {cause: contradicts, reason: once failed}, y.b: {cause: defect, reason: loose}}\n",
+     "CHANGED x.a: expected fail (once failed), got pass"),
+    ("pass: [x.a]\nfail: {y.b: {cause: defect, reason: loose}, z.c: {cause: contradicts, reason: gone}}\n",
+     "MISSING z.c"),  # an expected claim is missing
     ("pass: [x.a]\n", "NEW y.b"),  # a claim without an expected verdict
 ])
 def test_verify_fails_on_a_changed_missing_or_unexpected_verdict(tables, capsys, text, message):
@@ -104,9 +116,11 @@ def test_verify_fails_on_a_changed_missing_or_unexpected_verdict(tables, capsys,
 
 
 @pytest.mark.parametrize("text, message", [
-    ("pass: [x.a]\nfail: {x.a: twice}\n", "listed twice"),
+    ("pass: [x.a]\nfail: {x.a: {cause: defect, reason: twice}}\n", "listed twice"),
     ("pass: [x.a, x.a]\n", "listed twice"),
-    ("fail: {y.b: ''}\n", "one-line reason"),
+    ("fail: {y.b: {cause: defect, reason: ''}}\n", "one-line reason"),
+    ("fail: {y.b: a reason without its cause}\n", "needs a cause and a one-line reason"),
+    ("fail: {y.b: {cause: our-instrument, reason: coarse}}\n", "must be one of"),
     ("passing: [x.a]\n", "need the keys"),
     ("pass: x.a\n", "must be a list"),
 ])
@@ -126,18 +140,20 @@ def test_the_quick_section_holds_only_differences_from_the_full_run():
 @pytest.mark.parametrize("section, message", [
     ("quick: {pass: [x.b]}\n", "not among the full run's verdicts"),
     ("quick: {pass: [x.a]}\n", "keep only differences"),
-    ("quick: {fail: {y.b: ''}}\n", "one-line reason"),
+    ("quick: {fail: {y.b: {cause: defect, reason: ''}}}\n", "one-line reason"),
     ("quick: [x.a]\n", "a section per run"),
 ])
 def test_a_run_section_is_checked(tmp_path, section, message):
-    path = write_expected(tmp_path / "v.yaml", "pass: [x.a]\nfail: {y.b: reason}\n" + section)
+    path = write_expected(tmp_path / "v.yaml", "pass: [x.a]\nfail: {y.b: {cause: defect, reason: r}}\n" + section)
     with pytest.raises(ValueError, match=message):
         c.read_verdicts(path, "quick")
 
 
 def test_a_run_section_overrides_the_full_verdicts(tmp_path):
-    path = write_expected(tmp_path / "v.yaml", "pass: [x.a]\nfail: {y.b: coarse}\nquick: {fail: {x.a: coarse}}\n")
-    assert c.read_verdicts(path, "quick") == {"x.a": ("fail", "coarse"), "y.b": ("fail", "coarse")}
+    path = write_expected(tmp_path / "v.yaml", "pass: [x.a]\nfail: {y.b: {cause: defect, reason: coarse}}\n"
+                          "quick: {fail: {x.a: {cause: pre-asymptotic, reason: coarse}}}\n")
+    assert c.read_verdicts(path, "quick") == {"x.a": ("fail", "coarse", "pre-asymptotic"),
+                                              "y.b": ("fail", "coarse", "defect")}
     with pytest.raises(ValueError, match="no section for the run 'ci'"):
         c.read_verdicts(path, "ci")
 

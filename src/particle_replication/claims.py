@@ -12,8 +12,8 @@ Every row has a ``kind``:
 Every paper's pipeline writes its claims with :func:`write_claims`; the report step merges them
 into ``results/claims.csv`` (columns :data:`COLUMNS`) and a Markdown table. ``verify`` compares
 the verdicts with the expected ones kept in a committed file (``config/verdicts.yaml``): a claim
-that genuinely fails is expected to fail, with a one-line reason, so a run is judged by whether
-its verdicts changed, not by whether all of them pass.
+that genuinely fails is expected to fail, with its cause (:data:`CAUSES`) and a one-line reason, so
+a run is judged by whether its verdicts changed, not by whether all of them pass.
 """
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ import math
 import sys
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 import yaml
@@ -34,6 +35,14 @@ from .workflow import load_results
 COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status", "value")
 KINDS = ("paper", "derived", "check")
 KIND_NAMES = {"paper": "paper claims", "derived": "derived claims", "check": "checks"}
+#: Why an expected failure fails. A failure decided by our own instrument (a coarse reference, a grid,
+#: a timing) has no cause: it is a defect to fix, marked ``defect`` until it is fixed.
+CAUSES = {
+    "contradicts": "our measurement contradicts what the paper states",
+    "pre-asymptotic": "the statement concerns a limit our resolutions do not reach (the reason says where it holds)",
+    "our-inference": "a claim we derived failed: our derivation was wrong (the reason says what)",
+    "defect": "no cause of the paper's: our own reference, grid or timing decides the verdict, a defect to fix",
+}
 
 ROUNDING = 1e-9
 """The one rounding tolerance of every paper's claims, relative: a quantity that equals another in exact
@@ -236,47 +245,66 @@ def markdown_table(claims, heading: bool = True) -> str:
     return "\n".join(lines) + "\n"
 
 
-def merge(sources, csv_path, markdown_path) -> list[Claim]:
-    """Concatenate per-paper claim files into the repository table and its Markdown."""
+def merge(sources, csv_path, markdown_path, expected_path=None, run: str = "full") -> list[Claim]:
+    """Concatenate per-paper claim files into the repository table and its Markdown; with the expected
+    verdicts, the Markdown also lists the failures by cause."""
     claims = [claim for source in sources for claim in read_claims(source)]
     write_claims(csv_path, claims)
     markdown_path = Path(markdown_path)
     temporary = markdown_path.with_suffix(".tmp")
-    temporary.write_text(markdown_table(claims))
+    causes = "" if expected_path is None else "\n" + failures_by_cause(claims, read_verdicts(expected_path, run))
+    temporary.write_text(markdown_table(claims) + causes)
     temporary.replace(markdown_path)
     return claims
 
 
-def _statuses(path, where: str, data) -> dict[str, tuple[str, str]]:
-    """``pass`` (a list of claim ids) and ``fail`` (id: one-line reason) of one part of the file."""
+class Expected(NamedTuple):
+    """The expected verdict of a claim: its status and, for a failure, why (reason) and its cause."""
+
+    status: str
+    reason: str = ""
+    cause: str = ""
+
+
+def _statuses(path, where: str, data) -> dict[str, Expected]:
+    """``pass`` (a list of claim ids) and ``fail`` (id: {cause, reason}) of one part of the file."""
     passing, failing = data.get("pass") or [], data.get("fail") or {}
     if not isinstance(passing, list) or not isinstance(failing, dict):
-        raise ValueError(f"{path}{where}: 'pass' must be a list of claim ids and 'fail' a mapping id: reason")
+        raise ValueError(f"{path}{where}: 'pass' must be a list of claim ids and 'fail' a mapping id: "
+                         "{cause, reason}")
     both = sorted(set(passing) & set(failing))
     repeated = sorted({i for i in passing if passing.count(i) > 1})
     if both or repeated:
         raise ValueError(f"{path}{where}: claim ids listed twice: {both + repeated}")
-    missing_reason = sorted(i for i, reason in failing.items() if not isinstance(reason, str) or not reason.strip())
-    if missing_reason:
-        raise ValueError(f"{path}{where}: every expected failure needs a one-line reason: {missing_reason}")
-    return {**{i: ("pass", "") for i in passing}, **{i: ("fail", reason) for i, reason in failing.items()}}
+    failures = {}
+    for i, entry in failing.items():
+        if not isinstance(entry, dict) or set(entry) != {"cause", "reason"}:
+            raise ValueError(f"{path}{where}: the expected failure {i} needs a cause and a one-line reason "
+                             "({cause: ..., reason: ...})")
+        if entry["cause"] not in CAUSES:
+            raise ValueError(f"{path}{where}: the cause of {i} must be one of {sorted(CAUSES)}, got {entry['cause']!r}")
+        if not isinstance(entry["reason"], str) or not entry["reason"].strip():
+            raise ValueError(f"{path}{where}: every expected failure needs a one-line reason: {i}")
+        failures[i] = Expected("fail", entry["reason"], entry["cause"])
+    return {**{i: Expected("pass") for i in passing}, **failures}
 
 
-def read_verdicts(path, run: str = "full") -> dict[str, tuple[str, str]]:
-    """Expected verdicts of a run: claim id -> (status, reason).
+def read_verdicts(path, run: str = "full") -> dict[str, Expected]:
+    """Expected verdicts of a run: claim id -> :class:`Expected` (status, reason, cause).
 
     The file holds the full run's verdicts under two keys: ``pass``, a list of claim ids, and
-    ``fail``, a mapping from claim id to a one-line reason. Another run (``quick``) has a section of
-    its own with the same two keys, holding only the verdicts that differ from the full run's.
+    ``fail``, a mapping from claim id to its cause (one of :data:`CAUSES`) and a one-line reason.
+    Another run (``quick``) has a section of its own with the same two keys, holding only the
+    verdicts that differ from the full run's.
     Measured values are never recorded there, only statuses.
     """
     data = yaml.safe_load(Path(path).read_text()) or {}
     if not isinstance(data, dict) or not {"pass", "fail"} & set(data):
-        raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: reason)")
+        raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: {{cause, reason}})")
     sections = set(data) - {"pass", "fail"}
     if any(not isinstance(data[name], dict) or set(data[name]) - {"pass", "fail"} for name in sections):
-        raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: reason), and a "
-                         f"section per run ({sorted(sections)}) with the same two keys")
+        raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: {{cause, reason}}), "
+                         f"and a section per run ({sorted(sections)}) with the same two keys")
     verdicts = _statuses(path, "", data)
     if run == "full":
         return verdicts
@@ -309,20 +337,50 @@ def verify(claims_path, verdicts_path, run: str = "full") -> int:
     for claim in claims:
         if claim.id not in expected:
             problems.append(f"NEW {claim.id}: {claim.status}, but no expected verdict in {verdicts_path}")
-        elif expected[claim.id][0] != claim.status:
-            reason = expected[claim.id][1]
-            problems.append(f"CHANGED {claim.id}: expected {expected[claim.id][0]}"
+        elif expected[claim.id].status != claim.status:
+            reason = expected[claim.id].reason
+            problems.append(f"CHANGED {claim.id}: expected {expected[claim.id].status}"
                             f"{f' ({reason})' if reason else ''}, got {claim.status} (measured {claim.measured}, "
                             f"tolerance {claim.tolerance})")
     present = {claim.id for claim in claims}
-    problems += [f"MISSING {i}: expected {status}, not in {claims_path}"
-                 for i, (status, _) in expected.items() if i not in present]
+    problems += [f"MISSING {i}: expected {verdict.status}, not in {claims_path}"
+                 for i, verdict in expected.items() if i not in present]
     for problem in problems:
         print(problem)
-    failing = sum(status == "fail" for status, _ in expected.values())
-    print(f"{len(problems)} differences from the expected verdicts ({failing} expected failures, "
-          f"each with its reason in {verdicts_path})")
+    print(f"{len(problems)} differences from the expected verdicts (expected: {cause_line(expected)}; each with "
+          f"its reason in {verdicts_path})")
     return 1 if problems else 0
+
+
+def cause_counts(expected) -> dict[str, int]:
+    """cause -> number of failures, for every cause (0 where none), and 'unexpected' if any."""
+    tally = {cause: sum(verdict.cause == cause for verdict in expected.values()) for cause in [*CAUSES, "unexpected"]}
+    return {cause: count for cause, count in tally.items() if cause in CAUSES or count}
+
+
+def cause_line(expected) -> str:
+    """'14 failures: 3 contradict the paper, ...' for a set of verdicts (passes are not counted)."""
+    tally = cause_counts(expected)
+    words = {"contradicts": "contradict the paper", "pre-asymptotic": "pre-asymptotic",
+             "our-inference": "our inference was wrong", "defect": "defects of ours to fix",
+             "unexpected": "not expected"}
+    return (f"{sum(tally.values())} failures: "
+            + ", ".join(f"{count} {words[cause]}" for cause, count in tally.items()))
+
+
+def failures_by_cause(claims, expected) -> str:
+    """Markdown: the failing claims with their cause and reason, counted per cause; a failure that is
+    not expected has the cause 'unexpected'."""
+    failing = [claim for claim in claims if claim.status == "fail"]
+    rows = [(claim, expected[claim.id] if claim.id in expected and expected[claim.id].status == "fail"
+             else Expected("fail", "not expected: `snakemake verify` reports it", "unexpected")) for claim in failing]
+    lines = ["## Failures by cause", "", cause_line({claim.id: verdict for claim, verdict in rows}), "",
+             "| id | kind | cause | reason |", "|---|---|---|---|"]
+    order = [*CAUSES, "unexpected"]
+    for claim, verdict in sorted(rows, key=lambda row: order.index(row[1].cause)):
+        reason = verdict.reason.replace("|", "\\|")
+        lines.append(f"| `{claim.id}` | {claim.kind} | {verdict.cause} | {reason} |")
+    return "\n".join(lines) + "\n"
 
 
 def read_values(path) -> tuple[dict[str, float], dict[str, str]]:
@@ -379,6 +437,8 @@ def main(argv=None) -> int:
     merge_parser.add_argument("--markdown", required=True)
     merge_parser.add_argument("--rates", nargs="*", default=[], help="per-paper rate tables to merge")
     merge_parser.add_argument("--rates-output", help="merged rate tables (JSON)")
+    merge_parser.add_argument("--expected", help="YAML file of expected verdicts (for the failures by cause)")
+    merge_parser.add_argument("--run", default="full", help="the run whose verdicts to use (full, or a section)")
     verify_parser = sub.add_parser("verify", help="exit 1 when a verdict differs from the expected ones")
     verify_parser.add_argument("path")
     verify_parser.add_argument("--expected", required=True, help="YAML file of expected verdicts")
@@ -391,7 +451,7 @@ def main(argv=None) -> int:
         write_values(args.path, args.reference)
         return 0
     if args.command == "merge":
-        merge(args.sources, args.csv, args.markdown)
+        merge(args.sources, args.csv, args.markdown, args.expected, args.run)
         if args.rates_output:
             merge_rates(args.rates, args.rates_output)
         return 0

@@ -1,16 +1,18 @@
 """LaTeX snippets for the replication report, written by the pipeline from its own outputs.
 
-``write_snippets(claims, rates, versions, config, outdir)`` writes:
+``write_snippets(claims, rates, versions, config, outdir, expected)`` writes:
 
 - ``claims_<paper>.tex``: each paper's claims table (a longtable);
 - ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}``, ``\\tol{<claim id>}`` and
   ``\\status{<claim id>}`` for any claim;
-- ``failures.tex``: the failing claims of every paper in one table;
+- ``failures.tex``: the failing claims of every paper in one table, with the cause and reason of each
+  (from the expected verdicts, :data:`particle_replication.claims.CAUSES`);
 - ``parameters.tex``: ``\\param{<dotted config key>}`` for every configuration value;
 - ``configuration.tex``: the whole configuration of the run, one line per key (an appendix);
 - ``summary.tex``: ``\\claimcount{<paper>.pass}``, ``.fail`` and ``.all`` over every kind, and
   ``\\claimcount{<paper>.<kind>.pass}`` (``.fail``, ``.all``) per kind, with ``all`` for the
-  three papers together (``\\claimcount{all.paper.pass}`` is the headline);
+  three papers together (``\\claimcount{all.paper.pass}`` is the headline), and
+  ``\\claimcount{cause.<cause>}`` for the failures of each cause;
 - ``rates.tex``: every fitted rate, its pairwise slopes and the fit over every window (an appendix);
 - ``versions.tex``: the software versions table (a tabular);
 - ``commit.tex``: ``\\builtfrom``, the commit the run was made from and its date.
@@ -28,7 +30,7 @@ from pathlib import Path
 
 import yaml
 
-from .claims import KINDS, read_claims
+from .claims import CAUSES, KINDS, Expected, cause_counts, read_claims, read_verdicts
 from .rates import read_rates
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
@@ -40,6 +42,13 @@ _CLAIM_TABLE_HEAD = (
     "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.3cm}>{\\raggedright\\scriptsize}p{1.6cm}"
     ">{\\raggedright}p{5.0cm}>{\\raggedright}p{1.35cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.25cm}l@{}}\n"
     "\\toprule id & kind, source & claim & published & measured & tolerance & status \\\\ \\midrule \\endhead\n"
+    "\\bottomrule \\endlastfoot\n"
+)
+_FAILURE_TABLE_HEAD = (
+    "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.6cm}>{\\raggedright\\scriptsize}p{1.2cm}"
+    ">{\\raggedright\\scriptsize}p{1.7cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.4cm}"
+    ">{\\raggedright\\arraybackslash}p{5.2cm}@{}}\n"
+    "\\toprule id & kind & cause & published & measured & reason \\\\ \\midrule \\endhead\n"
     "\\bottomrule \\endlastfoot\n"
 )
 _SYMBOLS = {"<=": r"\ensuremath{\le}", ">=": r"\ensuremath{\ge}", "+-": r"\ensuremath{\pm}"}
@@ -104,6 +113,26 @@ def _claims_table(claims) -> str:
     return _CLAIM_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
 
 
+def _failures_table(claims, expected) -> str:
+    """A longtable of the failing claims: id, kind, cause, published, measured, reason, by cause."""
+    order = [*CAUSES, "unexpected"]
+    rows = []
+    for claim in sorted(claims, key=lambda claim: order.index(_verdict(claim, expected).cause)):
+        verdict = _verdict(claim, expected)
+        cells = [f"\\texttt{{{_breakable(claim.id)}}}", tex(claim.kind), tex(verdict.cause), cell(claim.published),
+                 cell(claim.measured), tex(verdict.reason)]
+        rows.append(" & ".join(cells) + " \\\\\n")
+    return _FAILURE_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
+
+
+def _verdict(claim, expected) -> Expected:
+    """The expected verdict of a failing claim, or 'unexpected' when it was expected to pass."""
+    verdict = expected.get(claim.id)
+    if verdict is None or verdict.status != "fail":
+        return Expected("fail", "not expected: snakemake verify reports it", "unexpected")
+    return verdict
+
+
 def _define(family: str, key: str, value: str) -> str:
     return f"\\expandafter\\def\\csname {family}@{key}\\endcsname{{{value}}}\n"
 
@@ -137,8 +166,10 @@ def _rate_table(rate) -> str:
             + "\\bottomrule\\end{tabular}}\\par\\medskip\n")
 
 
-def write_snippets(claims_csv, rates_json, versions_md, config, outdir) -> None:
-    """Write every snippet to ``outdir``; ``config`` is the run's configuration (dict or YAML path)."""
+def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected) -> None:
+    """Write every snippet to ``outdir``; ``config`` is the run's configuration (dict or YAML path),
+    ``expected`` its expected verdicts (:func:`particle_replication.claims.read_verdicts`), which give
+    the failures their causes."""
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     claims = read_claims(claims_csv)
@@ -159,7 +190,9 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir) -> None:
         if paper != "all":
             (outdir / f"claims_{paper}.tex").write_text(_claims_table(rows))
     failures = [claim for claim in claims if claim.status == "fail"]
-    (outdir / "failures.tex").write_text(_claims_table(failures) if failures else "No claim fails.\n")
+    (outdir / "failures.tex").write_text(_failures_table(failures, expected) if failures else "No claim fails.\n")
+    tally = cause_counts({claim.id: _verdict(claim, expected) for claim in failures})
+    summary += [_define("claimcount", f"cause.{cause}", str(count)) for cause, count in tally.items()]
     (outdir / "summary.tex").write_text("".join(summary))
     (outdir / "rates.tex").write_text("".join(_rate_table(rate) for rate in read_rates(rates_json)))
     if not isinstance(config, dict):
@@ -189,8 +222,11 @@ def main(argv=None) -> int:
     parser.add_argument("versions")
     parser.add_argument("config")
     parser.add_argument("outdir")
+    parser.add_argument("--expected", required=True, help="YAML file of expected verdicts (the failures' causes)")
+    parser.add_argument("--run", default="full", help="the run whose verdicts to use (full, or a section)")
     args = parser.parse_args(argv)
-    write_snippets(args.claims, args.rates, args.versions, args.config, args.outdir)
+    write_snippets(args.claims, args.rates, args.versions, args.config, args.outdir,
+                   read_verdicts(args.expected, args.run))
     return 0
 
 
