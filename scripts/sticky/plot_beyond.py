@@ -19,7 +19,7 @@ METHODS = {  # key in the results, label, colour, marker
 
 
 def limits(d, p, output):
-    fig, axes = new_figure(1, 3, width=11, height=4.0, squeeze=False)
+    fig, axes = new_figure(1, 3, width=11, height=5.2, squeeze=False)
     edges = np.linspace(*p["domain"], int(d["reference_cells"]) + 1)
     centres = 0.5 * (edges[1:] + edges[:-1])
     for j, case in enumerate(map(str, d["cases"])):
@@ -31,7 +31,6 @@ def limits(d, p, output):
             ax.plot(centres, d[f"{case}_upwind_w"][gamma], style, color="C2", lw=0.8, label=f"{name} upwind for (1.7)")
         ax.set(xlim=(-12, 12), xlabel="x", ylabel="Riemann invariant")
         label_panel(ax, f"({'ab'[j]}) {case} case, t = {float(d['t']):g}")
-    axes[0, 0].legend(loc="upper left", fontsize="small")
     ax = axes[0, 2]
     n = d["limit_n"]
     for j, case in enumerate(map(str, d["cases"])):
@@ -39,10 +38,16 @@ def limits(d, p, output):
         ax.plot(n, d[f"{case}_limit_to_hll"], "o-", color=colour, label=f"{case}: to HLL")
         ax.plot(n, d[f"{case}_limit_to_upwind"], "s--", color=colour, mfc="none", label=f"{case}: to upwind (1.7)")
         ax.axhline(float(d[f"{case}_hll_gap"]), color=colour, lw=0.7, ls=":")
-    ax.plot(n, 2.0 / n, "k:", lw=0.7, label="slope -1; dotted: HLL self-distance")
-    ax.set(xscale="log", yscale="log", xlabel="n per type", ylabel="W1^(d) distance")
+        ax.axhline(float(d[f"{case}_upwind_gap"]), color=colour, lw=0.7, ls="-.")
+    ax.plot(n, 2.0 / n, "k:", lw=0.7, label="slope -1")
+    ax.plot([], [], color="0.4", lw=0.7, ls=":", label="HLL to its half resolution")
+    ax.plot([], [], color="0.4", lw=0.7, ls="-.", label="upwind to its half resolution")
+    ax.set(xscale="log", yscale="log", xlabel="n per type", ylabel=r"$W_1^{(d)}$ distance")
     label_panel(ax, "(c) exact MSPD against the schemes")
-    ax.legend(fontsize="small", loc="lower left")
+    # One legend under the three panels: the curves of (a, b), then the distances of (c).
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    more = ax.get_legend_handles_labels()
+    fig.legend(handles + more[0], labels + more[1], loc="outside lower center", ncol=4, fontsize="small")
     suptitle(fig, "Which limit? Exact MSPD, conservative HLL and nonconservative upwind on the p-system")
     save_figure(fig, output.pdf, output.png)
 
