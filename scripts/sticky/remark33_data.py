@@ -1,5 +1,7 @@
 """Remark 3.3: exact error t/(4n) from one Dirac mass (Burgers); for the concave flux the SPD is the
-entropy solution of the discretised data, checked against an independent Godunov solver."""
+entropy solution of the discretised data, checked exactly (Rankine-Hugoniot speed and Oleinik's
+condition at every jump, at every n and t of the study; Burgers from two atoms as the contrast) and
+against an independent Godunov solver."""
 
 import math
 
@@ -9,6 +11,7 @@ from particle_methods.finite_volume.fluxes import BURGERS, CONCAVE, burgers_flux
 from particle_methods.finite_volume.grids import cell_averages_of_step_cdf, l1_distance_to_step_cdf
 from particle_methods.finite_volume.scalar import godunov
 from particle_methods.norms import w1_to_measure
+from particle_methods.sticky.admissibility import admissibility_violation, spd_state
 from particle_methods.sticky.cases import SCALAR_CASES
 from particle_methods.sticky.exact import BurgersSolution
 from particle_methods.sticky.measures import Atoms
@@ -28,6 +31,17 @@ def godunov_distance(flux, x, positions, t, cells_per_unit, cfl):
     return l1_distance_to_step_cdf(values, edges, positions)
 
 
+def admissibility_table(case, n_values, times, points):
+    """The exact test of Remark 3.3 (:func:`admissibility_violation`) on the SPD of ``case`` started from
+    (2.1), for every n of ``n_values`` and t of ``times``: rows of Admissibility results, one per n."""
+    table = []
+    for n in n_values:
+        progress(f"admissibility of the SPD: n = {n}, t = {times.tolist()}")
+        x, v = case.initial_state(int(n))
+        table.append([admissibility_violation(*spd_state(x, v, t), case.flux, points=points) for t in times])
+    return table
+
+
 def run(p, output):
     dirac_n = np.asarray(p["dirac_n"], dtype=np.int64)
     dirac_times = np.asarray(p["dirac_times"], dtype=float)
@@ -37,6 +51,14 @@ def run(p, output):
         for j, n in enumerate(dirac_n):
             positions = spd_positions(np.zeros(n), velocities_from_flux(burgers_flux, int(n)), t)
             dirac_errors[i, j] = w1_to_measure(solution, positions)
+
+    # The exact test: the SPD state at each n and t against (RH) and (E), for the concave flux with the
+    # Laplace data (2.1) and, as the contrast where the remark does not apply, Burgers from two atoms.
+    check = p["admissibility"]
+    check_n = np.asarray(check["n"], dtype=np.int64)
+    check_times = np.asarray(check["times"], dtype=float)
+    concave = admissibility_table(SCALAR_CASES["concave_laplace"], check_n, check_times, check["points"])
+    convex_check = admissibility_table(SCALAR_CASES["burgers_two_atoms"], check_n, check_times, check["points"])
 
     # Concave flux, Laplace data (2.1): SPD of the discretised data against Godunov from the same data.
     case = SCALAR_CASES["concave_laplace"]
@@ -69,7 +91,12 @@ def run(p, output):
     progress(f"refined grids for n = {refinement['n']}, t = {refinement['t']:g}: {refinement['cells_per_unit']}")
     refined = np.array([godunov_distance(CONCAVE, x, positions, refinement["t"], int(c), p["cfl"])
                         for c in refinement["cells_per_unit"]])
-    save_results(output, refined_cells=np.asarray(refinement["cells_per_unit"]), refined_distances=refined,
+    save_results(output, admissibility_n=check_n, admissibility_times=check_times,
+                 admissibility_rankine_hugoniot=[[r.rankine_hugoniot for r in row] for row in concave],
+                 admissibility_entropy=[[r.entropy for r in row] for row in concave],
+                 admissibility_clusters=[[r.clusters for r in row] for row in concave],
+                 convex_admissibility=[[r.largest for r in row] for row in convex_check],
+                 refined_cells=np.asarray(refinement["cells_per_unit"]), refined_distances=refined,
                  refined_n=refinement["n"], refined_t=refinement["t"], dirac_n=dirac_n, dirac_times=dirac_times,
                  dirac_errors=dirac_errors,
                  godunov_n=n_values, godunov_times=times, cells_per_unit=cells, distances=distances,

@@ -31,7 +31,6 @@ FIT_WINDOWS = {
     "sticky.fig2.order_window": ["sticky.fig2.error_p"],
     "sticky.fig3.decay_window": [("sticky.fig3.error_p", "sticky.fig3.rate_p")],
     "sticky.lemma21.rate_window": ["sticky.lemma21.n_values"],
-    "sticky.remark33.window": ["sticky.remark33.cells_per_unit"],
     "sticky.tspd_convergence.window": ["sticky.tspd_convergence.deltas", "sticky.tspd_convergence.n_values"],
     "sticky.cost.window": ["sticky.cost.hull_n", "sticky.cost.rank_n", "sticky.cost.tspd_n",
                            "sticky.cost.steps_values"],

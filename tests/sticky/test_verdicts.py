@@ -9,7 +9,11 @@ import numpy as np
 import pytest
 import yaml
 
+from particle_methods.finite_volume.fluxes import burgers_flux, concave_flux
+from particle_methods.sticky import admissibility_violation, spd_state, velocities_from_flux
+from particle_methods.sticky.cases import SCALAR_CASES
 from particle_methods.systems import MINUS, PLUS, PSystem
+from particle_replication.claims import ROUNDING
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import sticky as v
 
@@ -106,7 +110,44 @@ def test_theorem31_bound_can_fail():
     assert status(v.theorem31_claims(good, bad), "thm31.bound") == "fail"
 
 
-def remark33(distance_shape, dirac_factor=4.0):
+def concave_spd(n, t):
+    """The SPD of the concave flux from the Laplace data (2.1): the pipeline's states."""
+    return spd_state(*SCALAR_CASES["concave_laplace"].initial_state(n), t)
+
+
+def two_atoms_spd(n, t):
+    """The SPD of Burgers' flux from the two atoms of Figure 2: every upward jump is a rarefaction."""
+    return spd_state(*SCALAR_CASES["burgers_two_atoms"].initial_state(n), t)
+
+
+def asymmetric(n):
+    """Sorted normal samples with the concave flux's velocities: clusters of unequal sizes merge."""
+    return np.sort(np.random.default_rng(n).normal(size=n)), velocities_from_flux(concave_flux, n)
+
+
+def free_flight(n, t):
+    """No sticking: the particles cross."""
+    x, v = asymmetric(n)
+    return x + t * v, v
+
+
+def late_merge(n, t):
+    """The SPD's positions, each particle still at the velocity of its cluster of time t - 1/2."""
+    x, v = asymmetric(n)
+    return spd_state(x, v, t)[0], spd_state(x, v, max(t - 0.5, 0.0))[1]
+
+
+def admissibility(state, flux=concave_flux, n_values=(4, 32), times=(0.0, 2.0, 3.0, 17.0)):
+    """The keys of the exact test, measured by admissibility_violation on the states ``state(n, t)``."""
+    table = [[admissibility_violation(*state(n, t), flux) for t in times] for n in n_values]
+    return {"admissibility_n": np.array(n_values), "admissibility_times": np.array(times),
+            "admissibility_rankine_hugoniot": np.array([[r.rankine_hugoniot for r in row] for row in table]),
+            "admissibility_entropy": np.array([[r.entropy for r in row] for row in table]),
+            "admissibility_clusters": np.array([[r.clusters for r in row] for row in table]),
+            "convex_admissibility": np.full((len(n_values), len(times)), 0.1)}
+
+
+def remark33(distance_shape, dirac_factor=4.0, state=concave_spd, flux=concave_flux):
     n, t = np.array([1, 10, 100]), np.array([1.0, 10.0])
     cells = np.array([50, 100, 200, 400])
     return {"dirac_n": n, "dirac_times": t, "dirac_errors": t[:, None] / (dirac_factor * n[None, :]),
@@ -114,33 +155,61 @@ def remark33(distance_shape, dirac_factor=4.0):
             "distances": np.array([[distance_shape(1.0 / cells)] * 2] * 2),
             "total_errors": np.full((2, 2), 0.5), "initial_errors": np.ones(2),
             "convex_n": 4, "convex_t": 1.0, "convex_distances": 1 / 16 + 1.0 / cells,
-            "refined_cells": cells[-3:], "refined_distances": 1.0 / cells[-3:], "refined_n": 256, "refined_t": 1.0}
+            "refined_cells": cells[-3:], "refined_distances": 1.0 / cells[-3:], "refined_n": 256, "refined_t": 1.0,
+            **admissibility(state, flux)}
 
 
-def test_remark33_godunov_distance_must_vanish_at_first_order():
-    assert status(v.remark33_claims(remark33(lambda h: 0.3 * h), quiet(), 3, 0.8, 0.1), "remark33.concave") == "pass"
-    plateau = remark33(lambda h: 1e-3 + 0.3 * h)  # a non-entropic SPD: the distance stops at its own error
-    assert status(v.remark33_claims(plateau, quiet(), 3, 0.8, 0.1), "remark33.concave") == "fail"
+R33 = CONFIG["remark33"]
+
+
+def remark33_claims(data):
+    """The Remark 3.3 claims on ``data`` with the config's factor and tolerance."""
+    return v.remark33_claims(data, R33["godunov_decrease"], R33["convex"]["tolerance"])
+
+
+def test_remark33_concave_passes_on_the_spd_of_the_concave_flux():
+    claims = remark33_claims(remark33(lambda h: 0.3 * h))
+    assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims]
+
+
+@pytest.mark.parametrize("state, flux", [(two_atoms_spd, burgers_flux), (free_flight, concave_flux),
+                                         (late_merge, concave_flux)])
+def test_remark33_concave_fails_where_the_spd_is_not_the_entropy_solution(state, flux):
+    """A convex flux (Figure 2: upward jumps are rarefactions), particles that cross instead of sticking,
+    clusters whose momenta merge late."""
+    assert status(remark33_claims(remark33(lambda h: 0.3 * h, state=state, flux=flux)), "remark33.concave") == "fail"
+
+
+def test_remark33_concave_fails_on_a_violation_just_above_rounding():
+    data = remark33(lambda h: 0.3 * h)
+    data["admissibility_entropy"][1, 2] = 10 * ROUNDING
+    assert status(remark33_claims(data), "remark33.concave") == "fail"
+
+
+def test_remark33_godunov_distance_must_fall_towards_zero_under_refinement():
+    assert status(remark33_claims(remark33(lambda h: 0.3 * h)), "remark33.godunov_refinement") == "pass"
+    plateau = remark33(lambda h: 1 / 16 + 0.3 * h)  # a non-entropic SPD: the distance stops at its own error
+    assert status(remark33_claims(plateau), "remark33.godunov_refinement") == "fail"
 
 
 def test_remark33_distances_at_rounding_level_count_as_exact_agreement():
     data = remark33(lambda h: 0.3 * h)
-    data["distances"][0, 1] = 1e-16 / data["cells_per_unit"]  # exact to rounding, no order to fit
-    assert status(v.remark33_claims(data, quiet(), 3, 0.8, 0.1), "remark33.concave") == "pass"
-    data["distances"][1, 1] = 1e-3 + 1e-16  # but a plateau elsewhere still fails
-    assert status(v.remark33_claims(data, quiet(), 3, 0.8, 0.1), "remark33.concave") == "fail"
+    data["distances"][0, 1] = 1e-16 / data["cells_per_unit"]  # grows under refinement, but only rounding
+    assert status(remark33_claims(data), "remark33.godunov_refinement") == "pass"
+    data["distances"][1, 1] = 1 / 16 + 1e-16 / data["cells_per_unit"]  # but a plateau elsewhere still fails
+    assert status(remark33_claims(data), "remark33.godunov_refinement") == "fail"
 
 
 def test_remark33_contraction_can_fail():
     data = remark33(lambda h: h)
     data["total_errors"][1, 1] = 1.5  # an error above the initial discretisation error
-    assert status(v.remark33_claims(data, quiet(), 3, 0.8, 0.1), "remark33.contraction") == "fail"
+    assert status(remark33_claims(data), "remark33.contraction") == "fail"
 
 
 def test_remark33_dirac_error_must_be_t_over_4n():
-    assert status(v.remark33_claims(remark33(lambda h: h), quiet(), 3, 0.8, 0.1), "remark33.dirac") == "pass"
+    assert status(remark33_claims(remark33(lambda h: h)), "remark33.dirac") == "pass"
     stuck = remark33(lambda h: h, dirac_factor=2.0)
-    assert status(v.remark33_claims(stuck, quiet(), 3, 0.8, 0.1), "remark33.dirac") == "fail"
+    assert status(remark33_claims(stuck), "remark33.dirac") == "fail"
 
 
 def lemma21(exponential_limit=0.25, weibull=lambda n, a: (0.25 * np.log(n) ** (1 / a) + 1) / n,

@@ -13,11 +13,14 @@ Public entry points:
   iterated typewise SPD for diagonal systems (sections 4.1, 5.2.1), :class:`ScalarLaw` a scalar
   law as a system with d = 1; :func:`mspd_exact`: the
   MSPD itself, event by event (section 5.2);
-- :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants.
+- :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants;
+- :func:`spd_state`, :func:`admissibility_violation`: the SPD's positions and velocities at time t, and
+  the exact test of Remark 3.3 (Rankine-Hugoniot speeds and Oleinik's condition at every jump).
 """
 
 from ..finite_volume.fluxes import burgers_flux, concave_flux
 from ..systems import PSystem
+from .admissibility import Admissibility, admissibility_violation, spd_state
 from .exact import BurgersSolution, ConcaveLaplaceSolution
 from .measures import (
     Atoms,
@@ -36,6 +39,7 @@ from .multitype_events import EventCounts, mspd_exact
 from .spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux, velocities_from_levels
 
 __all__ = [
+    "Admissibility",
     "Atoms",
     "BurgersSolution",
     "ConcaveLaplaceSolution",
@@ -49,6 +53,7 @@ __all__ = [
     "TruncatedPareto",
     "Uniform",
     "Weibull",
+    "admissibility_violation",
     "averaged_quantiles",
     "burgers_flux",
     "cluster_sizes",
@@ -59,6 +64,7 @@ __all__ = [
     "mspd_trajectory",
     "rank_velocities",
     "spd_positions",
+    "spd_state",
     "spd_trajectories",
     "velocities_from_flux",
     "velocities_from_levels",

@@ -145,6 +145,12 @@ RESULTS = (
         "results/sticky/remark33.npz",
         "remark33_data.py",
         (
+            "admissibility_n",
+            "admissibility_times",
+            "admissibility_rankine_hugoniot",
+            "admissibility_entropy",
+            "admissibility_clusters",
+            "convex_admissibility",
             "refined_cells",
             "refined_distances",
             "refined_n",
@@ -163,7 +169,8 @@ RESULTS = (
             "convex_t",
         ),
         Job(
-            "Remark 3.3: the exact t/(4n) error from one Dirac mass; SPD against front tracking",
+            "Remark 3.3: the exact t/(4n) error from one Dirac mass; the exact admissibility test of the SPD "
+            "(Rankine-Hugoniot speeds, Oleinik's condition); SPD against Godunov",
             lambda s: {"cfg": s["remark33"]},
         ),
     ),
