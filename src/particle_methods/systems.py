@@ -70,6 +70,13 @@ def sound_speed_formula(u, nu, kappa):
     return speed_scale / np.sqrt(1.0 + (kappa * (u / nu - 0.5)) ** 2)
 
 
+def speed_primitive_formula(spread, a, coefficient):
+    """The p-system's primitive coefficient * atan(sinh(a spread)) of :meth:`PSystem.speed_primitive`
+    (coefficient = -A/a, spread = w^+ - w^-), without checks (as above): the compiled MSPD
+    (:mod:`particle_methods.sticky.multitype_events`) evaluates the same expression."""
+    return coefficient * np.arctan(np.sinh(a * spread))
+
+
 def _same_shape(name_a: str, a: np.ndarray, name_b: str, b: np.ndarray) -> None:
     try:
         np.broadcast_shapes(a.shape, b.shape)
@@ -105,6 +112,11 @@ class PSystem:
     def speed_scale(self) -> float:
         """kappa / (2 nu asinh(kappa/2)): the largest characteristic speed."""
         return self.kappa / (2.0 * self.nu * self.a)
+
+    @property
+    def primitive_coefficient(self) -> float:
+        """-A/a: the factor of atan(sinh(a (w^+ - w^-))) in :meth:`speed_primitive`."""
+        return -(self.speed_scale / self.a)
 
     @property
     def speed_lipschitz(self) -> float:
@@ -167,4 +179,4 @@ class PSystem:
             raise ValueError(f"levels must have a last axis of length d = {self.d} (w^-, w^+), got shape "
                              f"{levels.shape}")
         spread = levels[..., PLUS] - levels[..., MINUS]
-        return -(self.speed_scale / self.a) * np.arctan(np.sinh(self.a * spread))
+        return speed_primitive_formula(spread, self.a, self.primitive_coefficient)

@@ -1,4 +1,8 @@
-"""Exact MSPD (event-driven): the scalar SPD, the iterated TSPD's limit, invariants, event counts."""
+"""Exact MSPD (event-driven): the scalar SPD, the iterated TSPD's limit, invariants, event counts,
+the compiled p-system primitive against the Python one, and n = 20,000 per type in O(n d) memory."""
+
+import math
+import tracemalloc
 
 import numpy as np
 import pytest
@@ -10,7 +14,7 @@ from particle_methods.norms import w1_between_samples
 from particle_methods.sticky import mspd_exact
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, rank_velocities
-from particle_methods.sticky.multitype_events import MAX_TABLE
+from particle_methods.sticky.multitype_events import MAX_EVENTS, MAX_PYTHON_EVENTS, _Run
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
 from particle_methods.systems import MINUS, PLUS, PSystem
 
@@ -30,6 +34,24 @@ class ThreeFields:
         own = levels[..., gamma]
         others = levels.sum(axis=-1) - own
         return (2.0 - 2.0 * gamma) * own + self.eps * (0.5 * own**2 + own * others)
+
+
+class PythonPSystem(PSystem):
+    """The p-system with its primitive called from Python: mspd_exact takes the path of any user system."""
+
+    def speed_primitive(self, gamma, levels):
+        return super().speed_primitive(gamma, levels)
+
+
+class SlowsDown:
+    """d = 2, lambda^0 = 1 - 3 w^1 and lambda^1 = -0.3: (USH) holds at the start of the run below (w^1 = 0 for
+    every particle of type 0) and fails once a particle of type 0 has passed 4 of the 8 of type 1."""
+
+    d = 2
+
+    def speed_primitive(self, gamma, levels):
+        own = levels[..., gamma]
+        return own * (1.0 - 3.0 * levels[..., 1]) if gamma == 0 else -0.3 * own
 
 
 def distance(a, b):
@@ -173,7 +195,9 @@ def test_refuses_a_system_without_uniform_strict_hyperbolicity():
     ((np.zeros((2, 4)), SYSTEM, [-1.0]), ValueError, "non-negative"),
     ((np.zeros((2, 4)), SYSTEM, [np.inf]), ValueError, "times contains NaN or infinite"),
     ((np.zeros((2, 4)), SYSTEM, "1"), TypeError, "times must be"),
-    ((np.zeros((2, int(np.sqrt(MAX_TABLE / 2)) + 1)), SYSTEM, [1.0]), ValueError, "MAX_TABLE"),
+    ((np.zeros((2, math.isqrt(int(MAX_EVENTS)) + 1)), SYSTEM, [1.0]), ValueError, "MAX_EVENTS"),
+    ((np.zeros((2, math.isqrt(MAX_PYTHON_EVENTS) + 1)), PythonPSystem(), [1.0]), ValueError, "MAX_PYTHON_EVENTS"),
+    ((np.zeros((2, 50_000)), SYSTEM, np.zeros(1001)), ValueError, "MAX_POSITIONS"),
     ((np.array([[0.0, 1.0], [0.0, 1.0]]), SYSTEM, [1e308]), ValueError, "may overflow"),
 ])
 def test_bad_input_is_refused(args, error, message):
@@ -184,3 +208,81 @@ def test_bad_input_is_refused(args, error, message):
 def test_return_events_must_be_a_bool():
     with pytest.raises(TypeError, match="return_events"):
         mspd_exact(np.zeros((2, 3)), SYSTEM, [1.0], return_events="yes")
+
+
+def test_the_old_table_limit_is_gone():
+    # The velocity table of d (n+1)^d values stopped the call at n = 4999 per type; the crossing bound
+    # d(d-1)n^2/2 + d n is now the only limit on n, and admits 20,000 per type for a p-system.
+    n = 20_000
+    assert n * n + 2 * n <= MAX_EVENTS
+    assert MAX_PYTHON_EVENTS < n * n  # a Python primitive is called at every crossing: far fewer
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_compiled_primitive_gives_the_python_primitives_dynamics(case):
+    # The compiled p-system path evaluates the primitive with libm; the Python path calls
+    # PSystem.speed_primitive (NumPy) at the same levels, which is what the velocity table held: the two
+    # agree to rounding, with the same events.
+    x = psystem_initial_configuration(case, CASES[case], 100)
+    compiled, events = mspd_exact(x, SYSTEM, [0.5, 2.0], return_events=True)
+    python, python_events = mspd_exact(x, PythonPSystem(), [0.5, 2.0], return_events=True)
+    assert events == python_events and events.crossings > 3000
+    assert np.abs(compiled - python).max() <= 1e-12 * np.abs(python).max()
+
+
+def test_refuses_velocities_that_break_ush_during_the_run():
+    # The velocities are computed event by event: (USH) is checked on each, not only on those at the start.
+    n = 8
+    x = np.array([np.linspace(-1.0, -0.3, n), np.linspace(0.0, 0.7, n)])
+    start = rank_velocities(x, SlowsDown())
+    assert start[0].min() > start[1].max()  # (USH) holds at the ranks of x
+    np.testing.assert_allclose(mspd_exact(x, SlowsDown(), [0.1])[0], x + 0.1 * start, atol=1e-14)  # no event yet
+    with pytest.raises(ValueError, match="USH"):
+        mspd_exact(x, SlowsDown(), [10.0])
+
+
+def pairs_behind(first, second):
+    """Pairs (i, j) with first[i] < second[j] (both sorted): O(n log n), no n x n table."""
+    return int(np.sum(second.size - np.searchsorted(second, first, side="right")))
+
+
+def test_20000_particles_per_type_run_in_o_n_memory():
+    # A configuration with no event (type 0 ahead, moving right; type 1 behind, moving left, each
+    # spreading): the free flight at the velocities (1.8), n = 20,000 per type.
+    n = 20_000
+    x = np.array([np.linspace(1.0, 2.0, n), np.linspace(-2.0, -1.0, n)])
+    mspd_exact(x[:, :10], SYSTEM, [1.0])  # compiled before measuring
+    tracemalloc.start()
+    try:
+        out, events = mspd_exact(x, SYSTEM, [3.0], return_events=True)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert events == (0, 0, 0, 0)
+    np.testing.assert_allclose(out[0], x + 3.0 * rank_velocities(x, SYSTEM), rtol=1e-10)
+    # 6 MB measured: about 20 words per particle, where the table held d (n+1)^d / (d n) = 20,001.
+    assert peak < 40 * 8 * x.size
+
+
+def test_run_arrays_grow_linearly_in_n():
+    # Every array of a run has d n rows (clusters) of at most d entries, or n entries: O(d^2 n) words.
+    sizes = {(d, n): _Run.allocate(np.zeros((d, n))).nbytes() for d in (2, 3) for n in (1000, 2000, 20_000)}
+    for d in (2, 3):
+        per_particle = (sizes[d, 20_000] - sizes[d, 2000]) / (18_000 * d)
+        assert sizes[d, 20_000] - sizes[d, 2000] == 18 * (sizes[d, 2000] - sizes[d, 1000])  # affine in n
+        assert per_particle <= 8 * (16 + d)  # 13 arrays of d n entries, counts (d n, d), 2 of n
+
+
+def test_20000_particles_per_type_cross_one_pair_at_a_time():
+    # The rarefaction case with n = 20,000 per type up to t = 1e-3 (about 6e5 crossings): singletons only,
+    # every crossing one (-, +) pair changing order, and the flow property.
+    n = 20_000
+    x = psystem_initial_configuration("rarefaction", CASES["rarefaction"], n)
+    s, t = 4e-4, 1e-3
+    (middle, end), events = mspd_exact(x, SYSTEM, [s, t], return_events=True)
+    assert events.merges == 0 and events.splits == 0 and events.member_updates == 2 * events.crossings
+    # A crossing puts a - particle ahead of a + particle: one more pair with the + particle behind.
+    assert events.crossings == pairs_behind(end[PLUS], end[MINUS]) - pairs_behind(x[PLUS], x[MINUS]) > 10**5
+    assert np.all(np.diff(end, axis=1) > 0)
+    assert np.abs(end - x).max() <= t * SYSTEM.speed_scale * (1 + 1e-9)
+    np.testing.assert_allclose(mspd_exact(middle, SYSTEM, [t - s])[0], end, rtol=0, atol=1e-9)

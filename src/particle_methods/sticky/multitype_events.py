@@ -22,15 +22,28 @@ the next one, in an indexed binary heap. At an event:
   moving at its mean. Every other particle keeps its rank, hence its velocity, and by the flow
   property of the SPD its motion.
 
-Velocities (1.8) are read from a table built once from the primitive P_gamma of lambda^gamma in
-its own variable at every level grid point (k_1/n, ..., k_d/n): lambda~^gamma_k = n (P_gamma(..,
-k/n, ..) - P_gamma(.., (k-1)/n, ..)), as in :mod:`.mspd`. The grid holds (n+1)^d points and d of
-them per point is at most :data:`MAX_TABLE`; on it (USH) is checked for every velocity.
+Velocities (1.8) are differences of the primitive P_gamma of lambda^gamma in its own variable:
+lambda~^gamma_k = n (P_gamma(.., k/n, ..) - P_gamma(.., (k-1)/n, ..)), the other levels being the
+counts of the other types behind the particle over n, as in :mod:`.mspd`. They are computed when
+an event needs them, at the ranks of that event only: at the start for every particle, then at a
+crossing for the members of its two clusters, m + 1 values of the primitive for a cluster of m
+members. No velocity is kept for ranks that no particle occupies (a table over every rank held
+d (n+1)^d of them), so a run holds O(d^2 n) words: d n clusters with their d counts each, as many
+as the ranks of :func:`~particle_methods.sticky.mspd.ranks_kernel`; for d = 2, 128 bytes per
+particle. For a :class:`~particle_methods.systems.PSystem` the primitive is evaluated inside the
+compiled event loop (:func:`~particle_methods.systems.speed_primitive_formula`, with libm's sinh
+and atan where NumPy has its own: the results agree to rounding). Any other system's
+``speed_primitive`` is a Python method: the loop leaves the compiled kernel at each crossing for
+it and resumes there (:data:`MAX_PYTHON_EVENTS`). (USH) is checked on every velocity the run
+computes: each must be above every velocity of the higher types computed so far and below those of
+the lower types, else the call stops with a ValueError. That is what the algorithm relies on: a
+cluster of a higher type behind one of a lower type never catches up with it.
+
 By (USH) every pair of particles of different types crosses at most once, so there are at most
-d(d-1)n^2/2 crossings. A crossing of clusters a and b makes |a| |b| pairs cross and costs O(|a| + |b|)
-<= O(|a| |b| + 1) member updates and blocks, and a merge undoes one block: every count of
-:class:`EventCounts` is O(d^2 n^2). A call is refused when the crossing bound d(d-1)n^2/2 + d n
-exceeds :data:`MAX_EVENTS`.
+d(d-1)n^2/2 crossings (section 5.2). A crossing of clusters a and b makes |a| |b| pairs cross and
+costs O(|a| + |b|) <= O(|a| |b| + 1) member updates and blocks, and a merge undoes one block: every
+count of :class:`EventCounts` is O(d^2 n^2). A call is refused when the crossing bound
+d(d-1)n^2/2 + d n exceeds :data:`MAX_EVENTS`.
 """
 
 from __future__ import annotations
@@ -39,17 +52,22 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..jit import njit
-from ..systems import checked_primitive
+from ..jit import NO_RUNTIME, njit
+from ..systems import PSystem, checked_primitive, speed_primitive_formula
 from ..validation import finite_array, finite_result, instance
 from .mspd import checked_configuration, ranks_kernel
-from .spd import check_reach
+from .spd import MAX_POSITIONS, check_reach
 
-#: Largest velocity table d (n+1)^d one call builds (400 MB): n <= 4999 for d = 2.
-MAX_TABLE = 5 * 10**7
+#: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts: n = 21,212 per type for d = 2. The
+#: p-system cases with n = 20,000 per type (bound 4.0e8) take 60-65 s (rarefaction, 1.8e8 crossings)
+#: and 35-40 s (shocks, 1.3e8) up to t = 2 (benchmarks/bench_mspd_exact.py); a run reaching the bound,
+#: at the same 0.35 us per crossing, under 3 minutes. Memory is no limit: 128 bytes per particle.
+MAX_EVENTS = 4.5 * 10**8
 
-#: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts (with the other events, about a minute).
-MAX_EVENTS = 2 * 10**8
+#: Largest crossing bound d(d-1) n^2 / 2 for a system whose ``speed_primitive`` is Python (any but a
+#: :class:`~particle_methods.systems.PSystem`): each crossing then costs two calls of it from Python,
+#: about 55 us, so 10**6 crossings take about a minute (n = 1000 per type for d = 2).
+MAX_PYTHON_EVENTS = 10**6
 
 _NONE = -1
 
@@ -67,29 +85,66 @@ class EventCounts(NamedTuple):
     """velocities (1.8) recomputed at crossings: the work of the crossings"""
 
 
-@njit
-def _speed(table, strides, gamma, k, counts):
-    """lambda~^gamma_k (1.8) of particle gamma:k (0-based k) with ``counts[g]`` particles of type g behind it."""
-    flat = strides[gamma, gamma] * k
-    for g in range(counts.size):
-        if g != gamma:
-            flat += strides[gamma, g] * counts[g]
-    return table[gamma, flat]
+_primitive_formula = njit(speed_primitive_formula)
 
 
-@njit
+@njit(inline="always")
+def _psystem_speeds(a, coefficient, gamma, lo, hi, row, lam):
+    """Velocities (1.8) lam[gamma, lo:hi] of the p-system's particles gamma:lo .. gamma:hi-1 with ``row[g]``
+    particles of type g behind them, from the m + 1 = hi - lo + 1 values of the primitive of (5.7) in its own
+    variable, P = coefficient * atan(sinh(a (w^+ - w^-))), at the own levels lo/n .. hi/n: particle k moves
+    at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+."""
+    n = lam.shape[1]
+    other = row[1 - gamma] / n
+    level = lo / n
+    below = _primitive_formula(other - level if gamma == 0 else level - other, a, coefficient)
+    for k in range(lo, hi):
+        level = (k + 1) / n
+        above = _primitive_formula(other - level if gamma == 0 else level - other, a, coefficient)
+        lam[gamma, k] = n * (above - below)
+        below = above
+
+
+@njit(inline="always")
+def _record_speeds(lam, gamma, lo, hi, extremes, report):
+    """Fold the velocities lam[gamma, lo:hi] into the extremes (row 0 lowest, row 1 highest per type) and
+    check (USH) when one moved: every velocity of a type above every velocity of each higher type. Returns
+    False (the offending lower type, its lowest and the higher types' highest velocity in ``report``) if not."""
+    lowest, highest = extremes[0, gamma], extremes[1, gamma]
+    for k in range(lo, hi):
+        speed = lam[gamma, k]
+        if not speed == speed:  # NaN: no order at all
+            report[0], report[1], report[2] = gamma, speed, speed
+            return False
+        lowest = min(lowest, speed)
+        highest = max(highest, speed)
+    if lowest == extremes[0, gamma] and highest == extremes[1, gamma]:
+        return True  # nothing new: the check made when these extremes were reached holds
+    extremes[0, gamma], extremes[1, gamma] = lowest, highest
+    d = extremes.shape[1]
+    for lower in range(d - 1):
+        fastest_above = -np.inf
+        for higher in range(lower + 1, d):
+            fastest_above = max(fastest_above, extremes[1, higher])
+        if not extremes[0, lower] > fastest_above:
+            report[0], report[1], report[2] = lower, extremes[0, lower], fastest_above
+            return False
+    return True
+
+
+@njit(inline="always")
 def _position(cluster, t, xref, tref, vel):
     return xref[cluster] + vel[cluster] * (t - tref[cluster])
 
 
-@njit
+@njit(inline="always")
 def _heap_swap(heap, where, i, j):
     a, b = heap[i], heap[j]
     heap[i], heap[j] = b, a
     where[b], where[a] = i, j
 
 
-@njit
+@njit(inline="always")
 def _heap_update(heap, where, size, key, cluster):
     """Restore the heap after ``key[cluster]`` changed; inserts ``cluster`` if absent. Returns the size."""
     i = where[cluster]
@@ -113,7 +168,7 @@ def _heap_update(heap, where, size, key, cluster):
         i = smallest
 
 
-@njit
+@njit(inline="always")
 def _heap_remove(heap, where, size, key, cluster):
     """Remove ``cluster`` from the heap if present. Returns the size."""
     i = where[cluster]
@@ -129,7 +184,7 @@ def _heap_remove(heap, where, size, key, cluster):
     return size
 
 
-@njit
+@njit(inline="always")
 def _meeting_time(a, now, kind, nxt, xref, tref, vel):
     """Time at which cluster a meets the next cluster of the list (inf if never)."""
     b = nxt[a]
@@ -139,7 +194,7 @@ def _meeting_time(a, now, kind, nxt, xref, tref, vel):
     return now + gap / (vel[a] - vel[b])
 
 
-@njit
+@njit(inline="always")
 def _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel):
     """Set the meeting time of cluster a with the next one and file it in the heap. Returns the size."""
     key[a] = _meeting_time(a, now, kind, nxt, xref, tref, vel)
@@ -148,7 +203,7 @@ def _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel):
     return _heap_remove(heap, where, size, key, a)
 
 
-@njit
+@njit(inline="always")
 def _append(last, cluster, prv, nxt):
     """Chain ``cluster`` after ``last`` in the list; True if it starts the list (last = -1)."""
     prv[cluster], nxt[cluster] = last, _NONE
@@ -157,7 +212,7 @@ def _append(last, cluster, prv, nxt):
     return last < 0
 
 
-@njit
+@njit(inline="always")
 def _blocks(values, lo, hi, starts, sums):
     """Pool-adjacent-violators on values[lo:hi]: the blocks of its non-decreasing regression.
 
@@ -178,7 +233,7 @@ def _blocks(values, lo, hi, starts, sums):
     return top + 1
 
 
-@njit
+@njit(inline="always")
 def _new_blocks(reuse, gamma, lo, hi, place, now, count_row, lam, starts, sums, free, nfree, kind, low, high, xref,
                 tref, vel, counts, prv, nxt):
     """Clusters for the blocks of the members lo..hi-1 of type gamma at ``place``, chained in order.
@@ -198,34 +253,37 @@ def _new_blocks(reuse, gamma, lo, hi, place, now, count_row, lam, starts, sums, 
             cluster = free[nfree[0]]
         kind[cluster], low[cluster], high[cluster] = gamma, starts[j], end
         xref[cluster], tref[cluster], vel[cluster] = place, now, sums[j] / (end - starts[j])
-        counts[cluster, :] = count_row
+        for g in range(count_row.size):
+            counts[cluster, g] = count_row[g]
         if _append(last, cluster, prv, nxt):
             first = cluster
         last = cluster
     return first, last
 
 
+#: Values returned by :func:`_start` and :func:`_advance`.
+_DONE, _NEEDS_SPEEDS, _VIOLATES_USH = 0, 1, 2
+#: Slots of their ``state``: the heap's size, the head of the list, the next time to write, the stage, the
+#: number of free cluster ids.
+_SIZE, _HEAD, _INDEX, _STAGE, _FREE = 0, 1, 2, 3, 4
+#: Stages of :func:`_advance`: running, running with the speeds of the pending crossing supplied.
+_RUNNING, _SUPPLIED = 0, 1
+
+
 @njit
-def _simulate(x0, ranks, table, strides, times, out, stats):
-    """Event loop of the MSPD from x0 (shape (d, n)), writing the configuration at each of ``times``
-    (non-decreasing) to ``out``; ``ranks`` is :func:`~particle_methods.sticky.mspd.ranks_kernel` of x0.
-    ``stats`` receives the :class:`EventCounts`."""
+def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, extremes, report):
+    """Clusters of the configuration x0 (shape (d, n)) with the velocities (1.8) ``lam`` at its ``ranks``
+    (:func:`~particle_methods.sticky.mspd.ranks_kernel`): the blocks of each group of particles of one type at
+    one place, in one list along the line, each filed in the heap with its meeting time (arrays of
+    :func:`_advance`). Returns ``_DONE``, or ``_VIOLATES_USH`` (:func:`_record_speeds`) on the velocities."""
     d, n = x0.shape
-    capacity = d * n
-    kind = np.empty(capacity, dtype=np.int64)
-    low = np.empty(capacity, dtype=np.int64)
-    high = np.empty(capacity, dtype=np.int64)
-    xref, tref, vel, key = np.empty(capacity), np.empty(capacity), np.empty(capacity), np.empty(capacity)
-    counts = np.empty((capacity, d), dtype=np.int64)
-    prv = np.empty(capacity, dtype=np.int64)
-    nxt = np.empty(capacity, dtype=np.int64)
-    heap = np.empty(capacity, dtype=np.int64)
-    where = np.full(capacity, -1, dtype=np.int64)
-    free = np.arange(capacity - 1, -1, -1)
-    nfree = np.array([capacity])
-    starts, sums = np.empty(n, dtype=np.int64), np.empty(n)
-    lam = np.empty((d, n))
-    row, row_b = np.empty(d, dtype=np.int64), np.empty(d, dtype=np.int64)
+    kind, low, high, prv, nxt, heap, where, free = clusters
+    xref, tref, vel, key = motion
+    row = rows[0]
+    for gamma in range(d):
+        if not _record_speeds(lam, gamma, 0, n, extremes, report):
+            return _VIOLATES_USH
+    nfree = state[_FREE:_FREE + 1]
     # Initial clusters: the blocks of each group of particles of one type at one place.
     by_type = np.empty((d, n), dtype=np.int64)  # clusters of each type, in order
     found = np.zeros(d, dtype=np.int64)
@@ -236,10 +294,8 @@ def _simulate(x0, ranks, table, strides, times, out, stats):
             while hi < n and x0[gamma, hi] == x0[gamma, lo]:
                 hi += 1
             row[:] = ranks[gamma, lo]
-            for k in range(lo, hi):
-                lam[gamma, k] = _speed(table, strides, gamma, k, row)
-            first, last = _new_blocks(_NONE, gamma, lo, hi, x0[gamma, lo], 0.0, row, lam, starts, sums, free, nfree,
-                                      kind, low, high, xref, tref, vel, counts, prv, nxt)
+            first, last = _new_blocks(_NONE, gamma, lo, hi, x0[gamma, lo], 0.0, row, lam, starts, sums, free,
+                                      nfree, kind, low, high, xref, tref, vel, counts, prv, nxt)
             cluster = first
             while cluster >= 0:
                 by_type[gamma, found[gamma]] = cluster
@@ -260,13 +316,41 @@ def _simulate(x0, ranks, table, strides, times, out, stats):
         if _append(last, cluster, prv, nxt):
             head = cluster
         last = cluster
-    size, now = 0, 0.0
+    size = 0
     cluster = head
     while cluster >= 0:
-        size = _schedule(cluster, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+        size = _schedule(cluster, 0.0, heap, where, size, key, kind, nxt, xref, tref, vel)
         cluster = nxt[cluster]
-    behind = np.empty(d)
-    index = 0
+    state[_SIZE], state[_HEAD], state[_INDEX] = size, head, 0
+    return _DONE
+
+
+@njit(**NO_RUNTIME)
+def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums, rows, behind, state, request,
+             extremes, report, constants, compiled):
+    """Event loop of the MSPD from x0 (shape (d, n)) with the initial velocities (1.8) ``lam``, writing the
+    configuration at each of ``times`` (non-decreasing) to ``out``; ``stats`` receives the :class:`EventCounts`.
+
+    With ``compiled`` (a p-system, constants (a, -A/a)) a crossing's velocities are computed here by
+    :func:`_psystem_speeds`. Otherwise the loop returns ``_NEEDS_SPEEDS`` at each crossing, with its two
+    clusters in ``request`` (type, first and end member, for a then b) and their counts behind in ``rows``;
+    the caller writes their velocities into ``lam``, sets the stage to ``_SUPPLIED`` and calls again: the
+    loop resumes at the same event (nothing has moved) from ``state``. Returns ``_DONE``, or
+    ``_VIOLATES_USH`` (see :func:`_record_speeds`) before using a velocity that breaks (USH).
+    The arrays of ``clusters`` (kind, first member, end member, previous, next, heap, heap slot, free ids),
+    ``motion`` (reference place and time, velocity, meeting time) and ``counts`` have one row per cluster,
+    at most d n of them. Compiled without numba's runtime (:data:`~particle_methods.jit.NO_RUNTIME`): it
+    creates no array, and its helpers are inlined. With the runtime, the atomic reference counts of the
+    arrays passed to its helpers took half of its time (perf): it ran 2.4 times slower with the helpers
+    inlined, about 5 times without (n = 3200 per type)."""
+    d, n = x0.shape
+    kind, low, high, prv, nxt, heap, where, free = clusters
+    xref, tref, vel, key = motion
+    row, row_b = rows[0], rows[1]
+    nfree = state[_FREE:_FREE + 1]
+    size, head, index = state[_SIZE], state[_HEAD], state[_INDEX]
+    supplied = state[_STAGE] == _SUPPLIED
+    state[_STAGE] = _RUNNING
     while index < times.size:
         event_time = key[heap[0]] if size > 0 else np.inf
         while index < times.size and times[index] <= event_time:
@@ -301,17 +385,27 @@ def _simulate(x0, ranks, table, strides, times, out, stats):
             size = _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel)
         else:  # a (lower type) passes b: new ranks, new velocities (1.8) for their members only
             alpha, beta = kind[a], kind[b]
-            place = 0.5 * (_position(a, now, xref, tref, vel) + _position(b, now, xref, tref, vel))
-            row[:] = counts[a]
-            row[beta] += high[b] - low[b]
-            for k in range(low[a], high[a]):
-                lam[alpha, k] = _speed(table, strides, alpha, k, row)
-            row_b[:] = counts[b]
-            row_b[alpha] -= high[a] - low[a]
-            for k in range(low[b], high[b]):
-                lam[beta, k] = _speed(table, strides, beta, k, row_b)
-            stats[3] += high[a] - low[a] + high[b] - low[b]
             lo_a, hi_a, lo_b, hi_b = low[a], high[a], low[b], high[b]
+            if supplied:  # the caller computed them for this very event (rows and lam are set)
+                supplied = False
+            else:
+                for g in range(d):  # element by element: a copy of a row would need an allocation
+                    row[g], row_b[g] = counts[a, g], counts[b, g]
+                row[beta] += hi_b - lo_b
+                row_b[alpha] -= hi_a - lo_a
+                if compiled:
+                    _psystem_speeds(constants[0], constants[1], alpha, lo_a, hi_a, row, lam)
+                    _psystem_speeds(constants[0], constants[1], beta, lo_b, hi_b, row_b, lam)
+                else:
+                    request[0], request[1], request[2] = alpha, lo_a, hi_a
+                    request[3], request[4], request[5] = beta, lo_b, hi_b
+                    state[_SIZE], state[_HEAD], state[_INDEX] = size, head, index
+                    return _NEEDS_SPEEDS
+            if not (_record_speeds(lam, alpha, lo_a, hi_a, extremes, report)
+                    and _record_speeds(lam, beta, lo_b, hi_b, extremes, report)):
+                return _VIOLATES_USH
+            place = 0.5 * (_position(a, now, xref, tref, vel) + _position(b, now, xref, tref, vel))
+            stats[3] += hi_a - lo_a + hi_b - lo_b
             # The members of b and of a keep the ids b and a for their first blocks, filed anew below.
             first_b, last_b = _new_blocks(b, beta, lo_b, hi_b, place, now, row_b, lam, starts, sums, free, nfree, kind,
                                           low, high, xref, tref, vel, counts, prv, nxt)
@@ -334,51 +428,104 @@ def _simulate(x0, ranks, table, strides, times, out, stats):
             stats[2] -= 2  # the two clusters that passed each other are not new
         if before >= 0:
             size = _schedule(before, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+    state[_SIZE], state[_HEAD], state[_INDEX] = size, head, index
+    return _DONE
 
 
-def _velocity_table(system, n: int, d: int) -> tuple[np.ndarray, np.ndarray, float]:
-    """Velocities (1.8) at every rank, their strides and largest magnitude, after checking (USH).
+class _Run(NamedTuple):
+    """Arrays of one run of :func:`_start` and :func:`_advance`: O(d^2 n) words in all (:meth:`nbytes`),
+    nothing per rank that no particle occupies."""
 
-    Row gamma holds lambda~^gamma_k for every k (axis gamma, n values) and every count of particles
-    of each other type behind it (n + 1 values each), flattened in C order: the velocity of
-    particle gamma:k with counts c is at sum_g strides[gamma, g] * (k if g == gamma else c_g).
-    """
-    if d * (n + 1) ** d > MAX_TABLE:
-        raise ValueError(f"d = {d} types of n = {n} particles need a velocity table of d (n+1)^d = "
-                         f"{d * (n + 1) ** d:.3g} values, more than MAX_TABLE = {MAX_TABLE:.0e}")
-    shape = (n + 1,) * d
-    levels = np.indices(shape).reshape(d, -1).T / n
-    table = np.empty((d, n * (n + 1) ** (d - 1)))
-    strides = np.empty((d, d), dtype=np.int64)
-    lowest, highest = np.empty(d), np.empty(d)
+    lam: np.ndarray
+    clusters: tuple
+    motion: tuple
+    counts: np.ndarray
+    starts: np.ndarray
+    sums: np.ndarray
+    rows: np.ndarray
+    behind: np.ndarray
+    state: np.ndarray
+    request: np.ndarray
+    extremes: np.ndarray
+    report: np.ndarray
+
+    @classmethod
+    def allocate(cls, lam: np.ndarray) -> _Run:
+        d, n = lam.shape
+        capacity = d * n  # at most one cluster per particle
+        ints = [np.empty(capacity, dtype=np.int64) for _ in range(6)]  # kind, low, high, prv, nxt, heap
+        where = np.full(capacity, -1, dtype=np.int64)
+        free = np.arange(capacity - 1, -1, -1)
+        state = np.zeros(5, dtype=np.int64)
+        state[_STAGE], state[_FREE] = _RUNNING, capacity
+        extremes = np.empty((2, d))
+        extremes[0], extremes[1] = np.inf, -np.inf
+        return cls(lam, (*ints, where, free), tuple(np.empty(capacity) for _ in range(4)),
+                   np.empty((capacity, d), dtype=np.int64), np.empty(n, dtype=np.int64), np.empty(n),
+                   np.empty((2, d), dtype=np.int64), np.empty(d), state, np.empty(6, dtype=np.int64), extremes,
+                   np.empty(3))
+
+    def nbytes(self) -> int:
+        """Bytes held by the run's arrays (the velocities included)."""
+        arrays = [self.lam, *self.clusters, *self.motion, self.counts, self.starts, self.sums, self.rows, self.behind,
+                  self.state, self.request, self.extremes, self.report]
+        return sum(array.nbytes for array in arrays)
+
+
+def _python_speeds(system, gamma: int, lo: int, hi: int, row: np.ndarray, n: int) -> np.ndarray:
+    """Velocities (1.8) of particles gamma:lo .. gamma:hi-1 with ``row[g]`` particles of type g behind them,
+    from ``system.speed_primitive`` at the hi - lo + 1 levels (own count)/n, (counts of the others)/n."""
+    levels = np.empty((hi - lo + 1, row.size))
+    levels[:] = row / n
+    levels[:, gamma] = np.arange(lo, hi + 1) / n
+    speeds = n * np.diff(checked_primitive(system, gamma, levels))
+    return finite_result("the velocities (1.8)", speeds, "system.speed_primitive returned values whose differences "
+                         "overflow or are not finite")
+
+
+def _initial_speeds(system, ranks: np.ndarray) -> np.ndarray:
+    """Velocities (1.8) at the ``ranks`` of x0 (:func:`~particle_methods.sticky.mspd.ranks_kernel`): for each
+    type, the primitive at every particle's levels, own count k + 1 and k, two calls of ``speed_primitive``."""
+    d, n = ranks.shape[:2]
+    lam = np.empty((d, n))
     for gamma in range(d):
-        speeds = n * np.diff(checked_primitive(system, gamma, levels).reshape(shape), axis=gamma)
-        finite_result("the velocities (1.8)", speeds, "system.speed_primitive returned values whose differences "
-                      "overflow or are not finite")
-        table[gamma] = speeds.ravel()
-        strides[gamma] = np.array(speeds.strides) // speeds.itemsize
-        lowest[gamma], highest[gamma] = speeds.min(), speeds.max()
-    for gamma in range(d - 1):
-        if not lowest[gamma] > highest[gamma + 1:].max():
-            raise ValueError(f"system violates (USH): a velocity (1.8) of type {gamma} ({lowest[gamma]:.6g}) is not "
-                             f"above every velocity of the higher types (up to {highest[gamma + 1:].max():.6g})")
-    return table, strides, float(max(np.abs(lowest).max(), np.abs(highest).max()))
+        upper = ranks[gamma]
+        lower = upper.copy()
+        lower[:, gamma] -= 1
+        lam[gamma] = n * (checked_primitive(system, gamma, upper / n) - checked_primitive(system, gamma, lower / n))
+    return finite_result("the velocities (1.8)", lam, "system.speed_primitive returned values whose differences "
+                         "overflow or are not finite")
+
+
+def _compiled_system(system) -> bool:
+    """True for a :class:`PSystem` whose primitive is the class's own (d = 2): the event loop evaluates it
+    compiled, by :func:`_psystem_speeds`."""
+    return (isinstance(system, PSystem) and type(system).speed_primitive is PSystem.speed_primitive
+            and system.d == 2)
 
 
 def mspd_exact(x0, system, times, return_events: bool = False):
     """Exact MSPD (section 1.2.2) from the configuration ``x0`` at each of ``times``.
 
+    Velocities (1.8) come from the primitive at the ranks each event needs (module docstring): memory
+    O(d^2 n), no table over the (n+1)^d rank points.
+
     Parameters
     ----------
     x0 : array (d, n), row gamma the sorted positions of the particles of type gamma (mass 1/n).
     system : a diagonal system (integer ``d``, method ``speed_primitive(gamma, levels)``, as in
-        :mod:`.mspd`) satisfying (USH) with types ordered fastest first.
+        :mod:`.mspd`) satisfying (USH) with types ordered fastest first. A
+        :class:`~particle_methods.systems.PSystem` runs compiled up to :data:`MAX_EVENTS`; any other
+        system calls its ``speed_primitive`` from Python at each crossing, up to :data:`MAX_PYTHON_EVENTS`.
     times : non-decreasing, non-negative times.
     return_events : also return the :class:`EventCounts` up to the last time.
 
     Returns
     -------
     Array (len(times), d, n) of configurations, and the event counts if asked.
+
+    Raises ValueError if a velocity the run computes breaks (USH) (checked on every one, against those of
+    the other types computed before) or could carry a particle beyond the double range by the last time.
     """
     x0 = checked_configuration("x0", x0, system)
     times = finite_array("times", times)
@@ -387,16 +534,46 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     if times[0] < 0 or np.any(np.diff(times) < 0):
         raise ValueError("times must be non-negative and non-decreasing")
     d, n = x0.shape
-    bound = d * (d - 1) // 2 * n * n + d * n
-    if bound > MAX_EVENTS:
-        raise ValueError(f"d = {d} types of n = {n} particles may need up to {bound:.3g} events, more than "
-                         f"MAX_EVENTS = {MAX_EVENTS:.0e}")
+    if times.size * x0.size > MAX_POSITIONS:
+        raise ValueError(f"{times.size} times of {x0.size} particles give {times.size * x0.size:.3g} positions, more "
+                         f"than MAX_POSITIONS = {MAX_POSITIONS:.0e} in one call: split the times")
+    compiled = _compiled_system(system)
+    crossings = d * (d - 1) // 2 * n * n
+    if crossings + d * n > MAX_EVENTS:
+        raise ValueError(f"d = {d} types of n = {n} particles may need up to {crossings + d * n:.3g} events, more "
+                         f"than MAX_EVENTS = {MAX_EVENTS:.2g}")
+    if not compiled and crossings > MAX_PYTHON_EVENTS:
+        raise ValueError(f"d = {d} types of n = {n} particles may need up to {crossings:.3g} crossings, more than "
+                         f"MAX_PYTHON_EVENTS = {MAX_PYTHON_EVENTS:.0e} for a system whose speed_primitive is Python "
+                         "(called at each crossing; a PSystem runs compiled up to MAX_EVENTS)")
     instance("return_events", return_events, (bool, np.bool_))
-    table, strides, speed = _velocity_table(system, n, d)
-    check_reach(x0, speed, float(times[-1]), "times", "velocities")
+    last = float(times[-1])
+    ranks = ranks_kernel(x0)
+    lam = _initial_speeds(system, ranks)
+    # Every velocity (1.8) of the p-system is an average of lambda^gamma, at most A = speed_scale in
+    # magnitude; the rounding of n (P((k+1)/n) - P(k/n)) adds about 8 n eps |P| with |P| <= A
+    # (|atan(sinh(y))| <= |y|), below A for any n accepted: 2 A bounds every velocity the run computes.
+    check_reach(x0, 2.0 * system.speed_scale if compiled else float(np.abs(lam).max()), last, "times", "velocities")
+    run = _Run.allocate(lam)
+    status = _start(x0, ranks, run.lam, run.clusters, run.motion, run.counts, run.starts, run.sums, run.rows, run.state,
+                    run.extremes, run.report)
+    del ranks
+    constants = np.array([system.a, system.primitive_coefficient]) if compiled else np.zeros(2)
     out = np.empty((times.size, d, n))
     stats = np.zeros(4, dtype=np.int64)
-    _simulate(x0, ranks_kernel(x0), table, strides, times, out, stats)
+    while status != _VIOLATES_USH:
+        status = _advance(x0, run.lam, times, out, stats, run.clusters, run.motion, run.counts, run.starts, run.sums,
+                          run.rows, run.behind, run.state, run.request, run.extremes, run.report, constants, compiled)
+        if status != _NEEDS_SPEEDS:
+            break
+        for (gamma, lo, hi), row in zip(run.request.reshape(2, 3), run.rows):
+            run.lam[gamma, lo:hi] = _python_speeds(system, int(gamma), int(lo), int(hi), row, n)
+            check_reach(x0, float(np.abs(run.lam[gamma, lo:hi]).max()), last, "times", "velocities")
+        run.state[_STAGE] = _SUPPLIED
+    if status == _VIOLATES_USH:
+        lower, lowest, highest = run.report
+        raise ValueError(f"system violates (USH): a velocity (1.8) of type {int(lower)} ({lowest:.6g}) is not above "
+                         f"every velocity of the higher types (up to {highest:.6g})")
     if return_events:
         return out, EventCounts(*(int(s) for s in stats))
     return out
