@@ -1,9 +1,9 @@
 """Beyond the paper (section 5.2), part 1: the exact MSPD's limit, untimed.
 
 For both p-system cases the exact MSPD with n particles per type is compared, at one time t, with a
-conservative HLL solution of the p-system at ``reference_cells`` (mapped to Riemann invariants) and
-with the upwind scheme for (1.7) at the same resolution; each reference is also compared with itself
-at half its resolution. The exact MSPD with the largest n is kept: the cost study
+conservative HLL solution of the p-system on ``reference_cells`` cells (mapped to Riemann invariants)
+and with the upwind scheme for (1.7) on ``upwind_reference_cells``; each reference is also compared
+with itself at half its resolution. The exact MSPD with the largest n is kept: the cost study
 (``beyond_data.py``) measures its errors against it. Nothing here is timed, so this job holds one
 core while the timed runs hold them all.
 """
@@ -23,7 +23,6 @@ from particle_methods.systems import PSystem
 from particle_replication.workflow import logged, progress, save_results
 
 PSYSTEM_CASES = ("rarefaction", "shocks")
-
 
 
 def cell_distance(a, b, edges_a, edges_b):
@@ -48,21 +47,25 @@ def run(system_params, cases, p, output):
     results = {}
     for name in PSYSTEM_CASES:
         x0 = cases[name]["x0"]
-        fine = np.linspace(*p["domain"], p["reference_cells"] + 1)
-        coarse = np.linspace(*p["domain"], p["reference_cells"] // 2 + 1)
+        cells = p["reference_cells"]
+        fine, coarse = (np.linspace(*p["domain"], count + 1) for count in (cells, cells // 2))
         hll, hll_half = (hll_invariants(system, name, x0, edges, t, cfl) for edges in (fine, coarse))
-        up, up_half = (upwind_invariants(system, name, x0, edges, t, cfl) for edges in (fine, coarse))
-        progress(f"{name}: references on {p['reference_cells']} cells done")
+        cells = p["upwind_reference_cells"]
+        fine_up, coarse_up = (np.linspace(*p["domain"], count + 1) for count in (cells, cells // 2))
+        up, up_half = (upwind_invariants(system, name, x0, edges, t, cfl) for edges in (fine_up, coarse_up))
+        progress(f"{name}: HLL on {p['reference_cells']} and upwind on {cells} cells done")
         exact = {n: mspd_exact(psystem_initial_configuration(name, x0, int(n)), system, [t])[0] for n in limit_n}
         to_hll = [distance_to_cells(exact[n], hll, fine) for n in limit_n]
-        to_upwind = [distance_to_cells(exact[n], up, fine) for n in limit_n]
+        to_upwind = [distance_to_cells(exact[n], up, fine_up) for n in limit_n]
         progress(f"{name}: MSPD to HLL {np.array(to_hll)}, to upwind {np.array(to_upwind)}")
         results[name] = dict(
             limit_to_hll=to_hll, limit_to_upwind=to_upwind,
             mspd_gap=configuration_distance(exact[limit_n[-1]], exact[limit_n[-2]]),
-            hll_gap=cell_distance(hll, hll_half, fine, coarse), upwind_gap=cell_distance(up, up_half, fine, coarse),
-            hll_to_upwind=cell_distance(hll, up, fine, fine), hll_w=hll, upwind_w=up, mspd=exact[limit_n[-1]])
+            hll_gap=cell_distance(hll, hll_half, fine, coarse),
+            upwind_gap=cell_distance(up, up_half, fine_up, coarse_up),
+            hll_to_upwind=cell_distance(hll, up, fine, fine_up), hll_w=hll, upwind_w=up, mspd=exact[limit_n[-1]])
     save_results(output, t=t, cases=np.array(PSYSTEM_CASES), limit_n=limit_n, reference_cells=p["reference_cells"],
+                 upwind_reference_cells=p["upwind_reference_cells"],
                  **{f"{case}_{key}": np.asarray(value) for case, r in results.items() for key, value in r.items()})
 
 

@@ -18,17 +18,23 @@ METHODS = {  # key in the results, label, colour, marker
 }
 
 
+def cell_centres(domain, cells):
+    edges = np.linspace(*domain, cells + 1)
+    return (edges[1:] + edges[:-1]) / 2
+
+
 def limits(d, p, output):
     fig, axes = new_figure(1, 3, width=11, height=5.2, squeeze=False)
-    edges = np.linspace(*p["domain"], int(d["reference_cells"]) + 1)
-    centres = 0.5 * (edges[1:] + edges[:-1])
+    centres = cell_centres(p["domain"], int(d["reference_cells"]))
+    centres_up = cell_centres(p["domain"], int(d["upwind_reference_cells"]))
     for j, case in enumerate(map(str, d["cases"])):
         ax = axes[0, j]
         for gamma, name, style in ((MINUS, "w-", "-"), (PLUS, "w+", "--")):
             ax.plot(centres, empirical_cdf(d[f"{case}_mspd"][gamma], centres), style, color="C0", lw=1.6,
                     label=f"{name} exact MSPD")
             ax.plot(centres, d[f"{case}_hll_w"][gamma], style, color="C3", lw=1.0, label=f"{name} HLL (conservative)")
-            ax.plot(centres, d[f"{case}_upwind_w"][gamma], style, color="C2", lw=0.8, label=f"{name} upwind for (1.7)")
+            ax.plot(centres_up, d[f"{case}_upwind_w"][gamma], style, color="C2", lw=0.8,
+                    label=f"{name} upwind for (1.7)")
         ax.set(xlim=(-12, 12), xlabel="x", ylabel="Riemann invariant")
         label_panel(ax, f"({'ab'[j]}) {case} case, t = {float(d['t']):g}")
     ax = axes[0, 2]

@@ -73,6 +73,7 @@ LIMIT_KEYS = (
     "cases",
     "limit_n",
     "reference_cells",
+    "upwind_reference_cells",
     "*_limit_to_hll",
     "*_limit_to_upwind",
     "*_mspd_gap",
@@ -357,8 +358,9 @@ PAPER = Paper(
             "exact MSPD against conservative HLL and upwind (1.7)",
             lambda s: (
                 f"Beyond the paper, p-system at t = {s['beyond']['t']}: (a, b) w- and w+ of the exact MSPD "
-                f"(n = {s['beyond']['limit_n'][-1]} per type), the conservative HLL scheme and the upwind scheme "
-                f"for (1.7) ({s['beyond']['reference_cells']} cells), rarefaction and shock cases; (c) W1 "
+                f"(n = {s['beyond']['limit_n'][-1]} per type), the conservative HLL scheme "
+                f"({s['beyond']['reference_cells']} cells) and the upwind scheme for (1.7) "
+                f"({s['beyond']['upwind_reference_cells']} cells), rarefaction and shock cases; (c) W1 "
                 f"distance of the exact MSPD to both schemes against n, with each reference's distance to its "
                 f"half-resolution run."
             ),
