@@ -14,8 +14,8 @@ COMMIT = commit()
 
 
 rule claims_table:
-    """Merge every paper's claims into results/claims.csv and results/claims.md (with the failures
-    by cause, from the expected verdicts), and every paper's fitted rates into results/rates.json."""
+    """Merge every paper's claims into results/claims.csv and results/claims.md (with the failures by
+    cause, from the expected verdicts) and every paper's fitted rates into results/rates.json."""
     input:
         sources=CLAIM_SOURCES,
         rates=RATE_SOURCES,
