@@ -266,14 +266,138 @@ def test_speeds_at_the_rounding_level_of_the_primitives_are_left_out():
 
 
 def test_upwind_takes_the_time_steps_of_the_largest_speed_on_the_study_data(monkeypatch):
-    """On the data of section 5.2.2 the rounding noise in the Laplace tails must not shorten the steps."""
+    """On the data of section 5.2.2 the rounding noise in the Laplace tails must not shorten the steps.
+
+    Both paths: the Python one (a delegating system) counted by its calls of the primitive, one per step,
+    and the compiled one of a PSystem by its step count."""
     calls = []
     original = fv_psystem._primitives
     monkeypatch.setattr(fv_psystem, "_primitives", lambda *args: calls.append(1) or original(*args))
     edges, w0 = study_data("rarefaction", 4000)
     dt = 0.9 * (edges[1] - edges[0]) / SYSTEM.speed_scale  # at the peak speed c(nu/2), every step's bound
-    upwind_diagonal(SYSTEM, w0, edges, 199.5 * dt)  # half a step of slack for the rounding of the speeds
+    upwind_diagonal(Delegating(SYSTEM), w0, edges, 199.5 * dt)  # half a step of slack for the rounding of the speeds
     assert len(calls) == 200
+    assert upwind_diagonal(SYSTEM, w0, edges, 199.5 * dt, return_steps=True)[1] == 200
+    assert len(calls) == 200  # the compiled path never calls it
+
+
+# The compiled time loop of a PSystem against the Python path of any other system.
+
+class Delegating:
+    """A diagonal system that is not a PSystem, with the primitive of ``system``: upwind_diagonal takes its
+    Python path."""
+
+    def __init__(self, system):
+        self.system = system
+        self.d = system.d
+
+    def speed_primitive(self, gamma, levels):
+        return self.system.speed_primitive(gamma, levels)
+
+
+def both_paths(w0, edges, t, **options):
+    """(compiled, Python) results of upwind_diagonal on SYSTEM, with their step counts."""
+    return (upwind_diagonal(SYSTEM, w0, edges, t, return_steps=True, **options),
+            upwind_diagonal(Delegating(SYSTEM), w0, edges, t, return_steps=True, **options))
+
+
+@pytest.mark.parametrize("case", ["rarefaction", "shocks"])
+@pytest.mark.parametrize("cells", [1000, 4000])
+def test_compiled_psystem_loop_equals_the_python_path_on_the_study_cases(case, cells):
+    """The pipeline's cases (sticky.beyond: t = 2 on [-30, 30], cfl 0.9): the same steps and the same numbers to
+    the last bit (the primitive by NumPy on both paths; libm's, compiled, moved the results by up to 5e-8)."""
+    edges, w0 = study_data(case, cells)
+    (compiled, steps), (python, python_steps) = both_paths(w0, edges, 2.0, cfl=0.9)
+    assert steps == python_steps
+    np.testing.assert_array_equal(compiled, python)
+
+
+def test_compiled_psystem_loop_equals_the_python_path_on_the_other_data():
+    """The data of the tests above (a step by hand, smooth rarefactions, constant states, a short time, t = 0),
+    and the steady state: no step taken."""
+    four = np.linspace(0.0, 1.0, 5)
+    x = np.linspace(-10.0, 10.0, 401)
+    centres = 0.5 * (x[1:] + x[:-1])
+    for w0, edges, t in [
+        (np.array([[0.1, 0.3, 0.35, 0.8], [0.9, 0.2, 0.6, 0.7]]), four, 1e-3),
+        (np.array([[0.1, 0.3, 0.35, 0.8], [0.9, 0.2, 0.6, 0.7]]), four, 0.3),
+        (np.array([logistic(centres, 0.5), logistic(centres, -0.5)]), x, 1.0),
+        (np.array([logistic(centres, -0.5), logistic(centres, 0.5)]), x, 3.0),  # w^+ < w^-: shocks
+        (np.full((2, 400), 0.3), x, 1.0),
+        (np.array([logistic(centres, 0.5), logistic(centres, -0.5)]), x, 0.0),
+    ]:
+        (compiled, steps), (python, python_steps) = both_paths(w0, edges, t)
+        assert steps == python_steps
+        np.testing.assert_array_equal(compiled, python)
+    assert steps == 0
+    assert both_paths(np.full((2, 400), 0.3), x, 1.0)[0][1] == 0  # steady: returned as it is
+
+
+def test_only_a_psystem_itself_takes_the_compiled_loop(monkeypatch):
+    calls = []
+    original = fv_psystem._primitives
+    monkeypatch.setattr(fv_psystem, "_primitives", lambda *args: calls.append(1) or original(*args))
+
+    class Subclass(PSystem):
+        pass
+
+    edges, w0 = study_data("shocks", 200)
+    upwind_diagonal(SYSTEM, w0, edges, 0.5)
+    assert not calls
+    compiled = upwind_diagonal(Subclass(nu=0.5, kappa=5.0), w0, edges, 0.5)
+    assert calls
+    np.testing.assert_array_equal(compiled, upwind_diagonal(SYSTEM, w0, edges, 0.5))
+
+
+def test_compiled_psystem_loop_keeps_the_checks_of_the_python_path(monkeypatch):
+    """The same errors, raised by upwind_diagonal from the kernel's status: states outside [0, 1] (only when a step
+    is taken, as the Python path evaluates the primitive there), the limits on steps and work from the current
+    speeds (read at call time), non-finite averaged speeds."""
+    edges = np.linspace(0.0, 1.0, 5)
+    outside = np.array([[0.0, 0.5, 1.0, 1.5], [0.0] * 4])
+    for system in (SYSTEM, Delegating(SYSTEM)):
+        np.testing.assert_array_equal(upwind_diagonal(system, outside, edges, 0.0), outside)
+        with pytest.raises(ValueError, match=r"states of w0 or of the run: levels must lie in \[0.0, 1.0\]"):
+            upwind_diagonal(system, outside, edges, 1e-3)
+    study_edges, w0 = study_data("rarefaction", 1000)
+    steps = upwind_diagonal(SYSTEM, w0, study_edges, 2.0, return_steps=True)[1]
+    for name, limit in [("MAX_UPWIND_STEPS", steps - 1), ("MAX_UPWIND_WORK", 2 * 1000 * steps - 1)]:
+        monkeypatch.setattr(fv_psystem, name, limit)
+        messages = []
+        for system in (SYSTEM, Delegating(SYSTEM)):
+            with pytest.raises(ValueError, match=f"needs about {steps:.3g} time steps at the current speeds") as error:
+                upwind_diagonal(system, w0, study_edges, 2.0)
+            messages.append(str(error.value))
+        assert messages[0] == messages[1]
+        monkeypatch.setattr(fv_psystem, name, limit + 1)  # the limit itself is allowed
+        upwind_diagonal(SYSTEM, w0, study_edges, 2.0)
+        monkeypatch.undo()
+    monkeypatch.setattr(PSystem, "primitive_coefficient", property(lambda self: np.inf))
+    with pytest.raises(ValueError, match="the averaged speeds are not finite"), np.errstate(invalid="ignore"):
+        upwind_diagonal(SYSTEM, w0, study_edges, 2.0)
+
+
+def test_psystem_inflow_is_face_pass_and_entering(rng):
+    """The compiled loop's face pass against _face_pass and _entering of the Python path: the same directions,
+    sums and largest speed to the last bit, with ties, jumps of 1e-29 and primitives at the rounding level."""
+    m = 300
+    w = np.sort(rng.uniform(0.0, 1.0, (2, m)), axis=1)
+    w[:, 50:60] = w[:, 50:51]  # ties: no jump
+    w[:, 100:110] = 1e-29 * np.arange(10)  # jumps far below the rounding of the primitives
+    primitives = fv_psystem.speed_primitive_formula(rng.uniform(-1.0, 1.0, (3, m - 1)), SYSTEM.a,
+                                                    SYSTEM.primitive_coefficient)
+    primitives[1:, 100:110] = primitives[0, 100:110] * (1.0 + rng.integers(-8, 9, (2, 10)) * np.finfo(float).eps)
+    primitives[1, 50:60] = primitives[0, 50:60]  # no fluctuation across a tie
+    upper, lower = primitives[[0, 0]], primitives[1:]
+    fluctuations, speeds = np.empty((2, 2, m - 1))
+    right_going = np.empty((2, m - 1), dtype=bool)
+    fastest = fv_psystem._face_pass(w, upper, lower, fluctuations, right_going, speeds)
+    rows, going, inflow = np.empty((2, m - 1)), np.empty(m - 1, dtype=bool), np.zeros((2, m))
+    assert fv_psystem._psystem_inflow(w, primitives, *rows, going, inflow) == fastest
+    expected = [[fv_psystem._entering(fluctuations, right_going, g, i) for i in range(1, m - 1)] for g in (0, 1)]
+    np.testing.assert_array_equal(inflow[:, 1:-1], expected)
+    primitives[1, 7] = np.inf
+    assert np.isnan(fv_psystem._psystem_inflow(w, primitives, *rows, going, inflow))
 
 
 # Exact Riemann solutions.

@@ -13,7 +13,9 @@ Two references against which the iterated TSPD of section 5.2 can be measured:
 - :func:`upwind_diagonal` solves a diagonal system (1.7) directly in its unknowns by a
   first-order upwind scheme in fluctuation form (LeVeque, Finite Volume Methods, section
   4.12), with the speed of each type averaged in its own variable as in the velocities (1.8).
-  For the p-system the unknowns are the Riemann invariants (w^-, w^+) of (5.7).
+  For the p-system the unknowns are the Riemann invariants (w^-, w^+) of (5.7), and the time loop is
+  compiled (the primitive of (5.7) evaluated by NumPy at every step, as on the Python path of any other
+  system: the same numbers to the last bit, 6 to 7 times faster; benchmarks/bench_upwind.py).
 
 :func:`invariants_from_conservative` turns an HLL result into Riemann invariants. Nothing in
 the scheme keeps u in [0, nu], where (5.6) inverts g: an HLL update is a convex combination
@@ -38,11 +40,21 @@ from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
 
 from ..jit import njit
-from ..systems import PSystem, checked_primitive, checked_system, pressure_formula, sound_speed_formula
-from ..validation import finite_array, finite_result, finite_values, instance, nonnegative
+from ..systems import (
+    MINUS,
+    PLUS,
+    PSystem,
+    checked_primitive,
+    checked_system,
+    pressure_formula,
+    sound_speed_formula,
+    speed_primitive_formula,
+)
+from ..validation import finite_array, finite_result, finite_values, in_interval, instance, nonnegative
 from .grids import check_cell_steps, check_cells_match, checked_edges, checked_time_and_cfl, uniform_width
 
 #: Largest number of cell updates (cells x time steps) one call of :func:`hll_psystem` accepts:
@@ -51,13 +63,14 @@ from .grids import check_cell_steps, check_cells_match, checked_edges, checked_t
 MAX_CELL_STEPS = 2 * 10**9
 
 #: Largest number of type-cell updates (d x cells x time steps) one call of :func:`upwind_diagonal`
-#: accepts: the speed primitive is a Python callable evaluated on whole arrays, about 30 ns per
-#: update for the p-system, so about a minute. The data of section 5.2.2 on 64000 cells up to
-#: t = 2 take 9.2 * 10**8 (27 s).
+#: accepts: the speed primitive is a Python callable evaluated on whole arrays, about 45 ns per
+#: update, so about a minute and a half. The data of section 5.2.2 on 64000 cells up to t = 2 take
+#: 9.2 * 10**8 (35 to 42 s through the Python path; the p-system's compiled loop, 5 ns per update, 5 s).
 MAX_UPWIND_WORK = 2 * 10**9
 
 #: Largest number of time steps one call of :func:`upwind_diagonal` accepts: a step costs at least
-#: 2 d calls of the primitive (tens of microseconds each) whatever the number of cells.
+#: 2 d calls of the primitive (tens of microseconds each) whatever the number of cells (a
+#: :class:`PSystem`'s compiled step leaves the kernel once, to evaluate the primitive by NumPy).
 MAX_UPWIND_STEPS = 10**6
 
 #: Largest excursion of u out of [0, nu], as a fraction of nu, that
@@ -255,6 +268,196 @@ def _upwind_update(w, fluctuations, right_going, ratio, low, high):
             w[g, i] = min(max(w[g, i] - ratio * _entering(fluctuations, right_going, g, i), low[g]), high[g])
 
 
+def _primitive_failure(error: ValueError) -> ValueError:
+    return ValueError(f"system.speed_primitive failed on the states of w0 or of the run: {error}")
+
+
+_NOT_FINITE_SPEEDS = ("the averaged speeds are not finite: system.speed_primitive returned non-finite values, "
+                      "or values whose differences overflow")
+
+
+def _too_much_work(t: float, cells: int, needed) -> ValueError:
+    return ValueError(f"t={t} on x_edges with {cells} cells needs about {needed:.3g} time steps at "
+                      f"the current speeds, more than MAX_UPWIND_STEPS = {MAX_UPWIND_STEPS:.0e} or "
+                      f"MAX_UPWIND_WORK = {MAX_UPWIND_WORK:.0e} type-cell updates: reduce t or use fewer cells")
+
+
+def _upwind_python(system, padded, low, high, dx, t, cfl) -> int:
+    """The time loop of :func:`upwind_diagonal` for any diagonal system, ``speed_primitive`` called from Python at
+    every step; ``padded`` (d, cells + 2, ghost cells at both ends) is updated in place. Returns the steps taken."""
+    d, cells = padded.shape[0], padded.shape[1] - 2
+    fluctuations, speeds = np.empty((2, d, cells + 1))
+    right_going = np.empty((d, cells + 1), dtype=np.bool_)
+    time, steps = 0.0, 0
+    while time < t:
+        try:
+            upper, lower = _primitives(system, padded)
+        except ValueError as error:
+            raise _primitive_failure(error) from error
+        fastest = _face_pass(padded, upper, lower, fluctuations, right_going, speeds)
+        if not math.isfinite(fastest):
+            raise ValueError(_NOT_FINITE_SPEEDS)
+        if fastest == 0.0:
+            break
+        dt = cfl * dx / fastest
+        remaining = math.ceil((t - time) / dt) if math.isfinite((t - time) / dt) else math.inf
+        if steps + remaining > MAX_UPWIND_STEPS or (steps + remaining) * d * cells > MAX_UPWIND_WORK:
+            raise _too_much_work(t, cells, steps + remaining)
+        step = min(dt, t - time)
+        _upwind_update(padded, fluctuations, right_going, step / dx, low, high)
+        time += step
+        steps += 1
+    return steps
+
+
+#: Status of :func:`_upwind_psystem_kernel`: t reached (or a steady state), the averaged speeds not finite, more
+#: steps or work than MAX_UPWIND_STEPS or MAX_UPWIND_WORK.
+_REACHED, _NOT_FINITE, _TOO_MUCH_WORK = 0, 1, 2
+
+
+def _compiled_psystem(system) -> bool:
+    """True for a :class:`PSystem` itself (not a subclass, d = 2): :func:`upwind_diagonal` then runs its time loop
+    compiled, :func:`_upwind_psystem_kernel`."""
+    return type(system) is PSystem and system.d == 2
+
+
+#: Elements of the p-system's primitive evaluated by one NumPy call in :func:`_psystem_primitives`: each of the
+#: formula's temporaries (64 kB) then stays below glibc's default threshold for mapping a block of its own
+#: (128 kB). On the whole (3, cells + 1) array at 64000 cells (temporaries of 1.5 MB) a run in a fresh process
+#: took 5.2 million page faults, 718 a step, and 14.4 to 15.2 s, against 1100 faults and 4.4 to 5.1 s in chunks
+#: of 8192 (4096: 5.6 s, 2048: 7.0 s, the calls' overhead; measured with benchmarks/bench_upwind.py's data).
+PRIMITIVE_CHUNK = 8192
+
+
+def _psystem_primitives(spreads, a, coefficient, primitives):
+    """primitives = coefficient atan(sinh(a spreads)), the p-system's primitive of (5.7), by
+    :func:`~particle_methods.systems.speed_primitive_formula` on NumPy arrays as :meth:`PSystem.speed_primitive`
+    evaluates it on the Python path, in chunks of :data:`PRIMITIVE_CHUNK` elements: the same values to the last
+    bit (NumPy's vectorised sinh and arctan give an element the same result at any place in any array)."""
+    spreads, primitives = spreads.reshape(-1), primitives.reshape(-1)
+    for start in range(0, spreads.size, PRIMITIVE_CHUNK):
+        stop = start + PRIMITIVE_CHUNK
+        primitives[start:stop] = speed_primitive_formula(spreads[start:stop], a, coefficient)
+
+
+@njit
+def _psystem_spreads(w, spreads):
+    """Arguments w^+ - w^- of the p-system's primitive at every face k of the padded states w (2, m), the other
+    type frozen at cell k + 1 as in :func:`_primitives`: ``spreads[0, k]`` at w_{k+1} (the upper primitive of both
+    types), ``spreads[1, k]`` with w^-_k in the slot of w^- (the lower primitive of type w^-), ``spreads[2, k]``
+    with w^+_k in the slot of w^+ (that of type w^+)."""
+    for k in range(w.shape[1] - 1):
+        spreads[0, k] = w[PLUS, k + 1] - w[MINUS, k + 1]
+        spreads[1, k] = w[PLUS, k + 1] - w[MINUS, k]
+        spreads[2, k] = w[PLUS, k] - w[MINUS, k + 1]
+
+
+@njit
+def _psystem_inflow(w, primitives, fluctuations, speeds, right_going, inflow):
+    """:func:`_face_pass` and the sums of :func:`_entering` for the p-system, from the primitives at the spreads of
+    :func:`_psystem_spreads`: ``inflow[g, i]`` is the fluctuation of type g entering cell i of the padded row (1 <=
+    i <= m - 2) and the largest speed entering a cell is returned, NaN if a primitive is not finite.
+
+    The same operations in the same order as there, so the same numbers to the last bit, with the sums of
+    :func:`_entering` written out: a call of it, a compiled function taking arrays, costs about 10 ns (numba
+    counts the references of its arrays in and out), and :func:`_face_pass` with :func:`_upwind_update` took
+    50 ns per cell and step (both types) on the data of section 5.2.2, against 3 to 4 ns here and in the update
+    of :func:`_upwind_psystem_kernel`. ``fluctuations``, ``speeds`` and ``right_going`` are scratch rows of m - 1
+    faces."""
+    d, m = w.shape
+    fastest = 0.0
+    finite = True
+    for g in range(d):
+        upper, lower = primitives[0], primitives[1 + g]
+        for k in range(m - 1):
+            dp = upper[k] - lower[k]
+            scale = abs(upper[k]) + abs(lower[k])
+            finite &= np.isfinite(scale)
+            jump = w[g, k + 1] - w[g, k]
+            fluctuations[k] = dp
+            right_going[k] = dp >= 0.0 if jump > 0.0 else dp <= 0.0
+            speeds[k] = abs(dp) / abs(jump) if abs(dp) > SPEED_RESOLUTION * scale else 0.0
+        for i in range(1, m - 1):
+            # 0.0 + x + 0.0 is x to the bit, as in _entering, which adds nothing for a face that does not enter.
+            fluctuation = 0.0
+            fluctuation += fluctuations[i - 1] if right_going[i - 1] else 0.0
+            fluctuation += 0.0 if right_going[i] else fluctuations[i]
+            speed = 0.0
+            speed += speeds[i - 1] if right_going[i - 1] else 0.0
+            speed += 0.0 if right_going[i] else speeds[i]
+            inflow[g, i] = fluctuation
+            fastest = max(fastest, speed)
+    return fastest if finite else np.nan
+
+
+@njit(nogil=False)  # it takes the GIL for NumPy at every step
+def _upwind_psystem_kernel(w, dx, t, cfl, a, coefficient, low, high, max_steps, max_work, spreads, primitives,
+                           fluctuations, speeds, right_going, inflow, report):
+    """The time loop of :func:`upwind_diagonal` for the p-system, compiled, on checked input: ``w`` (2, m) the
+    padded states, updated in place, in [0, 1] (where the primitive is defined; the clipping to [low, high] keeps
+    them there); a and coefficient those of :meth:`PSystem.speed_primitive`; ``spreads`` and ``primitives``
+    (3, m - 1), ``inflow`` (2, m) and the rows of :func:`_psystem_inflow` are scratch.
+
+    Each step is that of the Python path, operation for operation: the primitives at the spreads of
+    :func:`_psystem_spreads` (evaluated by NumPy, :func:`_psystem_primitives`: the one object-mode call of the
+    loop), the fluctuations, directions and averaged speeds (1.8) of :func:`_psystem_inflow`, the time step
+    cfl dx / s_max recomputed and shortened at the end, the update clipped to [low, high]. Returns
+    :data:`_REACHED` with ``report[0]`` the steps taken (t reached, or a steady state: no fluctuation enters any
+    cell), :data:`_NOT_FINITE`, or :data:`_TOO_MUCH_WORK` with ``report[0]`` the steps the run would need, more
+    than ``max_steps`` or (with 2 cells updates per step) beyond ``max_work``, for the caller to raise."""
+    d, m = w.shape
+    cells = m - 2
+    time, steps = 0.0, 0
+    while time < t:
+        _psystem_spreads(w, spreads)
+        with numba.objmode():
+            _psystem_primitives(spreads, a, coefficient, primitives)
+        fastest = _psystem_inflow(w, primitives, fluctuations, speeds, right_going, inflow)
+        if not np.isfinite(fastest):
+            return _NOT_FINITE
+        if fastest == 0.0:
+            break
+        dt = cfl * dx / fastest
+        quotient = (t - time) / dt
+        needed = steps + (np.ceil(quotient) if np.isfinite(quotient) else np.inf)
+        if needed > max_steps or needed * d * cells > max_work:
+            report[0] = needed
+            return _TOO_MUCH_WORK
+        step = min(dt, t - time)
+        ratio = step / dx
+        for g in range(d):
+            for i in range(1, m - 1):
+                w[g, i] = min(max(w[g, i] - ratio * inflow[g, i], low[g]), high[g])
+        time += step
+        steps += 1
+    report[0] = steps
+    return _REACHED
+
+
+def _upwind_psystem(system: PSystem, padded, low, high, dx, t, cfl) -> int:
+    """The time loop of :func:`upwind_diagonal` for a :class:`PSystem`, compiled (:func:`_upwind_psystem_kernel`);
+    the same checks and errors as :func:`_upwind_python`. Returns the steps taken."""
+    if t > 0.0:  # the Python path's first step evaluates the primitive on every state; the run stays in their range
+        try:
+            in_interval("levels", padded, 0.0, 1.0)
+        except ValueError as error:
+            raise _primitive_failure(error) from error
+    cells = padded.shape[1] - 2
+    spreads, primitives = np.empty((2, 3, cells + 1))
+    fluctuations, speeds = np.empty((2, cells + 1))
+    right_going = np.empty(cells + 1, dtype=np.bool_)
+    inflow = np.zeros((2, cells + 2))
+    report = np.zeros(1)
+    status = _upwind_psystem_kernel(padded, dx, t, cfl, system.a, system.primitive_coefficient, low, high,
+                                    MAX_UPWIND_STEPS, MAX_UPWIND_WORK, spreads, primitives, fluctuations, speeds,
+                                    right_going, inflow, report)
+    if status == _NOT_FINITE:
+        raise ValueError(_NOT_FINITE_SPEEDS)
+    if status == _TOO_MUCH_WORK:
+        raise _too_much_work(t, cells, float(report[0]))
+    return int(report[0])
+
+
 def upwind_diagonal(system, w0, x_edges, t, cfl: float = 0.9, return_steps: bool = False):
     """Cell averages at time t of the first-order upwind scheme for the diagonal system (1.7).
 
@@ -280,6 +483,16 @@ def upwind_diagonal(system, w0, x_edges, t, cfl: float = 0.9, return_steps: bool
     fluctuation enters any cell the state is steady and is returned as it is; non-finite
     primitives or speeds are refused. With ``return_steps`` the number of time steps taken is
     returned too (d cells steps is the work).
+
+    For a :class:`~particle_methods.systems.PSystem` (the class itself, d = 2) the time loop runs
+    compiled (:func:`_upwind_psystem_kernel`), with the same steps, checks and errors: the primitive
+    of (5.7), :func:`~particle_methods.systems.speed_primitive_formula`, is evaluated by NumPy at each
+    step as :meth:`PSystem.speed_primitive` does, the rest of the step compiled, and the result is that
+    of the Python path to the last bit. The primitive is not evaluated in compiled code: libm's sinh and
+    atan there cost 26 ns a value against NumPy's 2.4 (AVX-512), and differ from NumPy's in the last bit
+    for one value in six, which the time step amplifies: s_max is set by averaged speeds in the tails of
+    the data, where the fluctuations are near :data:`SPEED_RESOLUTION` and carry relative errors up to
+    about 1e-5, so the steps and the results moved by up to 8e-6 and 5e-8 (4000 cells, t = 2).
     """
     d = checked_system(system)
     return_steps = instance("return_steps", return_steps, (bool, np.bool_))
@@ -292,31 +505,8 @@ def upwind_diagonal(system, w0, x_edges, t, cfl: float = 0.9, return_steps: bool
     t, cfl = checked_time_and_cfl(t, cfl)
     padded = np.concatenate([w[:, :1], w, w[:, -1:]], axis=1)
     low, high = w.min(axis=1), w.max(axis=1)
-    cells = w.shape[1]
-    fluctuations, speeds = np.empty((2, d, cells + 1))
-    right_going = np.empty((d, cells + 1), dtype=np.bool_)
-    time, steps = 0.0, 0
-    while time < t:
-        try:
-            upper, lower = _primitives(system, padded)
-        except ValueError as error:
-            raise ValueError(f"system.speed_primitive failed on the states of w0 or of the run: {error}") from error
-        fastest = _face_pass(padded, upper, lower, fluctuations, right_going, speeds)
-        if not math.isfinite(fastest):
-            raise ValueError("the averaged speeds are not finite: system.speed_primitive returned non-finite values, "
-                             "or values whose differences overflow")
-        if fastest == 0.0:
-            break
-        dt = cfl * dx / fastest
-        remaining = math.ceil((t - time) / dt) if math.isfinite((t - time) / dt) else math.inf
-        if steps + remaining > MAX_UPWIND_STEPS or (steps + remaining) * d * cells > MAX_UPWIND_WORK:
-            raise ValueError(f"t={t} on x_edges with {cells} cells needs about {steps + remaining:.3g} time steps at "
-                             f"the current speeds, more than MAX_UPWIND_STEPS = {MAX_UPWIND_STEPS:.0e} or "
-                             f"MAX_UPWIND_WORK = {MAX_UPWIND_WORK:.0e} type-cell updates: reduce t or use fewer cells")
-        step = min(dt, t - time)
-        _upwind_update(padded, fluctuations, right_going, step / dx, low, high)
-        time += step
-        steps += 1
+    evolve = _upwind_psystem if _compiled_psystem(system) else _upwind_python
+    steps = evolve(system, padded, low, high, dx, t, cfl)
     w = padded[:, 1:-1].copy()
     return (w, steps) if return_steps else w
 
