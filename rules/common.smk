@@ -7,13 +7,12 @@ from snakemake.utils import validate
 
 from particle_replication import registry
 from particle_replication.configuration import check_configuration
-from particle_replication.workflow import module_dependencies
+from particle_replication.workflow import code_inputs as workflow_code_inputs
 
 ROOT = Path(workflow.basedir)
 PACKAGE = ROOT / "src" / "particle_methods"  # the numerics
 REPLICATION = ROOT / "src" / "particle_replication"  # claims, verdicts, the pipeline's support
 PACKAGES = [PACKAGE, REPLICATION]
-REGISTRY = (REPLICATION / "registry").resolve()  # names and texts, not code inputs (see imports)
 
 # Software of every rule under `--software-deployment-method conda`. Its post-deploy script
 # installs the package from this clone, which it finds through PARTICLE_METHODS_SOURCE: set
@@ -35,11 +34,7 @@ def source(path):
 def code_inputs(path):
     """Modules of the two packages that ``path`` imports, directly or through each other, but for
     the registry (see :func:`imports`)."""
-    return [
-        source(module)
-        for module in module_dependencies(path, PACKAGES)
-        if not Path(module).is_relative_to(REGISTRY)
-    ]
+    return [source(module) for module in workflow_code_inputs(path, PACKAGES)]
 
 
 def imports(script):

@@ -121,6 +121,15 @@ def module_dependencies(script, package_dirs) -> list[str]:
     return sorted(str(path) for path in found)
 
 
+def code_inputs(script, package_dirs) -> list[str]:
+    """The modules a job's code inputs list: :func:`module_dependencies` of ``script`` but for the
+    registry (:mod:`particle_replication.registry`), whose captions and parameters reach a job as
+    its params, inputs and script, which Snakemake tracks, so that editing a caption reruns only
+    the plot that shows it."""
+    registry = (Path(__file__).parent / "registry").resolve()
+    return [path for path in module_dependencies(script, package_dirs) if not Path(path).is_relative_to(registry)]
+
+
 def _imported(node, here):
     """(dotted module parts, imported names) for an import statement."""
     if isinstance(node, ast.Import):
