@@ -4,7 +4,7 @@ plot_<paper>_<figures>, drawing the registered figures with their captions and t
 paper's claims rule, <paper>_claims, measuring every registered result file of the paper."""
 
 
-def figure_outputs(paper, plot):
+def plot_outputs(paper, plot):
     """PDF and PNG of each figure of a plot job (``pdf``/``png``, or ``<figure>_pdf``/``<figure>_png``
     for a job that draws several); each PNG goes to the Snakemake report with its caption."""
     outputs = {}
@@ -66,7 +66,7 @@ for paper in registry.PAPERS.values():
                 **plot.data,
                 code=imports(f"{paper.id}/{plot.script}"),
             output:
-                **figure_outputs(paper, plot),
+                **plot_outputs(paper, plot),
             log:
                 f"logs/{paper.id}/{'_'.join(plot.names)}_plot.log",
             benchmark:

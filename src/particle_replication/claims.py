@@ -368,16 +368,22 @@ def cause_line(expected) -> str:
             + ", ".join(f"{count} {words[cause]}" for cause, count in tally.items()))
 
 
-def failures_by_cause(claims, expected) -> str:
-    """Markdown: the failing claims with their cause and reason, counted per cause; a failure that is
-    not expected has the cause 'unexpected'."""
-    failing = [claim for claim in claims if claim.status == "fail"]
+def failures_with_causes(claims, expected) -> list[tuple[Claim, Expected]]:
+    """The failing claims with their expected verdicts, in the order of :data:`CAUSES`; a failure
+    that is not expected gets the cause 'unexpected' (last)."""
+    unexpected = Expected("fail", "not expected: snakemake verify reports it", "unexpected")
     rows = [(claim, expected[claim.id] if claim.id in expected and expected[claim.id].status == "fail"
-             else Expected("fail", "not expected: `snakemake verify` reports it", "unexpected")) for claim in failing]
+             else unexpected) for claim in claims if claim.status == "fail"]
+    order = [*CAUSES, "unexpected"]
+    return sorted(rows, key=lambda row: order.index(row[1].cause))
+
+
+def failures_by_cause(claims, expected) -> str:
+    """Markdown: the failing claims with their cause and reason, counted per cause."""
+    rows = failures_with_causes(claims, expected)
     lines = ["## Failures by cause", "", cause_line({claim.id: verdict for claim, verdict in rows}), "",
              "| id | kind | cause | reason |", "|---|---|---|---|"]
-    order = [*CAUSES, "unexpected"]
-    for claim, verdict in sorted(rows, key=lambda row: order.index(row[1].cause)):
+    for claim, verdict in rows:
         reason = verdict.reason.replace("|", "\\|")
         lines.append(f"| `{claim.id}` | {claim.kind} | {verdict.cause} | {reason} |")
     return "\n".join(lines) + "\n"

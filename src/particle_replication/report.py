@@ -30,7 +30,7 @@ from pathlib import Path
 
 import yaml
 
-from .claims import CAUSES, KINDS, Expected, cause_counts, read_claims, read_verdicts
+from .claims import KINDS, cause_counts, failures_with_causes, read_claims, read_verdicts
 from .rates import read_rates
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
@@ -113,24 +113,15 @@ def _claims_table(claims) -> str:
     return _CLAIM_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
 
 
-def _failures_table(claims, expected) -> str:
-    """A longtable of the failing claims: id, kind, cause, published, measured, reason, by cause."""
-    order = [*CAUSES, "unexpected"]
-    rows = []
-    for claim in sorted(claims, key=lambda claim: order.index(_verdict(claim, expected).cause)):
-        verdict = _verdict(claim, expected)
+def _failures_table(rows) -> str:
+    """A longtable of the failing claims (:func:`particle_replication.claims.failures_with_causes`):
+    id, kind, cause, published, measured, reason."""
+    lines = []
+    for claim, verdict in rows:
         cells = [f"\\texttt{{{_breakable(claim.id)}}}", tex(claim.kind), tex(verdict.cause), cell(claim.published),
                  cell(claim.measured), tex(verdict.reason)]
-        rows.append(" & ".join(cells) + " \\\\\n")
-    return _FAILURE_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
-
-
-def _verdict(claim, expected) -> Expected:
-    """The expected verdict of a failing claim, or 'unexpected' when it was expected to pass."""
-    verdict = expected.get(claim.id)
-    if verdict is None or verdict.status != "fail":
-        return Expected("fail", "not expected: snakemake verify reports it", "unexpected")
-    return verdict
+        lines.append(" & ".join(cells) + " \\\\\n")
+    return _FAILURE_TABLE_HEAD + "".join(lines) + "\\end{longtable}\n"
 
 
 def _define(family: str, key: str, value: str) -> str:
@@ -189,9 +180,9 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
             summary += _counts(f"{paper}.{kind}", [claim for claim in rows if claim.kind == kind])
         if paper != "all":
             (outdir / f"claims_{paper}.tex").write_text(_claims_table(rows))
-    failures = [claim for claim in claims if claim.status == "fail"]
-    (outdir / "failures.tex").write_text(_failures_table(failures, expected) if failures else "No claim fails.\n")
-    tally = cause_counts({claim.id: _verdict(claim, expected) for claim in failures})
+    failures = failures_with_causes(claims, expected)
+    (outdir / "failures.tex").write_text(_failures_table(failures) if failures else "No claim fails.\n")
+    tally = cause_counts({claim.id: verdict for claim, verdict in failures})
     summary += [_define("claimcount", f"cause.{cause}", str(count)) for cause, count in tally.items()]
     (outdir / "summary.tex").write_text("".join(summary))
     (outdir / "rates.tex").write_text("".join(_rate_table(rate) for rate in read_rates(rates_json)))
