@@ -122,6 +122,7 @@ SNIPPETS = expand(
         "parameters",
         "configuration",
         "failures",
+        "changes",
         "rates",
         "summary",
         "versions",
@@ -144,6 +145,7 @@ rule report_snippets:
         rates="results/rates.json",
         versions="results/versions.md",
         expected=VERDICTS,
+        changes=source(ROOT / "config" / "changes.yaml"),
         code=imports("report/snippets.py"),
     output:
         SNIPPETS,

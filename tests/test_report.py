@@ -1,10 +1,12 @@
 """LaTeX snippets of the report: values typeset from the claims table and the configuration."""
 
 import re
+from pathlib import Path
 
 import pytest
+import yaml
 
-from particle_replication.claims import Claim, Expected, write_claims
+from particle_replication.claims import Change, Claim, Expected, read_changes, read_verdicts, write_claims
 from particle_replication.rates import order, write_rates
 from particle_replication.report import cell, number, tex, write_snippets
 
@@ -57,8 +59,9 @@ def snippets(tmp_path):
     config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]}}
     expected = {"demo.fig1.order": Expected("pass"), "other.mass": Expected("pass"),
                 "demo.fig2.peaks": Expected("fail", "three, not two", "contradicts")}
+    changes = [Change(("demo.fig2.peaks",), "3 against 2", "peaks counted above 1e-3", "noise made a third")]
     write_snippets(tmp_path / "claims.csv", tmp_path / "rates.json", tmp_path / "versions.md", config,
-                   tmp_path / "out", expected)
+                   tmp_path / "out", expected, changes)
     return {path.stem: path.read_text() for path in (tmp_path / "out").iterdir()}
 
 
@@ -113,3 +116,29 @@ def test_versions_name_the_commit_or_say_unknown_outside_a_clone(tmp_path, monke
     monkeypatch.setenv("PARTICLE_METHODS_SOURCE", str(tmp_path))
     assert environment.commit() == {"hash": "unknown", "date": "unknown", "epoch": "0", "modified": "unknown"}
     assert "Commit: unknown" in environment.markdown()
+
+
+def test_the_changes_after_failing_runs_are_listed_with_their_failing_values(snippets):
+    body = snippets["changes"].split(r"\endlastfoot")[1]
+    assert body.count(r" \\") == 1
+    assert "demo.\\allowbreak{}fig2.\\allowbreak{}peaks" in body and "noise made a third" in body
+
+
+def test_the_register_of_changes_refuses_unknown_claims_and_missing_fields(tmp_path):
+    path = tmp_path / "changes.yaml"
+    entry = {"claims": ["demo.fig2.peaks"], "failing": "3", "change": "a threshold", "why": "noise"}
+    path.write_text(yaml.safe_dump({"changes": [entry]}))
+    assert read_changes(path, {"demo.fig2.peaks"}) == [Change(("demo.fig2.peaks",), "3", "a threshold", "noise")]
+    with pytest.raises(ValueError, match="do not exist"):
+        read_changes(path, {"other.mass"})
+    path.write_text(yaml.safe_dump({"changes": [{**entry, "why": ""}]}))
+    with pytest.raises(ValueError, match="non-empty"):
+        read_changes(path)
+    path.write_text(yaml.safe_dump({"changes": [{"claims": ["demo.fig2.peaks"], "failing": "3"}]}))
+    with pytest.raises(ValueError, match="keys"):
+        read_changes(path)
+
+
+def test_the_repository_register_names_only_claims_with_expected_verdicts():
+    root = Path(__file__).resolve().parents[1]
+    assert read_changes(root / "config" / "changes.yaml", read_verdicts(root / "config" / "verdicts.yaml"))

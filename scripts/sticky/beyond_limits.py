@@ -10,9 +10,9 @@ core while the timed runs hold them all.
 
 import numpy as np
 
-from particle_methods.finite_volume.grids import l1_between_cell_functions
 from particle_methods.finite_volume.psystem import hll_psystem, invariants_from_conservative, upwind_diagonal
 from particle_methods.sticky.cases import (
+    cells_distance,
     configuration_distance,
     distance_to_cells,
     psystem_initial_cells,
@@ -23,10 +23,6 @@ from particle_methods.systems import PSystem
 from particle_replication.workflow import logged, progress, save_results
 
 PSYSTEM_CASES = ("rarefaction", "shocks")
-
-
-def cell_distance(a, b, edges_a, edges_b):
-    return sum(l1_between_cell_functions(x, edges_a, y, edges_b) for x, y in zip(a, b))
 
 
 def hll_invariants(system, case, x0, edges, t, cfl):
@@ -61,9 +57,9 @@ def run(system_params, cases, p, output):
         results[name] = dict(
             limit_to_hll=to_hll, limit_to_upwind=to_upwind,
             mspd_gap=configuration_distance(exact[limit_n[-1]], exact[limit_n[-2]]),
-            hll_gap=cell_distance(hll, hll_half, fine, coarse),
-            upwind_gap=cell_distance(up, up_half, fine_up, coarse_up),
-            hll_to_upwind=cell_distance(hll, up, fine, fine_up), hll_w=hll, upwind_w=up, mspd=exact[limit_n[-1]])
+            hll_gap=cells_distance(hll, fine, hll_half, coarse),
+            upwind_gap=cells_distance(up, fine_up, up_half, coarse_up),
+            hll_to_upwind=cells_distance(hll, fine, up, fine_up), hll_w=hll, upwind_w=up, mspd=exact[limit_n[-1]])
     save_results(output, t=t, cases=np.array(PSYSTEM_CASES), limit_n=limit_n, reference_cells=p["reference_cells"],
                  upwind_reference_cells=p["upwind_reference_cells"],
                  **{f"{case}_{key}": np.asarray(value) for case, r in results.items() for key, value in r.items()})

@@ -320,6 +320,41 @@ def read_verdicts(path, run: str = "full") -> dict[str, Expected]:
     return {**verdicts, **differences}
 
 
+class Change(NamedTuple):
+    """A rule changed after a run in which it failed: the claims it decides, the failing value seen,
+    what changed and why."""
+
+    claims: tuple[str, ...]
+    failing: str
+    change: str
+    why: str
+
+
+def read_changes(path, known=None) -> list[Change]:
+    """The register of rules changed after a failing run (``config/changes.yaml``): a list ``changes``
+    of entries with the keys of :class:`Change`. With ``known`` (claim ids), every claim an entry names
+    must be among them, so that the register cannot name a claim that no longer exists."""
+    data = yaml.safe_load(Path(path).read_text()) or {}
+    entries = data.get("changes") if isinstance(data, dict) else None
+    if not isinstance(entries, list) or not entries:
+        raise ValueError(f"{path}: expected a non-empty list 'changes'")
+    changes = []
+    for index, entry in enumerate(entries):
+        if not isinstance(entry, dict) or set(entry) != set(Change._fields):
+            raise ValueError(f"{path}: change {index} needs exactly the keys {list(Change._fields)}")
+        texts = [entry[key] for key in Change._fields[1:]]
+        if not all(isinstance(text, str) and text.strip() for text in texts):
+            raise ValueError(f"{path}: change {index}: failing, change and why must be non-empty texts")
+        ids = entry["claims"]
+        if not isinstance(ids, list) or not ids or not all(isinstance(i, str) for i in ids):
+            raise ValueError(f"{path}: change {index}: claims must be a non-empty list of claim ids")
+        unknown = sorted(set(ids) - set(known)) if known is not None else []
+        if unknown:
+            raise ValueError(f"{path}: change {index} names claims that do not exist: {unknown}")
+        changes.append(Change(tuple(ids), *texts))
+    return changes
+
+
 def verify(claims_path, verdicts_path, run: str = "full") -> int:
     """Print the paper claims, then every difference from the expected verdicts; return the exit code.
 

@@ -7,6 +7,8 @@
   ``\\status{<claim id>}`` for any claim;
 - ``failures.tex``: the failing claims of every paper in one table, with the cause and reason of each
   (from the expected verdicts, :data:`particle_replication.claims.CAUSES`);
+- ``changes.tex``: the rules changed after a run in which they failed, with the failing values
+  (``config/changes.yaml``, :func:`particle_replication.claims.read_changes`);
 - ``parameters.tex``: ``\\param{<dotted config key>}`` for every configuration value;
 - ``configuration.tex``: the whole configuration of the run, one line per key (an appendix);
 - ``summary.tex``: ``\\claimcount{<paper>.pass}``, ``.fail`` and ``.all`` over every kind, and
@@ -30,7 +32,7 @@ from pathlib import Path
 
 import yaml
 
-from .claims import KINDS, cause_counts, failures_with_causes, read_claims, read_verdicts
+from .claims import KINDS, cause_counts, failures_with_causes, read_changes, read_claims, read_verdicts
 from .rates import read_rates
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
@@ -49,6 +51,12 @@ _FAILURE_TABLE_HEAD = (
     ">{\\raggedright\\scriptsize}p{1.7cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.4cm}"
     ">{\\raggedright\\arraybackslash}p{5.2cm}@{}}\n"
     "\\toprule id & kind & cause & published & measured & reason \\\\ \\midrule \\endhead\n"
+    "\\bottomrule \\endlastfoot\n"
+)
+_CHANGE_TABLE_HEAD = (
+    "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.8cm}>{\\raggedright\\scriptsize}p{2.6cm}"
+    ">{\\raggedright\\scriptsize}p{4.4cm}>{\\raggedright\\arraybackslash\\scriptsize}p{3.6cm}@{}}\n"
+    "\\toprule claims & failing value & change & why \\\\ \\midrule \\endhead\n"
     "\\bottomrule \\endlastfoot\n"
 )
 _SYMBOLS = {"<=": r"\ensuremath{\le}", ">=": r"\ensuremath{\ge}", "+-": r"\ensuremath{\pm}"}
@@ -124,6 +132,15 @@ def _failures_table(rows) -> str:
     return _FAILURE_TABLE_HEAD + "".join(lines) + "\\end{longtable}\n"
 
 
+def _changes_table(changes) -> str:
+    """A longtable of the rules changed after a failing run (:func:`particle_replication.claims.read_changes`)."""
+    lines = []
+    for change in changes:
+        ids = ", ".join(f"\\texttt{{{_breakable(i)}}}" for i in change.claims)
+        lines.append(" & ".join([ids, tex(change.failing), tex(change.change), tex(change.why)]) + " \\\\\n")
+    return _CHANGE_TABLE_HEAD + "".join(lines) + "\\end{longtable}\n"
+
+
 def _define(family: str, key: str, value: str) -> str:
     return f"\\expandafter\\def\\csname {family}@{key}\\endcsname{{{value}}}\n"
 
@@ -157,10 +174,11 @@ def _rate_table(rate) -> str:
             + "\\bottomrule\\end{tabular}}\\par\\medskip\n")
 
 
-def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected) -> None:
+def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected, changes) -> None:
     """Write every snippet to ``outdir``; ``config`` is the run's configuration (dict or YAML path),
     ``expected`` its expected verdicts (:func:`particle_replication.claims.read_verdicts`), which give
-    the failures their causes."""
+    the failures their causes, and ``changes`` the rules changed after a failing run
+    (:func:`particle_replication.claims.read_changes`)."""
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     claims = read_claims(claims_csv)
@@ -182,6 +200,7 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
             (outdir / f"claims_{paper}.tex").write_text(_claims_table(rows))
     failures = failures_with_causes(claims, expected)
     (outdir / "failures.tex").write_text(_failures_table(failures) if failures else "No claim fails.\n")
+    (outdir / "changes.tex").write_text(_changes_table(changes))
     tally = cause_counts({claim.id: verdict for claim, verdict in failures})
     summary += [_define("claimcount", f"cause.{cause}", str(count)) for cause, count in tally.items()]
     (outdir / "summary.tex").write_text("".join(summary))
@@ -215,9 +234,11 @@ def main(argv=None) -> int:
     parser.add_argument("outdir")
     parser.add_argument("--expected", required=True, help="YAML file of expected verdicts (the failures' causes)")
     parser.add_argument("--run", default="full", help="the run whose verdicts to use (full, or a section)")
+    parser.add_argument("--changes", required=True, help="YAML file of the rules changed after a failing run")
     args = parser.parse_args(argv)
-    write_snippets(args.claims, args.rates, args.versions, args.config, args.outdir,
-                   read_verdicts(args.expected, args.run))
+    expected = read_verdicts(args.expected, args.run)
+    write_snippets(args.claims, args.rates, args.versions, args.config, args.outdir, expected,
+                   read_changes(args.changes, expected))
     return 0
 
 

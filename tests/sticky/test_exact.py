@@ -28,6 +28,15 @@ def test_burgers_two_atoms_is_two_rarefaction_fans():
     np.testing.assert_allclose(solution.cdf(x), [0, 0, 0.25, 0.5, 0.5, 0.75, 1.0, 1.0], atol=1e-15)
 
 
+@pytest.mark.parametrize("weights", [None, [0.3, 0.2, 0.5]])
+@pytest.mark.parametrize("t", [0.5, 3.0, 10.0])
+def test_burgers_cdf_from_atoms_in_closed_form_matches_the_bisection(weights, t):
+    solution = BurgersSolution(Atoms([-1.0, 0.5, 1.0], weights), t)
+    x = np.concatenate([np.linspace(-3.0, 13.0, 2001), solution.quantile(np.linspace(0.0, 1.0, 101))])
+    bisection = super(BurgersSolution, solution)._cdf(x)
+    assert np.abs(solution.cdf(x) - bisection).max() <= 1e-15
+
+
 def test_burgers_two_atoms_error_is_first_order():
     case = SCALAR_CASES["burgers_two_atoms"]
     n = np.array([4, 8, 16, 32])

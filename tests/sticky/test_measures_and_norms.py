@@ -5,6 +5,7 @@ import pytest
 from scipy import integrate, stats
 
 from particle_methods.norms import w1_between_samples, w1_to_measure
+from particle_methods.sticky.cases import cells_distance, cells_quantile
 from particle_methods.sticky.measures import (
     Atoms,
     Laplace,
@@ -103,3 +104,26 @@ def test_median_quantiles_minimise_w1(rng):
 def test_bad_input(make, message):
     with pytest.raises(ValueError, match=message):
         make()
+
+
+def test_cells_quantile_is_the_left_edge_of_the_first_cell_reaching_the_level():
+    edges = np.linspace(0.0, 4.0, 5)
+    w = np.array([0.0, 0.25, 0.5, 1.0])
+    assert cells_quantile(w, edges, 0.5) == 2.0
+    assert cells_quantile(w, edges, 0.3) == 2.0
+    assert cells_quantile(w, edges, 1.0) == 3.0
+    assert cells_quantile(np.zeros(4), edges, 0.5) == 4.0
+    with pytest.raises(ValueError, match="level"):
+        cells_quantile(w, edges, 0.0)
+    with pytest.raises(ValueError, match="x_edges"):
+        cells_quantile(w, edges[:-1], 0.5)
+
+
+def test_cells_distance_is_the_sum_over_types_of_the_l1_distances():
+    fine, coarse = np.linspace(0.0, 1.0, 5), np.linspace(0.0, 1.0, 3)
+    a = np.array([[0.0, 0.5, 0.5, 1.0], [0.0, 0.0, 1.0, 1.0]])
+    b = np.array([[0.25, 0.75], [0.0, 1.0]])
+    assert cells_distance(a, fine, b, coarse) == pytest.approx(0.25 * (0.25 + 0.25 + 0.25 + 0.25) + 0.0)
+    assert cells_distance(a, fine, a, fine) == 0.0
+    with pytest.raises(ValueError, match="types"):
+        cells_distance(a, fine, b[:1], coarse)

@@ -101,3 +101,25 @@ def test_bad_input(x, delta, steps, message):
 def test_unknown_case():
     with pytest.raises(ValueError, match="unknown p-system case"):
         psystem_initial_configuration("vacuum", 0.0, 4)
+
+
+class _Delegate:
+    """The p-system behind the generic interface: the TSPD takes its checked path."""
+
+    d = 2
+
+    def __init__(self, system):
+        self.system = system
+
+    def speed_primitive(self, gamma, levels):
+        return self.system.speed_primitive(gamma, levels)
+
+
+@pytest.mark.parametrize("case", ["rarefaction", "shocks"])
+def test_the_p_system_formula_path_gives_the_checked_primitive_bit_for_bit(case):
+    system = PSystem(nu=0.5, kappa=5.0)
+    x = psystem_initial_configuration(case, -1.0, 60)
+    fast, operations = mspd_positions(x, system, 0.05, 40, return_operations=True)
+    assert np.array_equal(fast, mspd_positions(x, _Delegate(system), 0.05, 40))
+    # Every step: d^2 n rank entries, then n pushes and at most n - 1 merges per type.
+    assert 40 * (4 * 60 + 2 * 60) <= operations <= 40 * (4 * 60 + 2 * (2 * 60 - 1))

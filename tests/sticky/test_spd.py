@@ -116,3 +116,15 @@ def test_bad_flux_and_n():
         velocities_from_flux(burgers_flux, 0)
     with pytest.raises(ValueError, match="NaN"):
         velocities_from_flux(lambda u: np.where(u > 0.5, np.nan, u), 4)
+
+
+def test_the_hull_counts_n_pushes_and_one_merge_per_particle_absorbed():
+    rng = np.random.default_rng(3)
+    x, v = np.sort(rng.uniform(size=500)), rng.normal(size=500)
+    positions, operations = spd_positions(x, v, 0.7, return_operations=True)
+    assert operations == 2 * 500 - cluster_sizes(positions).size
+    assert np.array_equal(positions, spd_positions(x, v, 0.7))
+    _, free = spd_positions(x, np.sort(v), 0.7, return_operations=True)  # increasing velocities: no collision
+    assert free == 500
+    with pytest.raises(TypeError, match="return_operations"):
+        spd_positions(x, v, 0.7, return_operations=1)

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..finite_volume.fluxes import burgers_flux, concave_flux
-from ..finite_volume.grids import l1_distance_to_step_cdf
+from ..finite_volume.grids import l1_between_cell_functions, l1_distance_to_step_cdf
 from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
 from ..validation import finite_array, finite_number, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution
@@ -101,6 +101,29 @@ def distance_to_cells(configuration, w, x_edges) -> float:
         raise ValueError(f"the particles span [{configuration.min():.6g}, {configuration.max():.6g}], beyond the grid "
                          f"[{edges[0]:.6g}, {edges[-1]:.6g}]: widen x_edges")
     return sum(l1_distance_to_step_cdf(values, edges, points) for values, points in zip(w, configuration))
+
+
+def cells_distance(w_a, edges_a, w_b, edges_b) -> float:
+    """W1^(d) (1.10) between two cell functions of the CDFs, w_a (d, cells_a) on ``edges_a`` and w_b
+    (d, cells_b) on ``edges_b`` (the same span): the sum over types of their exact L1 distances."""
+    w_a, w_b = finite_array("w_a", w_a, ndim=2), finite_array("w_b", w_b, ndim=2)
+    if w_a.shape[0] != w_b.shape[0]:
+        raise ValueError(f"w_a and w_b must have the same number of types d, got shapes {w_a.shape} and {w_b.shape}")
+    return float(sum(l1_between_cell_functions(a, edges_a, b, edges_b) for a, b in zip(w_a, w_b)))
+
+
+def cells_quantile(w, x_edges, level: float) -> float:
+    """inf{x : F(x) >= level} for the CDF F equal to w[i] on the cell [x_edges[i], x_edges[i + 1]): the
+    left edge of the first cell whose value reaches ``level`` in (0, 1] (the right end if none does)."""
+    w = finite_array("w", w)
+    edges = sorted_array("x_edges", x_edges)
+    if edges.size != w.size + 1:
+        raise ValueError(f"x_edges must hold len(w) + 1 = {w.size + 1} edges, got {edges.size}")
+    level = finite_number("level", level)
+    if not 0.0 < level <= 1.0:
+        raise ValueError(f"level must lie in (0, 1], got {level}")
+    reached = np.flatnonzero(w >= level)
+    return float(edges[reached[0]] if reached.size else edges[-1])
 
 
 def configuration_distance(a, b) -> float:

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..jit import njit
 from ..validation import finite_values, nonnegative
-from .measures import Laplace, QuantileMeasure, checked_measure
+from .measures import Atoms, Laplace, QuantileMeasure, checked_measure
 
 
 @njit
@@ -75,6 +75,17 @@ class BurgersSolution(QuantileMeasure):
 
     def _quantile_integral(self, w):
         return self.initial._quantile_integral(w) + 0.5 * self.t * w**2
+
+    def _cdf(self, x):
+        """From atoms a_j with levels (L_{j-1}, L_j], in closed form: the fan of atom j covers
+        [a_j + t L_{j-1}, a_j + t L_j], on which F(x) = (x - a_j)/t; F is constant between fans.
+        Other initial measures (or t = 0): by bisection on the quantile."""
+        if not isinstance(self.initial, Atoms) or self.t == 0.0:
+            return super()._cdf(x)
+        atoms = self.initial
+        j = np.searchsorted(atoms.positions + self.t * atoms.level_starts, x, side="right") - 1
+        inside = (x - atoms.positions[np.maximum(j, 0)]) / self.t
+        return np.where(j >= 0, np.minimum(atoms.levels[np.maximum(j, 0)], inside), 0.0)
 
 
 class ConcaveLaplaceSolution(QuantileMeasure):

@@ -102,27 +102,27 @@ class Atoms(QuantileMeasure):
             raise ValueError("weights must be positive, one per position")
         if not np.isclose(self.weights.sum(), 1.0, rtol=0, atol=1e-12):
             raise ValueError("weights must sum to 1")
-        self._levels = np.cumsum(self.weights)
-        self._levels[-1] = 1.0
-        self._level_starts = self._levels - self.weights
+        self.levels = np.cumsum(self.weights)
+        self.levels[-1] = 1.0
+        self.level_starts = self.levels - self.weights
         partial_means = finite_result("a partial sum of p_j a_j", np.cumsum(self.positions * self.weights),
                                       "positions are too large")
         self._integral_starts = np.concatenate(([0.0], partial_means[:-1]))
 
     def _atom_index(self, w):
-        index = np.searchsorted(self._levels, w, side="left")
+        index = np.searchsorted(self.levels, w, side="left")
         return np.minimum(index, self.positions.size - 1)
 
     def _cdf(self, x):
         index = np.searchsorted(self.positions, x, side="right")
-        return np.where(index > 0, self._levels[np.maximum(index - 1, 0)], 0.0)
+        return np.where(index > 0, self.levels[np.maximum(index - 1, 0)], 0.0)
 
     def _quantile(self, w):
         return self.positions[self._atom_index(w)]
 
     def _quantile_integral(self, w):
         j = self._atom_index(w)
-        return self._integral_starts[j] + self.positions[j] * (w - self._level_starts[j])
+        return self._integral_starts[j] + self.positions[j] * (w - self.level_starts[j])
 
 
 class Laplace(QuantileMeasure):

@@ -24,9 +24,9 @@ import math
 import numpy as np
 
 from ..jit import njit
-from ..systems import checked_primitive, checked_system
-from ..validation import ParameterTypeError, integer_at_least, positive, sorted_array
-from .spd import MAX_POSITIONS, check_reach, hull_positions_kernel
+from ..systems import MINUS, PLUS, PSystem, checked_primitive, checked_system, speed_primitive_formula
+from ..validation import ParameterTypeError, instance, integer_at_least, positive, sorted_array
+from .spd import MAX_POSITIONS, check_reach, hull_operations, hull_positions_kernel
 
 #: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms
 #: (Python calls of the system), so 10**6 steps take one to two minutes. The figures take at most 10**4.
@@ -113,16 +113,28 @@ def rank_velocities(x, system) -> np.ndarray:
     return _checked_velocities(x, system)[0]
 
 
+def _primitive(system):
+    """The primitive (gamma, levels) -> values of (1.8) for levels that are ranks over n, in [0, 1] by
+    construction: for a :class:`PSystem` its formula (:func:`speed_primitive_formula`, the arithmetic of
+    :meth:`PSystem.speed_primitive` without the checks of its input, which cost more than the formula
+    at every step), else the system's own, checked."""
+    if isinstance(system, PSystem):
+        a, coefficient = system.a, system.primitive_coefficient
+        return lambda gamma, levels: speed_primitive_formula(levels[:, PLUS] - levels[:, MINUS], a, coefficient)
+    return lambda gamma, levels: checked_primitive(system, gamma, levels)
+
+
 def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
     """Velocities (1.8) and their largest magnitude, after checking that they are finite."""
     d, n = x.shape
     levels = ranks_kernel(x) / n
     velocities = np.empty((d, n))
+    primitive = _primitive(system)
     for gamma in range(d):
         upper = levels[gamma]
         lower = upper.copy()
         lower[:, gamma] -= 1.0 / n
-        velocities[gamma] = n * (checked_primitive(system, gamma, upper) - checked_primitive(system, gamma, lower))
+        velocities[gamma] = n * (primitive(gamma, upper) - primitive(gamma, lower))
     speed = float(np.abs(velocities).max())  # one pass: NaN or inf if any velocity is
     if not math.isfinite(speed):
         raise ValueError("the velocities (1.8) are not finite: system.speed_primitive returned non-finite values, "
@@ -130,11 +142,16 @@ def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
     return velocities, speed
 
 
-def _tspd_step(x, system, delta, out):
+def _tspd_step(x, system, delta, out) -> int:
+    """One TSPD step from ``x`` into ``out``; returns its operations: the d^2 n rank entries of
+    :func:`ranks_kernel` and the stack operations of the d hull passes (:func:`.spd.hull_operations`)."""
     velocities, speed = _checked_velocities(x, system)
     check_reach(x, speed, delta, "Delta", "velocities")
-    for gamma in range(x.shape[0]):
-        hull_positions_kernel(x[gamma], velocities[gamma], delta, out[gamma])
+    d, n = x.shape
+    operations = d * d * n
+    for gamma in range(d):
+        operations += hull_operations(n, hull_positions_kernel(x[gamma], velocities[gamma], delta, out[gamma]))
+    return operations
 
 
 def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
@@ -152,13 +169,16 @@ def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
     return path
 
 
-def mspd_positions(x0, system, delta: float, steps: int) -> np.ndarray:
-    """Iterated TSPD after ``steps`` steps of length Delta, keeping only the current state."""
+def mspd_positions(x0, system, delta: float, steps: int, return_operations: bool = False):
+    """Iterated TSPD after ``steps`` steps of length Delta, keeping only the current state; with
+    ``return_operations`` also the operations counted over the steps (see :func:`_tspd_step`)."""
     x0 = checked_configuration("x0", x0, system)
     delta = positive("Delta", delta)
     steps = _checked_steps(steps, x0)
+    return_operations = instance("return_operations", return_operations, (bool, np.bool_))
     current, following = x0.copy(), np.empty_like(x0)
+    operations = 0
     for _ in range(steps):
-        _tspd_step(current, system, delta, following)
+        operations += _tspd_step(current, system, delta, following)
         current, following = following, current
-    return current
+    return (current, operations) if return_operations else current

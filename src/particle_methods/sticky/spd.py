@@ -30,6 +30,7 @@ from ..validation import (
     ParameterTypeError,
     finite_array,
     finite_result,
+    instance,
     integer_at_least,
     nonnegative,
     same_length,
@@ -183,15 +184,20 @@ def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: 
         )
 
 
-def _hull(x, v, masses, t: float, out) -> None:
-    """The equal-mass kernel for ``masses=None``, else the weighted one."""
+def _hull(x, v, masses, t: float, out) -> int:
+    """The equal-mass kernel for ``masses=None``, else the weighted one; returns the number of clusters."""
     if masses is None:
-        hull_positions_kernel(x, v, t, out)
-    else:
-        _weighted_hull_positions(x, v, masses, t, out)
+        return hull_positions_kernel(x, v, t, out)
+    return _weighted_hull_positions(x, v, masses, t, out)
 
 
-def spd_positions(x, v, t: float, masses=None) -> np.ndarray:
+def hull_operations(n: int, clusters: int) -> int:
+    """Stack operations of one hull pass over n particles that ends with ``clusters`` segments: n
+    pushes and n - clusters merges (each merge pops one segment), counted from what the pass returns."""
+    return 2 * n - clusters
+
+
+def spd_positions(x, v, t: float, masses=None, return_operations: bool = False):
     """Positions phi[v](x; t) of the SPD at time ``t`` (section 5.1.1), in O(n).
 
     Parameters
@@ -201,14 +207,16 @@ def spd_positions(x, v, t: float, masses=None) -> np.ndarray:
     t : time, t >= 0.
     masses : positive masses, one per particle, any total; None for equal masses 1/n. At most
         :data:`MAX_MASS_RATIO` between the largest and the smallest.
+    return_operations : also return the stack operations the hull pass made (:func:`hull_operations`).
     """
     x, v = checked_state(x, v)
     t = nonnegative("t", t)
     masses = None if masses is None else checked_masses(masses, x)
+    return_operations = instance("return_operations", return_operations, (bool, np.bool_))
     check_reach(x, np.abs(v).max(), t, masses=masses)
     out = np.empty_like(x)
-    _hull(x, v, masses, t, out)
-    return out
+    clusters = _hull(x, v, masses, t, out)
+    return (out, hull_operations(x.size, clusters)) if return_operations else out
 
 
 def spd_trajectories(x, v, times, masses=None) -> np.ndarray:

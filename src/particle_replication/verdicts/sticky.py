@@ -17,12 +17,14 @@ import math
 import numpy as np
 
 from particle_methods.convergence import pairwise_orders
+from particle_methods.sticky.cases import cells_quantile
 from particle_methods.sticky.spd import cluster_sizes
 from particle_methods.systems import MINUS, PLUS, PSystem
 
 from .. import claims as c
 from ..rates import Recorder, fit, order
 from ..steady import holds_from
+from .sticky_figures import figure_claims
 
 PAPER = "sticky"
 #: Scale of the W1 and L1 distances compared with 0: unit mass on positions of order 1 (the atoms at -1
@@ -455,58 +457,128 @@ def common_error(*error_rows) -> float:
     return float(max(np.min(row) for row in error_rows))
 
 
+def predicted_exponents(k: float, log_scale: float, smallest: float, tolerance: float) -> tuple[float, float]:
+    """Range of the exponent of work ~ N^k against 1/error, for an error (a + b log(s N))/N with a, b >= 0
+    at N >= ``smallest`` (s = ``log_scale``; 0 for no log factor, b = 0), widened by ``tolerance``
+    (relative) on both ends.
+
+    d log(error)/d log N = -1 + b/(a + b log(s N)) lies in [-1, -1 + 1/log(s N)], so the exponent
+    k / (1 - b/(a + b log(s N))) lies in [k, k/(1 - 1/log(s N))], largest at the smallest N.
+    """
+    if log_scale == 0:
+        return k * (1.0 - tolerance), k * (1.0 + tolerance)
+    log_n = math.log(log_scale * smallest)
+    if log_n <= 1.0:
+        raise ValueError(f"log(s N) = {log_n:.3g} at the smallest N = {smallest:g}: the log-factor range needs more "
+                         "than 1")
+    return k * (1.0 - tolerance), k / (1.0 - 1.0 / log_n) * (1.0 + tolerance)
+
+
+def resolvable(errors, reference_error: float, share: float) -> np.ndarray:
+    """Indices of the runs whose error a reference with its own error ``reference_error`` resolves:
+    errors at least ``reference_error / share``."""
+    return np.flatnonzero(np.asarray(errors, dtype=float) >= reference_error / share)
+
+
 def cost_exponent(rates: Recorder, name: str, errors, work, window: int, label: str = "") -> float:
-    """Slope of log(work) against log(1/error) on the ``window`` most accurate runs (the paper's
+    """Slope of log(work) against log(1/error) on the ``window`` most accurate runs given (the paper's
     O(eps^-2) has slope 2)."""
     errors, work = np.asarray(errors, dtype=float), np.asarray(work, dtype=float)
+    order_ = np.argsort(-errors)
+    errors, work = errors[order_], work[order_]
     return rates.add(fit(f"{PAPER}.beyond.exponent.{name}", "log work against log(1/error)", "1/error", 1.0 / errors,
                          np.log(1.0 / errors), np.log(work), window, label))
+
+
+def time_exponent(work, seconds, floor: float, window: int) -> float:
+    """Slope of log(best wall time) against log(operations) over the (at most ``window``) largest runs
+    lasting at least ``floor`` seconds; NaN with fewer than two such runs."""
+    work, seconds = np.asarray(work, dtype=float), np.asarray(seconds, dtype=float)
+    kept = np.flatnonzero(seconds >= floor)[-window:]
+    if kept.size < 2:
+        return math.nan
+    return float(np.polyfit(np.log(work[kept]), np.log(seconds[kept]), 1)[0])
+
+
+COST_TEXTS = {
+    "spd": "stack operations of the SPD's hull pass",
+    "godunov": "cell updates (cells x steps) of the Godunov scheme",
+    "tspd": "rank entries and hull operations of the iterated TSPD (L = n steps of t/n)",
+    "exact": "events and velocity updates of the exact MSPD",
+    "upwind": "cell updates (d cells x steps) of the upwind scheme for (1.7)",
+}
+COST_SOURCES = {
+    "spd": "sections 5.1.1 (O(n) hull) and 3 (O(1/n) error; log n/n for the Laplace data)",
+    "godunov": "section 5.2 (O(eps^-2) for first-order schemes under CFL)",
+}
+
+
+def beyond_exponent_claim(rates: Recorder, p, method: str, case: str, label: str, runs, sizes, reference_error: float,
+                          reference: str):
+    """The cost exponent of ``method`` on ``case`` against its predicted range (config ``predictions``),
+    fitted on the ``window`` most accurate runs the reference resolves."""
+    window = p["window"]
+    kept = resolvable(runs[0], reference_error, p["reference_share"]) if reference_error > 0 else np.arange(
+        len(runs[0]))
+    k, log_scale = (p["predictions"][f"{method}_{case}"][key] for key in ("k", "log_scale"))
+    best = kept[np.argsort(runs[0][kept])][:window]
+    smallest = float(np.min(np.asarray(sizes, dtype=float)[best])) if best.size else math.nan
+    band = predicted_exponents(k, log_scale, smallest, p["exponent_tolerance"]) if best.size else (k, k)
+    exponent = cost_exponent(rates, f"{method}_{case}", runs[0][best], runs[1][best], best.size, label) \
+        if best.size >= 2 else math.nan
+    log_text = f"with a log factor, N >= {smallest:g}" if log_scale else "no log factor"
+    resolved = "" if reference_error == 0 else (f"; {best.size} of the runs the reference ({reference}, own error "
+                                                f"{reference_error:.2g}) resolves")
+    return claim(c.between, f"beyond.exponent.{method}_{case}", "derived",
+                 COST_SOURCES.get(method, "section 5.2 (O(t^2/eps^2))"), label,
+                 f"{label}: {COST_TEXTS[method]} against 1/error, exponent on the {window} most accurate runs"
+                 f"{resolved}; predicted {k:g} ({log_text})", *band, exponent,
+                 published=f"{k:g} (O(eps^-{k:g}))")
+
+
+def plus_medians(d, name: str, domain) -> dict[str, float]:
+    """Median (w+ = 1/2, the generalised inverse) of the + wave at the study's time: of the exact MSPD
+    with the largest n, of HLL and of the upwind scheme on their reference grids."""
+    plus = np.sort(d[f"{name}_mspd"][PLUS])
+    medians = {"mspd": float(plus[math.ceil(0.5 * plus.size) - 1])}
+    for scheme, cells in (("hll", "reference_cells"), ("upwind", "upwind_reference_cells")):
+        edges = np.linspace(*domain, int(d[cells]) + 1)
+        medians[scheme] = cells_quantile(d[f"{name}_{scheme}_w"][PLUS], edges, 0.5)
+    return medians
 
 
 def beyond_claims(d, rates: Recorder, p):
     """Beyond the paper: the MSPD's limit against a conservative scheme, event counts and the cost
     argument of section 5.2 (kind ``derived``: consequences of the paper's estimates that it does
-    not measure; ``check`` for our references and the shock-case question)."""
+    not measure; ``check`` for our references, our timings and the shock-case question)."""
     window = p["window"]
     limit_n = d["limit_n"].astype(float)
-    out = []
+    out, slopes = [], {}
     for name, label in SCALAR_NAMES.items():
         spd, fv = d[f"{name}_spd"], d[f"{name}_godunov"]
-        spd_exponent = cost_exponent(rates, f"spd_{name}", spd[0], spd[1], window, "SPD")
-        fv_exponent = cost_exponent(rates, f"godunov_{name}", fv[0], fv[1], window, "Godunov")
+        for method, runs, sizes in (("spd", spd, d[f"{name}_spd_n"]), ("godunov", fv, d[f"{name}_cells"])):
+            out.append(beyond_exponent_claim(rates, p, method, name, label, runs, sizes, 0.0, "exact"))
+            slopes[f"{method}_{name}"] = time_exponent(runs[1], runs[2], p["time_floor"], window)
         eps = common_error(spd[0], fv[0])
         ratio = value_at_error(fv[0], fv[2], eps) / value_at_error(spd[0], spd[2], eps)
-        out += [
-            claim(c.between, f"beyond.exponent.spd_{name}", "derived", "sections 5.1.1 (O(n) hull) and 3 (O(1/n) "
-                  "error, log n/n for Figure 3)", label, f"{label}: operations (particles of one hull pass) of the SPD "
-                  f"against 1/W1, exponent on the {window} most accurate runs", *p["spd_band"], spd_exponent,
-                  published="1 (O(n) work, O(1/n) error)"),
-            claim(c.between, f"beyond.exponent.godunov_{name}", "derived", "section 5.2 (argument for first-order "
-                  "schemes under CFL)", label, f"{label}: cell updates of the Godunov scheme against 1/W1, exponent "
-                  f"on the {window} finest grids", *p["eps2_band"], fv_exponent, published="2 (O(eps^-2))"),
-            claim(c.at_least, f"beyond.ratio.scalar_{name}", "derived", "sections 5.1.1 and 5.2", label,
-                  f"{label}: wall time of the Godunov scheme over that of the SPD at the common error "
-                  f"eps* = {eps:.3g} (interpolated, never extrapolated)", p["scalar_ratio_min"], ratio,
-                  published="SPD cheaper (exponent 1 against 2)"),
-        ]
-    reference_share = 0.0
+        out.append(claim(c.at_least, f"beyond.ratio.scalar_{name}", "derived", "sections 5.1.1 and 5.2", label,
+                         f"{label}: wall time of the Godunov scheme over that of the SPD at the common error "
+                         f"eps* = {eps:.3g} (interpolated, never extrapolated)", p["scalar_ratio_min"], ratio,
+                         published="SPD cheaper (exponent 1 against 2)"))
+    sizes = {"tspd": d["tspd_n"], "exact": d["exact_n"], "upwind": d["upwind_cells"]}
     for name in d["cases"]:
         to_hll, gap_mspd, gap_hll = d[f"{name}_limit_to_hll"], float(d[f"{name}_mspd_gap"]), float(d[f"{name}_hll_gap"])
-        tspd, exact, upwind = d[f"{name}_tspd"], d[f"{name}_exact"], d[f"{name}_upwind"]
-        exponents = {method: cost_exponent(rates, f"{method}_{name}", runs[0], runs[1], window, name)
-                     for method, runs in (("tspd", tspd), ("exact", exact), ("upwind", upwind))}
+        runs = {method: d[f"{name}_{method}"] for method in sizes}
+        reference, reference_error = str(d[f"{name}_reference"]), float(d[f"{name}_reference_error"])
+        for method in sizes:
+            out.append(beyond_exponent_claim(rates, p, method, name, f"p-system, {name}", runs[method], sizes[method],
+                                             reference_error, reference))
+            slopes[f"{method}_{name}"] = time_exponent(runs[method][1], runs[method][2], p["time_floor"], window)
         events = -rates.add(order(f"{PAPER}.beyond.exact.events_{name}", "n", d["exact_n"].astype(float),
-                                  1.0 / exact[3], window, name))
+                                  1.0 / runs["exact"][3], window, name))
+        tspd, exact = runs["tspd"], runs["exact"]
         eps = common_error(tspd[0], exact[0])
         same_cost = value_at_error(exact[0], exact[2], eps) / value_at_error(tspd[0], tspd[2], eps)
-        reference_share = max(reference_share, gap_mspd / min(tspd[0].min(), exact[0].min(), upwind[0].min()))
-        texts = {"tspd": "particle moves d n L of the iterated TSPD (L = n steps of t/n)",
-                 "exact": "events and velocity updates of the exact MSPD",
-                 "upwind": "cell updates d cells steps of the upwind scheme for (1.7)"}
-        out += [claim(c.between, f"beyond.exponent.{method}_{name}", "derived", "section 5.2 (O(t^2/eps^2))",
-                      f"p-system, {name}", f"{name} case, t = {float(d['t']):g}: {texts[method]} against 1/W1^(d) "
-                      f"(reference: exact MSPD, n = {int(limit_n[-1])}), exponent on the {window} most accurate runs",
-                      *p["eps2_band"], exponents[method], published="2 (O(eps^-2))") for method in texts]
         out += [
             claim(c.between, f"beyond.exact.events_{name}", "derived", "section 5.2 (at most d(d-1)n^2/2 crossings)",
                   f"p-system, {name}", f"{name} case: crossings of the exact MSPD up to t = {float(d['t']):g} against "
@@ -515,6 +587,11 @@ def beyond_claims(d, rates: Recorder, p):
                   "simulation)", f"p-system, {name}", f"{name} case: wall time of the exact MSPD over that of the "
                   f"iterated TSPD at the common error eps* = {eps:.3g}", *p["same_cost_band"], same_cost,
                   published="same cost, O(n^2)"),
+            claim(c.at_least, f"beyond.cost.resolved_{name}", "check", "our reference", f"p-system, {name}",
+                  f"{name} case: the reference ({reference}, own error {reference_error:.2g}) resolves at least "
+                  f"{window} runs of each method (errors at least 1/{p['reference_share']:g} of its own); fewest",
+                  window, float(min(resolvable(r[0], reference_error, p["reference_share"]).size
+                                    for r in runs.values()))),
         ]
         if name == "rarefaction":
             limit_order = rates.add(order(f"{PAPER}.beyond.limit.{name}", "n", 1.0 / limit_n, to_hll, window, name))
@@ -531,16 +608,26 @@ def beyond_claims(d, rates: Recorder, p):
             ]
         else:
             noise = gap_mspd + gap_hll
-            out.append(claim(c.at_least, f"beyond.limit.{name}", "check", "section 1.2.3 (nonconservative system); "
-                             "our question", "p-system, shocks",
-                             f"shock case: the MSPD's limit differs from the conservative entropy solution: W1^(d) "
-                             f"between the exact MSPD (n = {int(limit_n[-1])}) and HLL ({int(d['reference_cells'])} "
-                             f"cells), {to_hll[-1]:.3g}, over the sum of their self-distances at half resolution "
-                             f"({gap_mspd:.2g} + {gap_hll:.2g})", p["separation"], float(to_hll[-1] / noise),
-                             published="differ"))
-    out.append(claim(c.at_most, "beyond.cost.reference", "check", "our reference", "p-system",
-                     "the cost study's reference (exact MSPD) is accurate: its distance to n/2 over the smallest error "
-                     "it measures, largest over the two cases", p["reference_share"], reference_share))
+            medians = plus_medians(d, name, p["domain"])
+            out += [
+                claim(c.at_least, f"beyond.limit.{name}", "check", "section 1.2.3 (nonconservative system); our "
+                      "question", "p-system, shocks",
+                      f"shock case: the MSPD's limit differs from the conservative entropy solution: W1^(d) between "
+                      f"the exact MSPD (n = {int(limit_n[-1])}) and HLL ({int(d['reference_cells'])} cells), "
+                      f"{to_hll[-1]:.3g}, over the sum of their self-distances at half resolution ({gap_mspd:.2g} + "
+                      f"{gap_hll:.2g})", p["separation"], float(to_hll[-1] / noise), published="differ"),
+                claim(c.at_least, f"beyond.limit.plus_wave_{name}", "check", "our question", "p-system, shocks",
+                      f"shock case: the conservative + wave lies to the right of the MSPD's: the median of w+ is at "
+                      f"x = {medians['mspd']:.4f} (exact MSPD), {medians['hll']:.4f} (HLL) and {medians['upwind']:.4f} "
+                      f"(upwind for (1.7)); the HLL - MSPD shift over the sum of the self-distances",
+                      p["separation"], (medians["hll"] - medians["mspd"]) / noise, published="shifted"),
+            ]
+    band = p["time_band"]
+    listed = ", ".join(f"{key} {value:.2f}" for key, value in slopes.items())
+    out.append(claim(c.between, "beyond.cost.wall_time", "check", "our timing", "all cost fits",
+                     f"the counted operations are the cost: exponent of the best wall time against them over the (at "
+                     f"most {window}) largest runs lasting at least {p['time_floor']:g} s, farthest from 1 of: "
+                     f"{listed}", *band, c.farthest_from_centre(list(slopes.values()), band)))
     return out
 
 
@@ -551,6 +638,7 @@ def claims(results, cfg, recorder: Recorder) -> list:
     burgers, concave = results["fig2"], results["fig3"]
     r33, l21, tspd, cost = cfg["remark33"], cfg["lemma21"], cfg["tspd_convergence"], cfg["cost"]
     rules = cfg["claims"]  # the tolerances no figure's section holds
+    from . import sticky_theory  # sections 3 and 4 beyond the figures; it imports this module
     return [
         *burgers_claims(burgers, recorder, cfg["fig2"]["order_window"], rules["order_tolerance"]),
         *concave_claims(concave, recorder, cfg["fig3"]["decay_window"], cfg["fig3"]["decay_band"]),
@@ -564,6 +652,9 @@ def claims(results, cfg, recorder: Recorder) -> list:
         *psystem_claims(results["psystem_rarefaction"], results["psystem_shocks"],
                         cfg["psystem"]["shocks"]["shock_fraction"],
                         PSystem(nu=cfg["psystem"]["nu"], kappa=cfg["psystem"]["kappa"])),
+        *figure_claims(results["psystem_rarefaction"], results["psystem_shocks"], PSystem(nu=cfg["psystem"]["nu"],
+                       kappa=cfg["psystem"]["kappa"]), rules["conservation_tolerance"]),
         *cost_claims(results["cost"], recorder, cost["window"], cost["band"]),
         *beyond_claims(results["beyond"], recorder, cfg["beyond"]),
+        *sticky_theory.claims(results, cfg["theory"], recorder),
     ]
