@@ -9,7 +9,8 @@ D_i - rho splits into
 and the density error is about -rho(T) int_0^T (Q_i + R_i) dt. The integral over alpha is a
 trapezoid rule on a grid ``fine_factor`` times finer than the particles' (its own aliasing error
 is negligible), the time integral a Gauss-Legendre rule. The same runs are extended to finer h
-(blob method, m = 4 and 6) to test where the model says the m q rate returns."""
+(blob method, m = 4 and 6), beyond the paper's range; the claims compare the quadrature part with its
+prediction (particle_methods.blob.aliasing)."""
 
 import numpy as np
 
@@ -74,7 +75,6 @@ def run(p, fig4_path, output):
         results[f"m{order}_combined"] = np.array(decomposition)[:, 2]
         progress(f"m = {order}: total {np.array(totals)}, quadrature {results[f'm{order}_quadrature']}, "
                  f"regularisation {results[f'm{order}_regularisation']}")
-    results["jacobian"] = 1.0 + p["t"] * data.maximum  # largest spreading of the particles, J = 1 + t rho0
     save_results(output, **results)
 
 

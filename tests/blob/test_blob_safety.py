@@ -41,6 +41,7 @@ from particle_methods.blob import (
     solver,
     uniform_ring_radius,
 )
+from particle_methods.blob.aliasing import quadrature_prediction, saddle_ratio
 from particle_methods.blob.kernels import POWER
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
@@ -75,6 +76,8 @@ CALLS = {
                {"name": "test", "dimension": 1, "kinds": (POWER,), "coefficients": (1.0,), "parameters": (3.0,)}),
     "Kernel.profile": (CUBIC.profile, {"r": np.array([0.0, 0.1, 2.0])}),
     "uniform_ring_radius": (uniform_ring_radius, {"a": 4.0, "b": 1.5}),
+    "quadrature_prediction": (quadrature_prediction, {"data": "smooth10", "h": 0.25, "q": 0.9, "t": 0.5, "order": 4}),
+    "saddle_ratio": (saddle_ratio, {"data": "smooth10", "h": 0.25, "q": 0.9, "order": 4}),
     "blowup_time": (blowup_time, {"data": "smooth20", "kernel": "newtonian_attractive"}),
     "newtonian_exact": (newtonian_exact, {"data": "smooth20", "kernel": "newtonian_attractive",
                                           "alpha": np.array([0.1, 0.5]), "t": 0.5}),

@@ -136,7 +136,6 @@ RESULTS = (
             "m*_quadrature",
             "m*_regularisation",
             "m*_combined",
-            "jacobian",
         ),
         Job(
             "Figure 4, K = -|x|/2: the density error split into quadrature and regularisation parts, the runs "

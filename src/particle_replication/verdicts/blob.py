@@ -95,8 +95,8 @@ KINDS = {
     "fig4.repulsive_regularisation_m4": ("derived", "Corollary 3.10 for the regularisation part alone"),
     "fig4.repulsive_regularisation_m6": ("derived", "Corollary 3.10 for the regularisation part alone"),
     "fig4.repulsive_same_quadrature": ("derived", "(4.1): m = 4 and m = 6 share the narrowest Gaussian"),
-    "fig4.repulsive_model": ("derived", "aliasing of the narrowest Gaussian (Poisson summation), J = 1 + t rho0"),
-    "fig4.repulsive_model_quadrature": ("derived", "aliasing of the narrowest Gaussian (Poisson summation)"),
+    "fig4.repulsive_quadrature_prediction": ("derived", "(4.1), (4.5), section 4.1: Poisson summation of the narrowest "
+                                             "Gaussian along the exact flow, no fitted parameter"),
     "fig4.repulsive_extended_order": ("check", "Figure 4, K = -|x|/2, runs extended to finer h (not in the paper)"),
     "fig4.repulsive_coarse_window": ("check", "Figure 4: dependence on the unstated h range"),
 }
@@ -278,20 +278,11 @@ def fig4log_claims(d_log, d, rules, recorder: Recorder):
     return out
 
 
-def quadrature_model(h, quadrature, q, jacobian):
-    """Fit log Q = log A + p log h - pi^2 (delta / (h J))^2 (delta = h^q); return (A, p)."""
-    aliasing = np.pi**2 * h ** (2 * (q - 1)) / jacobian**2
-    (log_a, power), *_ = np.linalg.lstsq(np.column_stack([np.ones(h.size), np.log(h)]), np.log(quadrature) + aliasing,
-                                         rcond=None)
-    return float(np.exp(log_a)), float(power)
-
-
 def repulsive_claims(d, p, rules, recorder: Recorder):
-    """Figure 4, K = -|x|/2: where the slow density rate comes from, and whether the model predicts
-    the finer runs."""
+    """Figure 4, K = -|x|/2: where the slow density rate comes from, and whether the quadrature part is the
+    aliasing predicted without fitted parameters (particle_methods.blob.aliasing)."""
     n, base = d["inverse_h"], int(d["base_count"])
     h, q, k = 1.0 / n, float(d["q"]), int(p["fit_points"])
-    jacobian = float(d["jacobian"])
     band = float(rules["rate_tolerance"])
     out = []
     mismatch = max(float(np.abs(d[f"m{m}_combined"] / d[f"m{m}_total"] - 1).max()) for m in (4, 6))
@@ -316,33 +307,7 @@ def repulsive_claims(d, p, rules, recorder: Recorder):
                      "of (4.1), which sets the quadrature error, so their density errors coincide: m = 6 over m = 4 "
                      f"quadrature part at h = 1/{n[base - 1]}", *map(float, rules["same_quadrature_band"]), ratio,
                      published="(our derivation)"))
-    a, power = quadrature_model(h[:base], d["m4_quadrature"][:base], q, jacobian)
-    regularisation = np.polyfit(np.log(h[base - k:base]), np.log(d["m4_regularisation"][base - k:base]), 1)
-    fine = 1.0 / np.geomspace(n[base - 1], 64 * n[base - 1], 400)
-    model_q = a * fine**power * np.exp(-np.pi**2 * fine ** (2 * (q - 1)) / jacobian**2)
-    below = model_q < np.exp(np.polyval(regularisation, np.log(fine)))
-    crossing = fine[np.argmax(below)] if below.any() else fine[-1]
-    predicted_q = a * h[base:] ** power * np.exp(-np.pi**2 * h[base:] ** (2 * (q - 1)) / jacobian**2)
-    quadrature_gap = float(np.max(np.maximum(predicted_q / d["m4_quadrature"][base:],
-                                             d["m4_quadrature"][base:] / predicted_q)))
-    errors = []
-    for m in (4, 6):
-        reg = np.polyfit(np.log(h[base - k:base]), np.log(d[f"m{m}_regularisation"][base - k:base]), 1)
-        predicted = (a * h[base:] ** power * np.exp(-np.pi**2 * h[base:] ** (2 * (q - 1)) / jacobian**2)
-                     + np.exp(np.polyval(reg, np.log(h[base:]))))
-        measured = d[f"m{m}_total"][base:]
-        errors.append(float(np.max(np.maximum(predicted / measured, measured / predicted))))
-    out.append(claim(c.at_most, "fig4.repulsive_model", "4", f"model of the quadrature part A h^p exp(-pi^2 (delta/(h "
-                     f"J))^2), J = {jacobian:g}, fitted on the paper's h (p = {power:.2f}), plus the regularisation "
-                     f"part's power law: it puts the return of the m q rate (quadrature below regularisation, m = 4) "
-                     f"at h = 1/{1 / crossing:.0f}, and predicts the runs at h = "
-                     f"{', '.join(f'1/{v}' for v in n[base:])}: largest factor between prediction and measurement",
-                     float(p["repulsive"]["model_factor"]), max(errors), published="(our model)"))
-    out.append(claim(c.at_most, "fig4.repulsive_model_quadrature", "4", "the same model predicts the quadrature part "
-                     f"itself at h = {', '.join(f'1/{v}' for v in n[base:])}, measured along the exact trajectories "
-                     "(a faster, immediate return of m q would leave it far below the model): largest factor between "
-                     "prediction and measurement, m = 4", float(p["repulsive"]["model_factor"]), quadrature_gap,
-                     published="(our model)"))
+    out.append(quadrature_prediction_claim(d, p, rules))
     extended = recorder.add(rates.order(f"{PAPER}.fig4.repulsive_extended_order", "h", h, d["m4_total"], k,
                                      "m = 4 density, extended"))
     out.append(claim(c.close_to, "fig4.repulsive_extended_order", "4", f"K = -|x|/2, m = 4: density order on the {k} "
@@ -352,6 +317,31 @@ def repulsive_claims(d, p, rules, recorder: Recorder):
                      f"coarsest h of the paper's range (h = 1/{n[0]} to 1/{n[k - 1]}): the verdict depends on the "
                      "unstated h range", 4 * q, coarse, band))
     return out
+
+
+def quadrature_prediction_claim(d, p, rules):
+    """The m = 4 quadrature part against its prediction without fitted parameters, at every h of the study where
+    the prediction's expansion parameter (:func:`~particle_methods.blob.aliasing.saddle_ratio`) is below 1."""
+    from particle_methods.blob.aliasing import quadrature_prediction, saddle_ratio
+    from particle_methods.blob.initial import data_1d
+
+    n, q, t, data = d["inverse_h"], float(d["q"]), float(d["t"]), data_1d(p["data"])
+    predicted = np.array([quadrature_prediction(data, 1.0 / v, q, t) for v in n])
+    expansion = np.array([saddle_ratio(data, 1.0 / v, q) for v in n])
+    measured = d["m4_quadrature"]
+    gaps = np.maximum(predicted / measured, measured / predicted) - 1.0
+    held = expansion < 1.0
+    progress(f"{PAPER}.fig4.repulsive_quadrature_prediction: h = 1/({', '.join(str(v) for v in n)}), predicted "
+             f"{', '.join(f'{v:.4e}' for v in predicted)}, measured {', '.join(f'{v:.4e}' for v in measured)}, "
+             f"saddle ratio {', '.join(f'{v:.3f}' for v in expansion)}")
+    return claim(c.at_most, "fig4.repulsive_quadrature_prediction", "4", "K = -|x|/2, m = 4: the quadrature part "
+                 "predicted with no fitted parameter, the first alias of the narrowest Gaussian of (4.1) by Poisson "
+                 "summation along the exact flow, h sum_i rho(X_i, t) (4/3) [E1(c/J_i^2) - E1(c)], c = (pi delta/h)^2, "
+                 "J_i = 1 + t rho0(ih), against the measured one: factor - 1 at every h, "
+                 f"{', '.join(f'{g:.3g} (1/{v})' for g, v in zip(gaps, n))}; largest where the saddle displacement "
+                 f"pi delta^2/h is below the width 1/sqrt(2p) of the data, p = {data.power} (h = "
+                 f"{', '.join(f'1/{v}' for v in n[held])})", float(rules["quadrature_prediction_gap"]),
+                 float(gaps[held].max()) if held.any() else np.nan, published="(our derivation)")
 
 
 def ring_radii(points, centre: float):
