@@ -26,7 +26,10 @@ RESOLUTION_TIME = 0.8  # Figures 1B and 3B: the densities are compared with the 
 # Kind and source of every claim (see particle_replication.claims): "paper" for what the paper
 # states (where), "derived" for what we derive from its theory, "check" for our own checks.
 FIG4_RATE = ("paper", "Figure 4, section 4.3")
-FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates better than m = 4, not as good as m q")
+FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates not as good as m q")
+#: Our readings of section 4.3's "the m = 6 blob method shows even greater improvement" (K = (-Delta)^-1):
+#: applied to each of the trajectory and density errors, and to their rates.
+FIG4_M6_READING = ("derived", "our reading of section 4.3 ('even greater improvement' with m = 6)")
 KINDS = {
     "fig1d.order_trajectory": ("paper", "Figure 1D, section 4.2"),
     "fig1d.order_density": ("paper", "Figure 1D, section 4.2"),
@@ -51,8 +54,14 @@ KINDS = {
     "fig4.m6_newtonian_repulsive_density": FIG4_M6_RATE,
     "fig4.m6_cubic_trajectory": FIG4_M6_RATE,
     "fig4.m6_cubic_density": FIG4_M6_RATE,
-    "fig4.m6_better_newtonian_repulsive_trajectory": FIG4_RATE,
-    "fig4.m6_better_newtonian_repulsive_density": FIG4_RATE,
+    "fig4.m6_better_newtonian_repulsive_trajectory": FIG4_M6_READING,
+    "fig4.m6_better_newtonian_repulsive_density": FIG4_M6_READING,
+    "fig4.m6_rate_above_m4_newtonian_repulsive_trajectory": FIG4_M6_READING,
+    "fig4.m6_rate_above_m4_newtonian_repulsive_density": FIG4_M6_READING,
+    "fig4.m6_rate_above_m4_cubic_trajectory": ("derived", "our reading of section 4.3 ('the m = 6 blob method is "
+                                                          "best' for K = |x|^3/3)"),
+    "fig4.m6_rate_above_m4_cubic_density": ("derived", "our reading of section 4.3 ('the m = 6 blob method is "
+                                                       "best' for K = |x|^3/3)"),
     "fig4.m6_better_cubic_trajectory": FIG4_RATE,
     "fig4.m6_better_cubic_density": FIG4_RATE,
     "fig4.cubic_particle_beats_m4_trajectory": FIG4_RATE,
@@ -206,10 +215,11 @@ def fig4_claims(d, rules, recorder: Recorder):
             m6 = order(recorder, d, f"{kernel}_blob6_{part}", f"fig4.m6_{kernel}_{part}")
             out.append(claim(c.close_to, f"fig4.m4_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 4: {part} "
                              f"rate close to m q = {rate4:g}", rate4, m4, band))
-            out.append(claim(c.between, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate "
-                             f"better than m = 4's ({m4:.3g}) and not as good as m q = {rate6:g} (the paper blames "
-                             "other error sources; our kernels are exact)", min(m4, rate6), rate6, m6,
-                             published=f"< {rate6:g}"))
+            out.append(claim(c.at_most, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate "
+                             f"not as good as m q = {rate6:g} (the paper blames other error sources; our kernels are "
+                             "exact)", rate6, m6, published=f"< {rate6:g}"))
+            out.append(claim(c.at_least, f"fig4.m6_rate_above_m4_{kernel}_{part}", "4", f"K = {names[kernel]}: the "
+                             f"m = 6 {part} rate at least m = 4's ({m4:.3g})", m4, m6, published="better"))
             ratio = d[f"{kernel}_blob6_{part}"][-1] / d[f"{kernel}_blob4_{part}"][-1]
             out.append(claim(c.at_most, f"fig4.m6_better_{kernel}_{part}", "4", f"K = {names[kernel]}: m = 6 "
                              f"beats m = 4 ({part}): ratio of the finest errors", 1.0, float(ratio),
