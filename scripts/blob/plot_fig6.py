@@ -4,6 +4,7 @@ and from above at t = 0.8 (bottom), for K = log|x|/(2 pi), |x|^2/2, |x|^3/3.
 The star patch is drawn on the particles' Lagrangian mesh: the squares of the initial grid hZ^2 whose
 corners are particles (split in two triangles, or one triangle when a corner is missing), carried by the
 flow. A triangulation of the convex hull of the particles would fill the gaps between the star's arms.
+Particles of no square (the thin fifth arm's tip at this h) are drawn as points coloured by density.
 """
 
 from fractions import Fraction
@@ -120,8 +121,13 @@ def run(d, shown, cfg, output):
         if mesh is None:
             mesh = support_triangulation(star)
         norm = colour_norm(density)
+        # Particles in no triangle (the tip of the thin arm along -x, one grid point wide at this h) are
+        # drawn as points coloured by their density, in both views.
+        lone = np.setdiff1d(np.arange(len(star)), mesh.triangles.ravel())
         ax = fig.add_subplot(grid[2, column], projection="3d")
         ax.plot_trisurf(mesh, density, cmap="viridis", norm=norm, linewidth=0.1, edgecolor="0.3")
+        ax.scatter(star[lone, 0], star[lone, 1], density[lone], c=density[lone], norm=norm, s=10,
+                   edgecolors="0.2", linewidths=0.3, depthshade=False)
         ax.view_init(elev=8, azim=-60)
         tidy_3d(ax, "", y_ticks=False, aspect=(1, 1, 0.7), zoom=1.35)
         ax.set_title(f"star patch, $t = {float(d['star_t']):g}$, side", fontsize="medium")
@@ -129,6 +135,8 @@ def run(d, shown, cfg, output):
         ax = fig.add_subplot(grid[3, column])
         image = ax.tripcolor(mesh, density, shading="gouraud", norm=norm)
         ax.plot(star[:, 0], star[:, 1], ".", ms=1.5, color="0.2")
+        ax.scatter(star[lone, 0], star[lone, 1], c=density[lone], norm=norm, s=14, edgecolors="0.2",
+                   linewidths=0.3, zorder=3)
         colour_bar(fig, image, ax)
         ax.set(xlabel="$x$", ylabel="$y$", aspect="equal")
         ax.set_title("star patch, from above", fontsize="medium")

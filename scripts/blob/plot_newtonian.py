@@ -39,7 +39,9 @@ def run(d, title, error_t, output):
     trajectories(ax_a, d, every, 0.7)
     ax_a.plot([], [], "k-", label="exact")
     ax_a.plot([], [], "--", color="C3", label=f"{method} method")
-    ax_a.legend(loc="upper right", framealpha=0.9)
+    start, end = float(d["times"].min()), float(d["times"].max())
+    ax_a.set_ylim(start, end + 0.18 * (end - start))  # a band above the last time for the legend
+    ax_a.legend(loc="upper center", ncol=2, framealpha=0.9)
     label_panel(ax_a, f"{next(letters)}. trajectories, $h = {float(d['h']):g}$")
 
     if has_density:

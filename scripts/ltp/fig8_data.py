@@ -4,7 +4,11 @@ Both runs continue past the figure's time ``t`` to ``t_long``; every ``record_ev
 keep the centres, the widths and the number of peaks of the density (sampled on a fine grid and
 at every particle centre, so that particles narrower than the grid are seen). The steadiness
 criterion of the config (relative change of the centres over a window) gives each method's
-steady time; the figure shows both methods at the paper's time and at the SP steady time."""
+steady time; the figure shows both methods at the paper's time and at the SP steady time.
+
+A third run, ``shifted_ltp``, is LTP on the grid offset by ``shifted_offset`` h (centres (k + 1/2) h,
+weights (2.14) over the shifted cells): with no particle at x = 0 it tests whether the particle there
+is what keeps the regular-grid LTP run from settling."""
 
 import math
 
@@ -28,12 +32,13 @@ def run(p, output):
     steps = int(round(max(p["t"], p["t_long"]) / dt))
     grid = np.linspace(-1.1, 1.1, 8801)
     results = {"grid": grid, "label": np.array(w.name), "h": p["h"], "dt": dt, "steps": p["steps"], "t": p["t"],
-               "sp_eps": p["sp_eps"]}
+               "sp_eps": p["sp_eps"], "shifted_offset": p["shifted_offset"]}
     runs = {}
-    for method, eps in (("ltp", None), ("sp", p["sp_eps"])):
-        progress(f"{method}: {steps} steps up to t = {steps * dt:g}")
-        runs[method] = simulate(initial, w, p["h"], dt, steps * dt, method=method, eps=eps,
-                                record_every=p["record_every"])
+    for name, method, eps, offset in (("ltp", "ltp", None, 0.0), ("sp", "sp", p["sp_eps"], 0.0),
+                                      ("shifted_ltp", "ltp", None, p["shifted_offset"])):
+        progress(f"{name}: {steps} steps up to t = {steps * dt:g}, grid (k + {offset:g}) h")
+        runs[name] = simulate(initial, w, p["h"], dt, steps * dt, method=method, eps=eps, offset=offset,
+                              record_every=p["record_every"])
     times = runs["sp"].times
     for method, sim in runs.items():
         samples = [sampled(sim.at(i), grid) for i in range(times.size)]

@@ -122,8 +122,12 @@ def density_named(name: str) -> InitialDensity:
     return one_of("initial density", name, DENSITIES)
 
 
-def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str = "cell"):
-    """Centres x_k = k h and weights of the particles that carry mass.
+def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str = "cell", offset: float = 0.0):
+    """Centres x_k = (k + offset) h and weights of the particles that carry mass.
+
+    ``offset`` in [0, 1) shifts the grid by that fraction of h (0: the grid of (2.14) with a particle
+    at x = 0; 0.5: the cell edges of that grid, no particle at 0); the weights are the same
+    integrals of rho^0 over the shifted cells.
 
     ``weights='cell'``: omega_k = int over [x_k - h/2, x_k + h/2] of rho^0 (2.14).
     ``weights='biorthogonal'``: omega_k = int phi~((x - x_k)/h) rho^0(x) dx (2.16) with
@@ -134,8 +138,12 @@ def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str
     h = positive("h", h)
     instance("shape", shape, Shape)
     rule = one_of("weights", weights, WEIGHTS)
+    offset = finite_number("offset", offset)
+    if not 0.0 <= offset < 1.0:
+        raise ValueError(f"offset must lie in [0, 1) (a fraction of h), got {offset}")
     with np.errstate(over="ignore", invalid="ignore"):  # tiny h: infinite indices, refused just below
-        low, high = np.floor(density.lower / h) - 1, np.ceil(density.upper / h) + 1  # first and last k
+        low = np.floor(density.lower / h - offset) - 1  # first and last k
+        high = np.ceil(density.upper / h - offset) + 1
         if not high - low + 1 <= MAX_PARTICLES:
             raise ValueError(f"h = {h:g} gives about {(density.upper - density.lower) / h:.3g} particles on "
                              f"[{density.lower:g}, {density.upper:g}], beyond the limit MAX_PARTICLES = "
@@ -144,7 +152,7 @@ def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str
         raise ValueError(f"h = {h:g} puts [{density.lower:g}, {density.upper:g}] at grid indices beyond 2^53")
     if not math.isfinite(h * (float(max(abs(low), abs(high))) + 1.0)):  # Python floats: inf, no warning
         raise ValueError(f"h = {h:g} is too large: the cells around [{density.lower:g}, {density.upper:g}] overflow")
-    centres = h * np.arange(int(low), int(high) + 1)
+    centres = h * (np.arange(int(low), int(high) + 1) + offset)
     values = real_array("the weights", rule(density.cdf, centres, h, shape))
     if values.shape != centres.shape:
         raise ValueError(f"the CDF of {density.name} must return one value per point, got shape {values.shape}")

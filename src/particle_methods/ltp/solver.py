@@ -212,8 +212,8 @@ def _check_stability(n: int, dt: float, second: np.ndarray):
 
 
 def simulate(initial, potential: Potential, h: float, dt: float, t_final: float, *, shape: str = "b3",
-             weights: str = "cell", method: str = "ltp", eps: float | None = None, record_every: int | None = None,
-             log=None) -> Simulation:
+             weights: str = "cell", offset: float = 0.0, method: str = "ltp", eps: float | None = None,
+             record_every: int | None = None, log=None) -> Simulation:
     """Run the LTP (default) or SP method from ``initial`` up to ``t_final``.
 
     Parameters
@@ -222,6 +222,7 @@ def simulate(initial, potential: Potential, h: float, dt: float, t_final: float,
     potential : a :class:`Potential` (see :func:`particle_methods.ltp.potential`).
     h, dt : grid step and time step, both positive; ``t_final`` must be a multiple of dt.
     shape : 'b3' (2.13) or 'hat' (2.12).  weights : 'cell' (2.14) or 'biorthogonal' (2.16, hat only).
+    offset : the initial centres are (k + offset) h, offset in [0, 1) (see :func:`grid_particles`).
     method : 'ltp' or 'sp'; the SP method needs the fixed particle width ``eps``.
     record_every : keep every this many steps (default: only the first and the last).
     log : optional callable receiving progress lines.
@@ -259,7 +260,7 @@ def simulate(initial, potential: Potential, h: float, dt: float, t_final: float,
     if log is not None and not callable(log):
         raise ParameterTypeError(f"log must be callable, got {log!r}")
 
-    x, omega = grid_particles(initial, h, reference, weights)
+    x, omega = grid_particles(initial, h, reference, weights, offset)
     _check_work(steps, x.size, potential, len(recorded))
     widths = np.full(x.size, h if method == "ltp" else eps)
     coefficients, exponents = potential.as_arrays()

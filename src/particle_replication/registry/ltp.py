@@ -142,6 +142,7 @@ RESULTS = (
             "steps",
             "t",
             "sp_eps",
+            "shifted_offset",
             "paper_time",
             "steady_time",
             "widest_centre",
@@ -150,7 +151,7 @@ RESULTS = (
             "widest_share",
             *(
                 f"{method}_{key}"
-                for method in ("ltp", "sp")
+                for method in ("ltp", "sp", "shifted_ltp")
                 for key in (
                     "times",
                     "peaks",
