@@ -206,9 +206,10 @@ def test_fuzz_initial_density(lower, upper, h):
 
 
 @FUZZ
-@given(st.sampled_from(["density", "h", "shape", "weights"]), any_value | short_arrays)
+@given(st.sampled_from(["density", "h", "shape", "weights", "offset"]), any_value | short_arrays)
 def test_fuzz_grid_particles_bad(name, value):
-    one_bad(grid_particles, {"density": RHO1, "h": 0.1, "shape": HAT, "weights": "biorthogonal"}, name, value)
+    one_bad(grid_particles, {"density": RHO1, "h": 0.1, "shape": HAT, "weights": "biorthogonal", "offset": 0.5}, name,
+            value)
 
 
 @FUZZ
@@ -286,7 +287,7 @@ def test_fuzz_simulation(field, value, index, x):
 
 @FUZZ
 @given(st.sampled_from(["initial", "potential", "h", "dt", "t_final", "shape", "weights", "method", "eps",
-                        "record_every", "log"]), any_value | short_arrays)
+                        "record_every", "log", "offset"]), any_value | short_arrays)
 def test_fuzz_simulate_bad(name, value):
     sim = one_bad(simulate, RUN, name, value)
     if sim is not None:

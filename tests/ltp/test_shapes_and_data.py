@@ -1,5 +1,7 @@
 """Shapes (2.12), (2.13), bi-orthogonal kernel, initial data (6.1)-(6.3) and weights (2.14), (2.16)."""
 
+import math
+
 import numpy as np
 import pytest
 from scipy import integrate
@@ -46,6 +48,26 @@ def test_weights_sum_to_the_mass(weights, shape):
     assert omega.sum() == pytest.approx(1.0, abs=1e-13)
     np.testing.assert_allclose(np.diff(centres), 0.05)
     np.testing.assert_allclose(centres / 0.05, np.round(centres / 0.05), atol=1e-9)
+
+
+@pytest.mark.parametrize("weights, shape", [("cell", B3), ("biorthogonal", HAT)])
+def test_shifted_grid_has_centres_k_plus_half_h_and_the_same_mass(weights, shape):
+    centres, omega = grid_particles(density_named("rho2"), 0.05, shape, weights, offset=0.5)
+    assert omega.sum() == pytest.approx(1.0, abs=1e-13)
+    np.testing.assert_allclose(centres / 0.05 - 0.5, np.round(centres / 0.05 - 0.5), atol=1e-9)
+    assert np.abs(centres).min() == pytest.approx(0.025)  # no particle at x = 0
+
+
+def test_shifted_cell_weights_are_the_integrals_over_the_shifted_cells():
+    density = density_named("rho2")
+    centres, omega = grid_particles(density, 0.05, B3, offset=0.5)
+    np.testing.assert_allclose(omega, density.cdf(centres + 0.025) - density.cdf(centres - 0.025), atol=1e-15)
+
+
+@pytest.mark.parametrize("offset", [-0.1, 1.0, math.nan, "half", True])
+def test_offset_outside_zero_one_is_refused(offset):
+    with pytest.raises((ValueError, TypeError)):
+        grid_particles(density_named("rho2"), 0.05, B3, offset=offset)
 
 
 def test_biorthogonal_weights_make_the_error_orthogonal_to_the_kernels():

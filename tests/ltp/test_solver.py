@@ -69,9 +69,12 @@ def test_sp_with_eps_h_is_ltp_up_to_the_common_width_for_x_squared():
     np.testing.assert_allclose(rescaled.density(GRID), ltp.at(-1).density(GRID), atol=1e-12)
 
 
-def test_symmetric_data_stay_symmetric():
-    sim = simulate("rho2", potential("attractive_repulsive", a=3, b=1.5), 0.05, 0.1, 2.0)
+@pytest.mark.parametrize("offset", [0.0, 0.5])
+def test_symmetric_data_stay_symmetric(offset):
+    """On the grid k h (a particle at 0) and on (k + 1/2) h (none at 0) alike."""
+    sim = simulate("rho2", potential("attractive_repulsive", a=3, b=1.5), 0.05, 0.1, 2.0, offset=offset)
     centres = sim.centres[-1]
+    assert (np.abs(sim.centres[0]).min() == 0.0) == (offset == 0.0)
     np.testing.assert_allclose(centres, -centres[::-1], atol=1e-12)
     np.testing.assert_allclose(sim.widths[-1], sim.widths[-1][::-1], rtol=1e-10)
 
