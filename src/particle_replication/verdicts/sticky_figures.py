@@ -24,6 +24,7 @@ import functools
 
 import numpy as np
 
+from particle_methods.sticky.spd import cluster_sizes
 from particle_methods.systems import MINUS, PLUS
 
 from .. import claims as c
@@ -33,10 +34,8 @@ claim = functools.partial(c.claim, "sticky")
 
 def clusters(positions) -> list[tuple[int, int]]:
     """Index ranges [start, stop) of the clusters of at least two particles of sorted ``positions``."""
-    positions = np.asarray(positions)
-    starts = np.flatnonzero(np.concatenate(([True], np.diff(positions) > 0)))
-    stops = np.append(starts[1:], positions.size)
-    return [(int(a), int(b)) for a, b in zip(starts, stops) if b - a >= 2]
+    stops = np.cumsum(cluster_sizes(positions))
+    return [(int(b - size), int(b)) for b, size in zip(stops, np.diff(stops, prepend=0)) if size >= 2]
 
 
 def collisions(path) -> list[tuple[int, int, int, int]]:

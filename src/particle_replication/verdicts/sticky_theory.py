@@ -27,7 +27,7 @@ import numpy as np
 
 from .. import claims as c
 from ..rates import Recorder, fit, order
-from .sticky import value_at_error
+from .sticky import resolvable, value_at_error
 
 PAPER = "sticky"
 
@@ -156,7 +156,8 @@ def random_claims(d, recorder: Recorder, order_min: float, exponent_max: float, 
                                               d["random_initial"][c_index, s_index], n.size, f"{case}, seed {seed}")))
             for k, t in enumerate(times):
                 errors = d["random_errors"][c_index, s_index, :, k]
-                resolved = errors >= floor[c_index, k]
+                resolved = np.zeros(n.size, dtype=bool)
+                resolved[resolvable(errors, d["reference_gap"][c_index, k], share)] = True
                 kept.append(int(resolved.sum()))
                 convergence.append(recorder.add(order(f"{PAPER}.theory.cor46.convergence", "1/n", 1.0 / n[resolved],
                                                       errors[resolved], int(resolved.sum()),
