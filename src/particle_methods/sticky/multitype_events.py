@@ -293,7 +293,8 @@ def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, 
             hi = lo + 1
             while hi < n and x0[gamma, hi] == x0[gamma, lo]:
                 hi += 1
-            row[:] = ranks[gamma, lo]
+            for g in range(d):  # element by element: a slice copy compiles numba's shape-mismatch error (1.5 s)
+                row[g] = ranks[gamma, lo, g]
             first, last = _new_blocks(_NONE, gamma, lo, hi, x0[gamma, lo], 0.0, row, lam, starts, sums, free,
                                       nfree, kind, low, high, xref, tref, vel, counts, prv, nxt)
             cluster = first
