@@ -123,6 +123,7 @@ SNIPPETS = expand(
         "configuration",
         "failures",
         "changes",
+        "windows",
         "rates",
         "summary",
         "versions",

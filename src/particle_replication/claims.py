@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import argparse
 import csv
+import dataclasses
+import inspect
 import math
 import sys
 from dataclasses import asdict, dataclass
@@ -29,10 +31,13 @@ from typing import NamedTuple
 import numpy as np
 import yaml
 
+from particle_methods.validation import ParameterTypeError
+
 from .rates import Recorder, merge_rates
 from .workflow import load_results
 
-COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status", "value")
+COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status", "value",
+           "windows")
 KINDS = ("paper", "derived", "check")
 KIND_NAMES = {"paper": "paper claims", "derived": "derived claims", "check": "checks"}
 #: Why an expected failure fails. A failure decided by our own instrument (a coarse reference, a grid,
@@ -70,6 +75,9 @@ class Claim:
     status: str
     #: The measured value to full precision (``repr``), for comparisons between builds.
     value: str = ""
+    #: For a claim decided on a fitted slope: on how many windows of consecutive resolutions (of the deciding
+    #: window's length) the same rule gives the same verdict, "k of K" (:func:`claim`); empty otherwise.
+    windows: str = ""
 
     def __post_init__(self):
         if self.status not in ("pass", "fail"):
@@ -80,6 +88,11 @@ class Claim:
             raise ValueError(f"claim {self.id!r} needs a source: where the paper states it or what it checks")
         if not self.id.startswith(f"{self.paper}."):
             raise ValueError(f"claim id {self.id!r} must start with the paper id {self.paper!r}")
+        if self.windows:
+            held, _, total = self.windows.partition(" of ")
+            if not (held.isdigit() and total.isdigit() and int(held) <= int(total) and int(total) > 0):
+                raise ValueError(f"windows of {self.id!r} must be 'k of K' with 0 <= k <= K, K > 0, got "
+                                 f"{self.windows!r}")
 
 
 def _number(value: float) -> str:
@@ -130,12 +143,47 @@ def between(id, paper, figure, claim, lower: float, upper: float, measured: floa
                  f"in {band}", _verdict(lower <= measured <= upper, measured), repr(float(measured)))
 
 
+COMPARISONS = (close_to, relatively_close_to, at_most, at_least, between)
+
+
 def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, text: str, *args, **kwargs) -> Claim:
     """The one constructor of every claim: ``<paper>.<name>``, its kind (:data:`KINDS`) and its source in the
-    paper, decided by ``compare`` (:func:`close_to`, :func:`relatively_close_to`, :func:`at_most`,
-    :func:`at_least` or :func:`between`) on the remaining arguments. Each paper binds its id once:
-    ``claim = functools.partial(claims.claim, PAPER)``."""
-    return compare(f"{paper}.{name}", paper, figure, text, *args, kind=kind, source=source, **kwargs)
+    paper, decided by ``compare`` (one of :data:`COMPARISONS`) on the remaining arguments. Each paper binds its
+    id once: ``claim = functools.partial(claims.claim, PAPER)``.
+
+    When the measured value is a fitted slope (:class:`~particle_replication.rates.Slope`, as
+    :meth:`Recorder.add <particle_replication.rates.Recorder.add>` returns it, or its negation or the
+    difference of two), the same rule also decides every window of consecutive resolutions of the deciding
+    window's length, and the row says on how many the verdict is the deciding window's: ``windows`` =
+    "k of K". A bound that is a fitted slope on as many windows takes its value on the same window."""
+    if compare not in COMPARISONS:
+        raise ParameterTypeError(f"compare must be one of {', '.join(f.__name__ for f in COMPARISONS)}, got "
+                                 f"{compare!r}")
+    arguments = inspect.signature(compare).bind(f"{paper}.{name}", paper, figure, text, *args, kind=kind,
+                                                source=source, **kwargs).arguments
+    made = compare(**arguments)
+    windows = getattr(arguments["measured"], "windows", None)
+    if windows is None:
+        return made
+    # A bound that is itself a fitted slope on as many windows (one rate above another) moves with the measure.
+    moving = {key: value.windows for key, value in arguments.items()
+              if len(getattr(value, "windows", ())) == len(windows)}
+    same = sum(compare(**{**arguments, **{key: values[i] for key, values in moving.items()}}).status == made.status
+               for i in range(len(windows)))
+    return dataclasses.replace(made, windows=f"{same} of {len(windows)}")
+
+
+def window_counts(claim: Claim) -> tuple[int, int] | None:
+    """(k, K) of the claim's ``windows``, None for a claim not decided on a fitted slope."""
+    if not claim.windows:
+        return None
+    held, total = claim.windows.split(" of ")
+    return int(held), int(total)
+
+
+def window_dependent(claims) -> list[Claim]:
+    """The claims decided on a fitted slope whose verdict changes with the window (k < K)."""
+    return [claim for claim in claims if (pair := window_counts(claim)) is not None and pair[0] < pair[1]]
 
 
 def farthest_from_centre(values, band) -> float:
@@ -234,14 +282,14 @@ def markdown_table(claims, heading: bool = True) -> str:
     per claim, paper claims first."""
     lines = ["# Checked claims", "", summary_line(claims), ""] if heading else []
     lines += [
-        "| id | kind | source | claim | published | measured | tolerance | status |",
-        "|---|---|---|---|---|---|---|---|",
+        "| id | kind | source | claim | published | measured | tolerance | status | same verdict on windows |",
+        "|---|---|---|---|---|---|---|---|---|",
     ]
     for claim in sorted(claims, key=lambda claim: KINDS.index(claim.kind)):
         status = "**fail**" if claim.status == "fail" else "pass"
         text = claim.claim.replace("|", "\\|")
         lines.append(f"| `{claim.id}` | {claim.kind} | {claim.source} | {text} | {claim.published} | "
-                     f"{claim.measured} | {claim.tolerance} | {status} |")
+                     f"{claim.measured} | {claim.tolerance} | {status} | {claim.windows} |")
     return "\n".join(lines) + "\n"
 
 

@@ -89,6 +89,12 @@ class RateFit:
         last = len(self.values) - 1
         return float(self.slopes[last - self.window + 1][last])
 
+    def window_values(self) -> tuple[float, ...]:
+        """The slope over every window of ``window`` consecutive points, coarse to fine: K = (points -
+        window + 1) values, the last one the deciding :attr:`slope`."""
+        count = len(self.values)
+        return tuple(float(self.slopes[i][i + self.window - 1]) for i in range(count - self.window + 1))
+
     @property
     def pairwise(self) -> list[float]:
         return [float(self.slopes[i][i + 1]) for i in range(len(self.values) - 1)]
@@ -155,6 +161,64 @@ def order(claim: str, resolution: str, values, errors, window: int, label: str =
                window, label)
 
 
+class Slope(float):
+    """A fitted slope that remembers its value on every window of the same length (:meth:`RateFit.window_values`)
+    and the resolutions it was fitted on, so that a claim decided on it also states on how many windows its
+    verdict holds (:func:`particle_replication.claims.claim`). Negation and the difference of two slopes fitted
+    on the same resolutions keep the windows (window by window); any other arithmetic gives a plain float."""
+
+    windows: tuple[float, ...]
+    resolutions: tuple[float, ...]
+
+    def __new__(cls, rate: RateFit):
+        if not isinstance(rate, RateFit):
+            raise ParameterTypeError(f"rate must be a RateFit, got {type(rate).__name__}")
+        return cls._made(rate.slope, rate.window_values(), rate.values)
+
+    @classmethod
+    def _made(cls, value: float, windows, resolutions) -> Slope:
+        slope = float.__new__(cls, value)
+        slope.windows, slope.resolutions = tuple(windows), tuple(resolutions)
+        return slope
+
+    def __neg__(self) -> Slope:
+        return Slope._made(-float(self), (-value for value in self.windows), self.resolutions)
+
+    def __sub__(self, other):
+        difference = float(self) - other
+        if isinstance(other, Slope) and other.resolutions == self.resolutions and len(other.windows) == len(
+                self.windows):
+            return Slope._made(difference, (a - b for a, b in zip(self.windows, other.windows)), self.resolutions)
+        return difference
+
+    def __rsub__(self, other):
+        return other - float(self)
+
+    def __mul__(self, other):
+        """A slope scaled by a plain number (a change of units) keeps its windows."""
+        if isinstance(other, (int, float)) and not isinstance(other, Slope):
+            return Slope._made(float(self) * other, (value * other for value in self.windows), self.resolutions)
+        return float(self) * other
+
+    __rmul__ = __mul__
+
+
+def chosen(slopes, pick):
+    """``pick(values)`` (min, max, or a rule returning one of the values) applied to the deciding slopes and, when
+    every one is a :class:`Slope` fitted on the same resolutions, window by window: the claim on the chosen
+    value then states on how many windows its verdict holds (:func:`particle_replication.claims.claim`).
+    A plain float otherwise (NaN among the slopes is passed to ``pick`` as it is)."""
+    if not callable(pick):
+        raise ParameterTypeError(f"pick must be callable, got {pick!r}")
+    slopes = list(slopes)
+    value = float(pick([float(slope) for slope in slopes]))
+    if not slopes or not all(isinstance(slope, Slope) and slope.resolutions == slopes[0].resolutions
+                             for slope in slopes):
+        return value
+    windows = [float(pick([slope.windows[i] for slope in slopes])) for i in range(len(slopes[0].windows))]
+    return Slope._made(value, windows, slopes[0].resolutions)
+
+
 class Recorder:
     """Collects the fits of one claims script, logs each table, writes them as JSON."""
 
@@ -164,13 +228,13 @@ class Recorder:
         self.fits: list[RateFit] = []
         self._log = log
 
-    def add(self, rate: RateFit) -> float:
-        """Keep and log ``rate``; return its deciding slope."""
+    def add(self, rate: RateFit) -> Slope:
+        """Keep and log ``rate``; return its deciding slope, with its value on every window (:class:`Slope`)."""
         if not isinstance(rate, RateFit):
             raise ParameterTypeError(f"rate must be a RateFit, got {type(rate).__name__}")
         self.fits.append(rate)
         self._log(rate.table())
-        return rate.slope
+        return Slope(rate)
 
     def write(self, path) -> None:
         write_rates(path, self.fits)

@@ -32,7 +32,15 @@ from pathlib import Path
 
 import yaml
 
-from .claims import KINDS, cause_counts, failures_with_causes, read_changes, read_claims, read_verdicts
+from .claims import (
+    KINDS,
+    cause_counts,
+    failures_with_causes,
+    read_changes,
+    read_claims,
+    read_verdicts,
+    window_dependent,
+)
 from .rates import read_rates
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
@@ -42,7 +50,8 @@ _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": 
 
 _CLAIM_TABLE_HEAD = (
     "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.3cm}>{\\raggedright\\scriptsize}p{1.6cm}"
-    ">{\\raggedright}p{5.0cm}>{\\raggedright}p{1.35cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.25cm}l@{}}\n"
+    ">{\\raggedright}p{5.0cm}>{\\raggedright}p{1.35cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.25cm}"
+    ">{\\raggedright\\arraybackslash}p{1.1cm}@{}}\n"
     "\\toprule id & kind, source & claim & published & measured & tolerance & status \\\\ \\midrule \\endhead\n"
     "\\bottomrule \\endlastfoot\n"
 )
@@ -110,10 +119,13 @@ def _breakable(identifier: str) -> str:
 
 
 def _claims_table(claims) -> str:
-    """A longtable of claims: id, figure, statement, published, measured, tolerance, status."""
+    """A longtable of claims: id, figure, statement, published, measured, tolerance, status (with, for a claim
+    decided on a fitted slope, on how many windows of resolutions the verdict is the same)."""
     rows = []
     for claim in claims:
         status = r"\textbf{fail}" if claim.status == "fail" else "pass"
+        if claim.windows:
+            status += f"\\newline{{\\scriptsize same on {claim.windows}}}"
         cells = [f"\\texttt{{{_breakable(claim.id)}}}", f"\\textit{{{claim.kind}}}: {tex(claim.source)}",
                  tex(claim.claim), cell(claim.published),
                  cell(claim.measured), cell(claim.tolerance), status]
@@ -130,6 +142,18 @@ def _failures_table(rows) -> str:
                  cell(claim.measured), tex(verdict.reason)]
         lines.append(" & ".join(cells) + " \\\\\n")
     return _FAILURE_TABLE_HEAD + "".join(lines) + "\\end{longtable}\n"
+
+
+def _windows_table(claims) -> str:
+    """A longtable of the claims whose verdict changes with the window of resolutions: id, kind, verdict,
+    windows with that verdict, measured (the deciding window)."""
+    head = ("\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{5.2cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.2cm}"
+            ">{\\raggedright}p{2.6cm}>{\\raggedright\\arraybackslash}p{2.4cm}@{}}\n"
+            "\\toprule id & kind & verdict & same verdict on & measured \\\\ \\midrule \\endhead\n"
+            "\\bottomrule \\endlastfoot\n")
+    lines = [" & ".join([f"\\texttt{{{_breakable(claim.id)}}}", tex(claim.kind), claim.status,
+                         f"{claim.windows} windows", cell(claim.measured)]) + " \\\\\n" for claim in claims]
+    return head + "".join(lines) + "\\end{longtable}\n"
 
 
 def _changes_table(changes) -> str:
@@ -201,6 +225,11 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
     failures = failures_with_causes(claims, expected)
     (outdir / "failures.tex").write_text(_failures_table(failures) if failures else "No claim fails.\n")
     (outdir / "changes.tex").write_text(_changes_table(changes))
+    dependent = window_dependent(claims)
+    (outdir / "windows.tex").write_text(_windows_table(dependent) if dependent else
+                                        "Every verdict decided on a fitted slope is the same on every window.\n")
+    summary.append(_define("claimcount", "windows.fitted", str(sum(bool(claim.windows) for claim in claims))))
+    summary.append(_define("claimcount", "windows.dependent", str(len(dependent))))
     tally = cause_counts({claim.id: verdict for claim, verdict in failures})
     summary += [_define("claimcount", f"cause.{cause}", str(count)) for cause, count in tally.items()]
     (outdir / "summary.tex").write_text("".join(summary))

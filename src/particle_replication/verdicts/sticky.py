@@ -22,7 +22,7 @@ from particle_methods.sticky.spd import cluster_sizes
 from particle_methods.systems import MINUS, PLUS, PSystem
 
 from .. import claims as c
-from ..rates import Recorder, fit, order
+from ..rates import Recorder, chosen, fit, order
 from ..steady import holds_from
 from .sticky_figures import figure_claims
 
@@ -40,7 +40,7 @@ def burgers_claims(d, rates: Recorder, window: int, tolerance: float):
     (2.1) exact for even n."""
     slopes = [rates.add(order(f"{PAPER}.fig2d.order", "n", d["error_n"], row, window, f"t = {t:g}")) * np.log(2)
               for t, row in zip(d["error_times"], d["errors"])]
-    worst = max(slopes, key=lambda s: abs(s + np.log(2)))
+    worst = chosen(slopes, lambda values: max(values, key=lambda s: abs(s + np.log(2))))
     ratios = d["errors"][1:] / d["errors"][:-1]
     even = d["error_n"] % 2 == 0
     return [
@@ -107,12 +107,14 @@ def concave_claims(d, rates: Recorder, window: int, band):
         claim(c.between, "fig3d.decay_plotted", "paper", "Figure 3 (d), section 5.1.3", "3d",
               f"past the plateau the error decays like log(n)/n, in the plotted range: slope of n error against "
               f"log n on the {window} largest plotted n, for the {len(plotted)} times whose window is past the "
-              "plateau; the value farthest from the band's centre", lower, upper, c.farthest_from_centre(plotted, band),
+              "plateau; the value farthest from the band's centre", lower, upper,
+              chosen(plotted, lambda values: c.farthest_from_centre(values, band)),
               published="log(n)/n"),
         claim(c.between, "fig3d.decay_asymptotic", "paper", "Figure 3 (d), section 5.1.3", "3d",
               f"the decay rate is that of the initial discretisation, log(n)/n: slope of n error against log n for "
               f"n = {', '.join(f'2^{int(np.log2(v))}' for v in rate_n)}, every t; the value farthest from the band's "
-              "centre", lower, upper, c.farthest_from_centre(asymptotic, band), published="log(n)/n"),
+              "centre", lower, upper,
+              chosen(asymptotic, lambda values: c.farthest_from_centre(values, band)), published="log(n)/n"),
         claim(c.at_most, "fig3d.ordering", "paper", "Figure 3 (d) caption", "3d",
               "higher curves for smaller t: largest ratio error(t_next)/error(t) over all n", 1.0 + c.ROUNDING,
               float(ratios.max()), published="<= 1"),
@@ -278,7 +280,7 @@ def tspd_claims(d, rates: Recorder, window: int, order_min: float, growth_max: f
             claim(c.at_least, f"thm44.delta_order_{case}", "paper", "Proposition 4.1, Theorem 4.4", "Theorem 4.4",
                   f"{case} case: the iterated TSPD is within C Delta of the MSPD; order in Delta against Delta = "
                   f"{float(d['reference_delta']):g} on the {window} smallest Delta, smallest over n = "
-                  f"{', '.join(map(str, d['delta_n']))} per type and t = {times}", order_min, float(min(orders)),
+                  f"{', '.join(map(str, d['delta_n']))} per type and t = {times}", order_min, chosen(orders, min),
                   published="O(Delta)"),
             claim(c.at_most, f"thm44.delta_constant_{case}", "paper", "Proposition 4.1", "Theorem 4.4",
                   f"{case} case: C depends neither on n nor on Delta: largest error / Delta at the smallest Delta "
@@ -287,7 +289,7 @@ def tspd_claims(d, rates: Recorder, window: int, order_min: float, growth_max: f
             claim(c.at_most, f"thm44.n_bound_{case}", "paper", "Theorem 4.4 (first term)", "Theorem 4.4",
                   f"{case} case, Delta = {float(d['n_delta']):g}: error against n = {int(d['reference_n'])} stays "
                   f"O(W1(m, mu_0) + t d L_LC / n): slope of log(error / that bound) against log n on the {window} "
-                  f"largest n, largest over t = {times} (1/2 for an n^(-1/2) error)", growth_max, float(max(growth)),
+                  f"largest n, largest over t = {times} (1/2 for an n^(-1/2) error)", growth_max, chosen(growth, max),
                   published="O(W1 + t/n)"),
         ]
     gaps = max((d["delta_reference_gap"] / d["delta_errors"].min(axis=(1, 3))).max(),

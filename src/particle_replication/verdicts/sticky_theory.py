@@ -26,7 +26,7 @@ import math
 import numpy as np
 
 from .. import claims as c
-from ..rates import Recorder, fit, order
+from ..rates import Recorder, chosen, fit, order
 from .sticky import resolvable, value_at_error
 
 PAPER = "sticky"
@@ -183,10 +183,10 @@ def random_claims(d, recorder: Recorder, order_min: float, exponent_max: float, 
               f"solution: configurations of n draws of each m^gamma of both p-system cases (seeds "
               f"{_listing(d['random_seeds'])}), {sizes}, t = {_listing(times)}, W1^(d) to the exact MSPD from (1.9) "
               f"with n = {int(d['reference_n'])}; order in n {resolved_text}, smallest", order_min,
-              float(min(convergence)), published="convergence"),
+              chosen(convergence, min), published="convergence"),
         claim(c.at_least, "theory.cor46.premise", "check", "(4.12), premise of Corollary 4.6 (our random data)",
               "Corollary 4.6", f"the random configurations satisfy (4.12): W1^(d)(mu_0[x(n)], m), exact, falls with n; "
-              f"order fitted on every n ({sizes}), smallest over cases and seeds", order_min, float(min(premise)),
+              f"order fitted on every n ({sizes}), smallest over cases and seeds", order_min, chosen(premise, min),
               published="-> 0"),
         claim(c.at_most, "theory.t_exponent", "paper", "section 5.2, O(t^2/eps^2) from Theorem 4.4",
               "section 5.2", f"the iterated TSPD needs O(t^2/eps^2) operations for an error eps at time t: L = n steps "
