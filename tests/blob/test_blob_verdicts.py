@@ -513,9 +513,12 @@ def settling(end, tau, start=None):
 
 def fig7(**states):
     """End states and time scales per ``<case>_<method>``; the defaults follow the paper: the blob reaches the
-    delta ring of the stationary radius first, the large-delta log state is a ring, the septic one three points."""
+    delta ring of the stationary radius first, the large-delta log state is a ring, the septic one three points.
+    Every run starts from a disk with a particle at the origin (particle 0); in the power kernels' blob runs it
+    ends on the ring or in a cluster. The runs ``<case>_<method>_no_origin`` (quartic and septic power kernels,
+    the same states unless given) leave it out."""
     states = {"log_blob": (ring(0.4, 0.002), 1.0), "log_particle": (disk(0.5), 1.0),
-              "power_blob": (ring(RING, 0.001), 1.0), "power_particle": (ring(RING, 0.05), 3.0),
+              "power_blob": (ring(RING, 0.001, centre=False), 1.0), "power_particle": (ring(RING, 0.05), 3.0),
               "septic_blob": (clusters(3), 1.0), "septic_particle": (ring(0.57, 0.01, centre=False), 1.0)} | states
     data = {"labels": np.array(["quartic_log|quartic", "quartic_power|quartic", "septic_power|quartic"]),
             "delta": DELTA, "h": 1 / 9, "paper_tables": np.array([2.5, 100])}
@@ -523,6 +526,10 @@ def fig7(**states):
         data[f"case{i}_times"] = T7
         for method in ("particle", "blob"):
             data[f"case{i}_{method}"] = settling(*states[f"{case}_{method}"])
+            if case != "log":
+                data[f"case{i}_times_no_origin"] = T7
+                no_origin = states.get(f"{case}_{method}_no_origin", states[f"{case}_{method}"])
+                data[f"case{i}_{method}_no_origin"] = settling(*no_origin)[:, 1:]
         coarse = states.get(f"{case}_blob_paper_tables", states[f"{case}_blob"])
         data[f"case{i}_blob_paper_tables"] = settling(*coarse)
     return data
@@ -585,6 +592,33 @@ def test_fig7_large_delta_log_state_that_stays_compact_or_moving_fails(log_blob)
 def test_fig7_septic_end_state_other_than_three_steady_points_fails(septic_blob):
     claims = v.fig7_claims(fig7(septic_blob=septic_blob), CONFIG["fig7"], RULES)
     assert status(claims, "fig7.septic_three_points") == "fail"
+
+
+def test_fig7_no_origin_claims_fail_on_their_own_runs():
+    claims = v.fig7_claims(fig7(septic_blob_no_origin=(ring(0.6, centre=False), 1.0),
+                                power_blob_no_origin=(ring(0.9 * RING, 0.001), 1.0)), CONFIG["fig7"], RULES)
+    assert status(claims, "fig7.no_origin.septic_three_points") == "fail"
+    assert status(claims, "fig7.no_origin.delta_ring_radius") == "fail"
+    assert status(claims, "fig7.septic_three_points") == "pass" and status(claims, "fig7.delta_ring_radius") == "pass"
+    claims = v.fig7_claims(fig7(power_particle_no_origin=(disk(0.5), 3.0)), CONFIG["fig7"], RULES)
+    assert status(claims, "fig7.no_origin.particle_power_ring") == "fail"
+    claims = v.fig7_claims(fig7(power_blob_no_origin=(ring(RING, 0.3), 1.0)), CONFIG["fig7"], RULES)
+    assert status(claims, "fig7.no_origin.delta_ring_thin") == "fail"
+    claims = v.fig7_claims(fig7(power_blob_no_origin=(ring(RING, 0.001), 3.0),
+                                power_particle_no_origin=(ring(RING, 0.05), 1.0)), CONFIG["fig7"], RULES)
+    assert status(claims, "fig7.no_origin.blob_ring_faster") == "fail"
+    assert not failing(v.fig7_claims(fig7(), CONFIG["fig7"], RULES))
+
+
+def test_fig7_origin_particle_that_stays_at_the_origin_fails():
+    claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.001), 1.0)), CONFIG["fig7"], RULES)  # it stays at 0
+    assert status(claims, "fig7.origin_particle") == "fail"
+
+
+def test_fig7_septic_claim_lists_the_verdict_for_earlier_final_times():
+    text = next(claim.claim for claim in v.fig7_claims(fig7(), CONFIG["fig7"], RULES)
+                if claim.id.endswith("fig7.septic_three_points"))
+    assert "runs ending at other times (end: clusters) 40: 3" in text
 
 
 LABELS8 = ("morse_1|quartic", "morse_2|quartic", "morse_2|star")
@@ -673,7 +707,8 @@ COVERED = {
     "fig6.star_no_rounding_quadratic", "fig6.newtonian_blowup", "energy.decrease_2d",
     "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.particle_log_disk", "fig7.particle_power_ring",
     "fig7.blob_ring_faster", "fig7.log_ring_collapse",
-    "fig7.septic_three_points",
+    "fig7.septic_three_points", "fig7.no_origin.delta_ring_radius", "fig7.no_origin.delta_ring_thin",
+    "fig7.no_origin.particle_power_ring", "fig7.no_origin.blob_ring_faster", "fig7.no_origin.septic_three_points",
     "fig8.regularisation_effect",
 }
 

@@ -95,6 +95,13 @@ KINDS = {
     "fig7.blob_ring_faster": ("paper", "Figure 7, section 4.4"),
     "fig7.log_ring_collapse": ("paper", "Figure 7, section 4.4"),
     "fig7.septic_three_points": ("paper", "Figure 7, section 4.4"),
+    "fig7.no_origin.delta_ring_radius": ("derived", "Figure 7, section 4.4: delta ring; stationary radius of a "
+                                         "uniform ring"),
+    "fig7.no_origin.delta_ring_thin": ("paper", "Figure 7, section 4.4: a delta ring"),
+    "fig7.no_origin.particle_power_ring": ("paper", "Figure 7, section 4.4: the particle method's delta ring"),
+    "fig7.no_origin.blob_ring_faster": ("paper", "Figure 7, section 4.4"),
+    "fig7.no_origin.septic_three_points": ("paper", "Figure 7, section 4.4"),
+    "fig7.origin_particle": ("check", "Figure 7 (our grid hZ^2: the particle at the origin)"),
     "fig8.regularisation_effect": ("paper", "Figure 8, section 4.4"),
     "fig8.regularisation_effect_paper_tables": ("check", "Figure 8 with the caption's radial tables (200 points)"),
     "fig8.paper_tables": ("check", "Figure 8's caption: radial tables of 200 points on radius 5"),
@@ -451,67 +458,123 @@ def fig6_claims(d, rules):
 
 
 def fig7_claims(d, p, rules):
-    """Figure 7: end states of the power-law kernels, each measured once steady (``inf``, unmeasured, otherwise)."""
-    from particle_methods.blob.rings import uniform_ring_radius
-
-    centre, thin, distance = float(rules["centre_radius"]), float(rules["thin_ring"]), float(rules["cluster_distance"])
+    """Figure 7: end states of the power-law kernels, each measured once steady (``inf``, unmeasured, otherwise),
+    on the grid hZ^2 and again without its particle at the origin (``fig7.no_origin.*``)."""
+    centre, distance = float(rules["centre_radius"]), float(rules["cluster_distance"])
     delta = float(d["delta"])
     window, tolerance = float(p["steady"]["window"]), float(p["steady"]["tolerance"]) * delta
     hold = float(p["steady"]["hold"])
     labels = [label.split("|")[0] for label in d["labels"]]
     case = {label: i for i, label in enumerate(labels)}
 
-    def state(kernel, method, to_the_end=True):
+    def state(kernel, method, to_the_end=True, suffix="", until=np.inf):
         i = case[kernel]
-        radii = np.sort(np.linalg.norm(d[f"case{i}_{method}"], axis=-1), axis=1)
-        steady, at = settled_from(d[f"case{i}_times"], radii, window, tolerance, hold, to_the_end=to_the_end)
-        return d[f"case{i}_{method}"][at], steady
+        times = d[f"case{i}_times{suffix}"]
+        last = int(np.searchsorted(times, until, side="right"))
+        positions = d[f"case{i}_{method}{suffix}"][:last]
+        radii = np.sort(np.linalg.norm(positions, axis=-1), axis=1)
+        steady, at = settled_from(times[:last], radii, window, tolerance, hold, to_the_end=to_the_end)
+        return positions[at], steady
 
-    def when_steady(value, *steady_times):
-        return float(value) if all(np.isfinite(steady_times)) else float("inf")  # unmeasured: never steady
-
-    power_blob, power_blob_t = state("quartic_power", "blob")
-    reached_blob = state("quartic_power", "blob", to_the_end=False)[1]
-    reached_particle = state("quartic_power", "particle", to_the_end=False)[1]
     log_blob, log_blob_t = state("quartic_log", "blob")
     log_particle, log_particle_t = state("quartic_log", "particle")
-    septic, septic_t = state("septic_power", "blob")
-    power_particle, power_particle_t = state("quartic_power", "particle")
-    ring = ring_radii(power_blob, centre)
-    radius = uniform_ring_radius(4.0, 1.5)
     criterion = (f"steady: sorted radii moving at most {p['steady']['tolerance']:g} delta per {window:g} time units "
                  f"from then to the end of the run (at least {hold:g} time units), measured at the end")
-    return [
-        claim(c.relatively_close_to, "fig7.delta_ring_radius", "7", "K = |x|^4/4 - |x|^1.5/1.5: the blob end state "
-              "is a delta ring of the stationary radius (B_1.5/B_4)^(1/2.5)/2 derived for a uniform ring: mean "
-              f"radius once {criterion} (from t = {power_blob_t:g})", radius,
-              when_steady(ring.mean(), power_blob_t), float(rules["ring_radius_tolerance"])),
-        claim(c.at_most, "fig7.delta_ring_thin", "7", "K = |x|^4/4 - |x|^1.5/1.5: the blob end state is a delta ring, "
-              "not an annulus: coefficient of variation of the radii (centre particle excluded), once steady", thin,
-              when_steady(variation(ring), power_blob_t), published="a delta ring"),
+
+    def septic_by_end(suffix):
+        """Clusters of the septic blob end state for runs ending at every 20 time units from 40 ('-': not steady)."""
+        times = d[f"case{case['septic_power']}_times{suffix}"]
+        ends = [*np.arange(40.0, times[-1], 20.0), times[-1]]
+        counts = []
+        for end in ends:
+            points, steady = state("septic_power", "blob", suffix=suffix, until=end)
+            counts.append(f"{cluster_count(points, distance)}" if np.isfinite(steady) else "-")
+        return ", ".join(f"{end:g}: {count}" for end, count in zip(ends, counts))
+
+    out = _ring_claims(state, "", rules, criterion, hold, septic_by_end(""))
+    out[4:4] = [
         claim(c.at_least, "fig7.particle_log_disk", "7", "K = |x|^4/4 - log|x|/(2 pi), particle method: a radial, "
               "compactly supported two-dimensional state, not a ring: coefficient of variation of the radii, once "
               f"{criterion} (from t = {log_particle_t:g}; a ring gives about 0)", float(rules["disk_variation_min"]),
-              when_steady(variation(ring_radii(log_particle, centre)), log_particle_t), published="compact support"),
-        claim(c.at_most, "fig7.particle_power_ring", "7", "K = |x|^4/4 - |x|^1.5/1.5, particle method: the stable "
-              f"delta ring: coefficient of variation of the radii, once {criterion} (from t = {power_particle_t:g})",
-              thin, when_steady(variation(ring_radii(power_particle, centre)), power_particle_t),
-              published="a delta ring"),
-        claim(c.at_most, "fig7.blob_ring_faster", "7", "the blob method reaches the ring faster than the particle "
-              f"method: first time the blob state is steady for {hold:g} time units, over that of the particle "
-              f"state ({reached_blob:g} and {reached_particle:g})", 1.0,
-              when_steady(reached_blob / reached_particle, reached_blob, reached_particle), published="faster"),
+              _when_steady(variation(ring_radii(log_particle, centre)), log_particle_t), published="compact support"),
         claim(c.at_most, "fig7.log_ring_collapse", "7", "K = |x|^4/4 - log|x|/(2 pi): the particle method keeps a "
               "radial compactly supported state, the large-delta blob collapses towards a ring: spread of radii, "
               f"blob over particle, once both are {criterion} (from t = {log_blob_t:g} and {log_particle_t:g})",
               float(rules["log_collapse"]),
-              when_steady(variation(ring_radii(log_blob, centre)) / variation(ring_radii(log_particle, centre)),
-                          log_blob_t, log_particle_t), published="ring for large delta"),
-        claim(c.close_to, "fig7.septic_three_points", "7", "K = |x|^7/7 - |x|^1.5/1.5 with large delta: the end state "
-              f"is three point masses: number of clusters of the blob end state (distance {distance:g}), once "
-              f"{criterion} (from t = {septic_t:g})", 3.0, when_steady(cluster_count(septic, distance), septic_t), 0.0),
-        paper_tables_claim(d, p, "fig7", float(rules["paper_tables_gap"])),
+              _when_steady(variation(ring_radii(log_blob, centre)) / variation(ring_radii(log_particle, centre)),
+                           log_blob_t, log_particle_t), published="ring for large delta"),
     ]
+    out += _ring_claims(state, "_no_origin", rules, criterion, hold, septic_by_end("_no_origin"))
+    out += [origin_particle_claim(d, case["quartic_power"], case["septic_power"], float(rules["origin_departure"])),
+            paper_tables_claim(d, p, "fig7", float(rules["paper_tables_gap"]))]
+    return out
+
+
+def _when_steady(value, *steady_times):
+    return float(value) if all(np.isfinite(steady_times)) else float("inf")  # unmeasured: never steady
+
+
+def _ring_claims(state, suffix, rules, criterion, hold, septic_ends):
+    """The claims of Figure 7 on its rings and points (quartic and septic power kernels) on the runs ``suffix``:
+    '' on the grid hZ^2, '_no_origin' without its particle at the origin (ids ``fig7.no_origin.*``)."""
+    from particle_methods.blob.rings import uniform_ring_radius
+
+    centre, thin, distance = float(rules["centre_radius"]), float(rules["thin_ring"]), float(rules["cluster_distance"])
+    prefix, grid = ("fig7.no_origin.", "; without the grid particle at the origin") if suffix else ("fig7.", "")
+    power_blob, power_blob_t = state("quartic_power", "blob", suffix=suffix)
+    reached_blob = state("quartic_power", "blob", to_the_end=False, suffix=suffix)[1]
+    reached_particle = state("quartic_power", "particle", to_the_end=False, suffix=suffix)[1]
+    power_particle, power_particle_t = state("quartic_power", "particle", suffix=suffix)
+    septic, septic_t = state("septic_power", "blob", suffix=suffix)
+    ring = ring_radii(power_blob, centre)
+    radius = uniform_ring_radius(4.0, 1.5)
+    return [
+        claim(c.relatively_close_to, f"{prefix}delta_ring_radius", "7", "K = |x|^4/4 - |x|^1.5/1.5: the blob end "
+              "state is a delta ring of the stationary radius (B_1.5/B_4)^(1/2.5)/2 derived for a uniform ring: mean "
+              f"radius once {criterion} (from t = {power_blob_t:g}){grid}", radius,
+              _when_steady(ring.mean(), power_blob_t), float(rules["ring_radius_tolerance"])),
+        claim(c.at_most, f"{prefix}delta_ring_thin", "7", "K = |x|^4/4 - |x|^1.5/1.5: the blob end state is a delta "
+              "ring, not an annulus: coefficient of variation of the radii (centre particle excluded), once "
+              f"steady{grid}",
+              thin, _when_steady(variation(ring), power_blob_t), published="a delta ring"),
+        claim(c.at_most, f"{prefix}particle_power_ring", "7", "K = |x|^4/4 - |x|^1.5/1.5, particle method: the "
+              f"stable delta ring: coefficient of variation of the radii, once {criterion} (from t = "
+              f"{power_particle_t:g}){grid}", thin,
+              _when_steady(variation(ring_radii(power_particle, centre)), power_particle_t), published="a delta ring"),
+        claim(c.at_most, f"{prefix}blob_ring_faster", "7", "the blob method reaches the ring faster than the particle "
+              f"method: first time the blob state is steady for {hold:g} time units, over that of the particle state "
+              f"({reached_blob:g} and {reached_particle:g}){grid}", 1.0,
+              _when_steady(reached_blob / reached_particle, reached_blob, reached_particle), published="faster"),
+        claim(c.close_to, f"{prefix}septic_three_points", "7", "K = |x|^7/7 - |x|^1.5/1.5 with large delta: the end "
+              f"state is three point masses: number of clusters of the blob end state (distance {distance:g}), once "
+              f"{criterion} (from t = {septic_t:g}){grid}; for runs ending at other times (end: clusters) "
+              f"{septic_ends}", 3.0, _when_steady(cluster_count(septic, distance), septic_t), 0.0),
+    ]
+
+
+def origin_particle_claim(d, power: int, septic: int, departure: float):
+    """The grid particle at the origin leaves it: its largest distance from 0 in the blob runs of the power
+    kernels on hZ^2, over the ring's radius, smaller of the two (0 if it stays: the explanation fails)."""
+    from particle_methods.blob.rings import uniform_ring_radius
+
+    radius = uniform_ring_radius(4.0, 1.5)
+    moves, text = [], []
+    for i, name in ((power, "quartic"), (septic, "septic")):
+        positions = d[f"case{i}_blob"]
+        origin = int(np.argmin(np.linalg.norm(positions[0], axis=-1)))
+        if np.linalg.norm(positions[0, origin]) != 0.0:
+            raise ValueError("the grid of Figure 7 has no particle at the origin")
+        distance = np.linalg.norm(positions[:, origin], axis=-1)
+        times = d[f"case{i}_times"]
+        left = times[np.argmax(distance > 0.1 * radius)] if np.any(distance > 0.1 * radius) else np.inf
+        moves.append(float(distance.max() / radius))
+        text.append(f"{name}: from {distance[1]:.1e} at t = {times[1]:g} to {distance.max():.3g} (a tenth of the "
+                    f"radius at t = {left:g})")
+    return claim(c.at_least, "fig7.origin_particle", "7", "the grid particle at the origin sits at an unstable "
+                 "balance: rounding moves it until it reaches the ring, which breaks up (the runs without it, "
+                 "fig7.no_origin.*, test that this is what decides the end times): its largest distance from 0 over "
+                 f"the ring radius, smaller of the blob runs of the power kernels ({'; '.join(text)})", departure,
+                 min(moves), published="n/a")
 
 
 def settled_from(times, radii, window: float, tolerance: float, hold: float, *, to_the_end: bool = True
