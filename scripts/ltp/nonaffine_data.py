@@ -4,13 +4,50 @@
     finer ``reference_h`` at the same dt (so that the time error, common to both, cancels), and
     the reference against a run with twice its h, to show that its own error is small.
 (b) W = |x|^a/a - |x|^b/b from (6.1), which is not symmetric: the drift of the centre of mass
-    sum_k omega_k x_k over the run, at several h (not conserved by LTP for a non-quadratic W)."""
+    sum_k omega_k x_k over the run, at several h (not conserved by LTP for a non-quadratic W).
+(c) Theorem 4 under its own hypotheses: the same W, each run with dt = dt_over_h2 h^2, the L1 and Linf
+    errors (p = inf is allowed for alpha = -1/2) against a run with h / reference_factor of the finest h
+    at the finest run's dt, largest over the record times; weights (2.14) (shape b3) and (2.16) (hat)."""
 
 import numpy as np
 
 from particle_methods.ltp import density_named, potential, simulate
 from particle_methods.norms import grid_errors
 from particle_replication.workflow import logged, progress, save_results
+
+#: Theorem 4's weights: (2.14) with the B3 shape of the other runs, and (2.16), defined for the hat shape only.
+WEIGHTS = {"cell": "b3", "biorthogonal": "hat"}
+
+
+def theorem4_errors(initial, w, grid, q):
+    """Largest L1 and Linf errors over the record times (rows: h, columns: L1, Linf) for each weight rule,
+    each run with dt = dt_over_h2 h^2; the reference (h_min / reference_factor, the finest run's dt) and its
+    distance to the run with twice its h (its own error)."""
+    h_values, times = np.asarray(q["h_values"], float), np.asarray(q["times"], float)
+    dt_values = q["dt_over_h2"] * h_values**2
+
+    def densities(h, dt, weights):
+        progress(f"Theorem 4: {w.name}, weights {weights}, h = {h:g}, dt = {dt:g}, t = {times[-1]:g}")
+        every = int(round(times[0] / dt))
+        sim = simulate(initial, w, h, dt, times[-1], shape=WEIGHTS[weights], weights=weights, record_every=every)
+        recorded = np.array([np.argmin(np.abs(sim.times - t)) for t in times])
+        if not np.allclose(sim.times[recorded], times, rtol=0, atol=1e-9):
+            raise ValueError("the record times must be multiples of every run's dt")
+        return [sim.at(int(i)).density(grid) for i in recorded]
+
+    out = {"theorem4_h": h_values, "theorem4_dt": dt_values, "theorem4_times": times,
+           "theorem4_weights": np.array(list(WEIGHTS))}
+    reference_h = h_values.min() / q["reference_factor"]
+    for weights in WEIGHTS:
+        reference = densities(reference_h, dt_values[-1], weights)
+        twin = densities(2 * reference_h, dt_values[-1], weights)
+        runs = [densities(h, dt, weights) for h, dt in zip(h_values, dt_values)]
+        out[f"theorem4_{weights}_errors"] = np.array(
+            [np.max([grid_errors(a, b, grid) for a, b in zip(run, reference)], axis=0) for run in runs])
+        out[f"theorem4_{weights}_reference_gap"] = np.max([grid_errors(a, b, grid) for a, b in zip(twin, reference)],
+                                                          axis=0)
+    out["theorem4_reference_h"] = reference_h
+    return out
 
 
 def run(p, output):
@@ -35,9 +72,10 @@ def run(p, output):
         sim = simulate(initial, w_centre, h, centre["dt"], p["t"])
         drifts.append(abs(sim.at(-1).centre_of_mass - sim.at(0).centre_of_mass))
         progress(f"{w_centre.name}: h = {h:g}: centre of mass drift {drifts[-1]:.3e}")
-    save_results(output, h_values=h_values, errors=errors, reference_h=reference_h, reference_gap=reference_gap,
-                 order_points=p["order_points"], label=np.array(w.name), t=p["t"], dt=p["dt"],
-                 grid=grid, reference=reference, centre_h=np.asarray(centre["h_values"], float),
+    theorem4 = theorem4_errors(initial, w, grid, p["theorem4"])
+    save_results(output, **theorem4, h_values=h_values, errors=errors, reference_h=reference_h,
+                 reference_gap=reference_gap, order_points=p["order_points"], label=np.array(w.name), t=p["t"],
+                 dt=p["dt"], grid=grid, reference=reference, centre_h=np.asarray(centre["h_values"], float),
                  centre_drift=np.array(drifts), centre_label=np.array(w_centre.name))
 
 
