@@ -233,8 +233,12 @@ def fig4_claims(d, rules, recorder: Recorder):
                              published="better"))
     particle_x, particle_rho = d["cubic_particle_trajectory"][-1], d["cubic_particle_density"][-1]
     m4_x, m4_rho = d["cubic_blob4_trajectory"][-1], d["cubic_blob4_density"][-1]
-    best = max(d["cubic_blob6_trajectory"][-1] / min(particle_x, m4_x),
-               d["cubic_blob6_density"][-1] / min(particle_rho, m4_rho))
+    # m = 6 error over the best other method's, worst of trajectory and density, at every h (the claim: the finest)
+    best_by_h = np.maximum(
+        d["cubic_blob6_trajectory"] / np.minimum(d["cubic_particle_trajectory"], d["cubic_blob4_trajectory"]),
+        d["cubic_blob6_density"] / np.minimum(d["cubic_particle_density"], d["cubic_blob4_density"]))
+    best = best_by_h[-1]
+    by_h = ", ".join(f"1/{1 / h:.0f}: {value:.3g}" for h, value in zip(d["h_values"], best_by_h))
     gain = {kernel: d[f"{kernel}_particle_trajectory"][-1] / d[f"{kernel}_blob4_trajectory"][-1]
             for kernel in ("newtonian_repulsive", "cubic")}
     out += [
@@ -250,7 +254,9 @@ def fig4_claims(d, rules, recorder: Recorder):
         claim(c.at_least, "fig4.cubic_particle_loses_density", "4", "K = |x|^3/3: but not on density: particle / "
               "m = 4 finest error", 1.0, float(particle_rho / m4_rho), published="does not beat"),
         claim(c.at_most, "fig4.cubic_m6_best", "4", "K = |x|^3/3: m = 6 is the best on both: its finest error over "
-              "the best other method's, worst of trajectory and density", 1.0, float(best), published="best"),
+              "the best other method's, worst of trajectory and density; the paper does not say at which h: at "
+              f"every h (h: ratio) {by_h}, best at {int((best_by_h <= 1).sum())} of {best_by_h.size}", 1.0,
+              float(best), published="best"),
         claim(c.at_most, "fig4.cubic_reference", "4", "K = |x|^3/3 has no exact solution: the reference (m = 6 on a "
               "finer nested grid) differs from its half-resolution twin by far less than the errors fitted: that "
               "difference over the smallest error fitted, worst of trajectory and density",
