@@ -88,11 +88,7 @@ class Claim:
             raise ValueError(f"claim {self.id!r} needs a source: where the paper states it or what it checks")
         if not self.id.startswith(f"{self.paper}."):
             raise ValueError(f"claim id {self.id!r} must start with the paper id {self.paper!r}")
-        if self.windows:
-            held, _, total = self.windows.partition(" of ")
-            if not (held.isdigit() and total.isdigit() and int(held) <= int(total) and int(total) > 0):
-                raise ValueError(f"windows of {self.id!r} must be 'k of K' with 0 <= k <= K, K > 0, got "
-                                 f"{self.windows!r}")
+        window_counts(self)  # "k of K" or empty
 
 
 def _number(value: float) -> str:
@@ -174,10 +170,13 @@ def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, t
 
 
 def window_counts(claim: Claim) -> tuple[int, int] | None:
-    """(k, K) of the claim's ``windows``, None for a claim not decided on a fitted slope."""
+    """(k, K) of the claim's ``windows``, None for a claim not decided on a fitted slope; a ValueError unless
+    it reads "k of K" with 0 <= k <= K, K > 0."""
     if not claim.windows:
         return None
-    held, total = claim.windows.split(" of ")
+    held, _, total = claim.windows.partition(" of ")
+    if not (held.isdigit() and total.isdigit() and int(held) <= int(total) and int(total) > 0):
+        raise ValueError(f"windows of {claim.id!r} must be 'k of K' with 0 <= k <= K, K > 0, got {claim.windows!r}")
     return int(held), int(total)
 
 

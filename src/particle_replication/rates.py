@@ -164,8 +164,9 @@ def order(claim: str, resolution: str, values, errors, window: int, label: str =
 class Slope(float):
     """A fitted slope that remembers its value on every window of the same length (:meth:`RateFit.window_values`)
     and the resolutions it was fitted on, so that a claim decided on it also states on how many windows its
-    verdict holds (:func:`particle_replication.claims.claim`). Negation and the difference of two slopes fitted
-    on the same resolutions keep the windows (window by window); any other arithmetic gives a plain float."""
+    verdict holds (:func:`particle_replication.claims.claim`). Negation, scaling by a plain number and the
+    difference of two slopes fitted on the same resolutions keep the windows (window by window); any other
+    arithmetic gives a plain float."""
 
     windows: tuple[float, ...]
     resolutions: tuple[float, ...]

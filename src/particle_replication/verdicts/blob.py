@@ -497,8 +497,8 @@ def fig7_claims(d, p, rules):
             counts.append(f"{cluster_count(points, distance)}" if np.isfinite(steady) else "-")
         return ", ".join(f"{end:g}: {count}" for end, count in zip(ends, counts))
 
-    out = _ring_claims(state, "", rules, criterion, hold, septic_by_end(""))
-    out[4:4] = [
+    return [
+        *_ring_claims(state, "", rules, criterion, hold, septic_by_end("")),
         claim(c.at_least, "fig7.particle_log_disk", "7", "K = |x|^4/4 - log|x|/(2 pi), particle method: a radial, "
               "compactly supported two-dimensional state, not a ring: coefficient of variation of the radii, once "
               f"{criterion} (from t = {log_particle_t:g}; a ring gives about 0)", float(rules["disk_variation_min"]),
@@ -509,11 +509,10 @@ def fig7_claims(d, p, rules):
               float(rules["log_collapse"]),
               _when_steady(variation(ring_radii(log_blob, centre)) / variation(ring_radii(log_particle, centre)),
                            log_blob_t, log_particle_t), published="ring for large delta"),
+        *_ring_claims(state, "_no_origin", rules, criterion, hold, septic_by_end("_no_origin")),
+        origin_particle_claim(d, case["quartic_power"], case["septic_power"], float(rules["origin_departure"])),
+        paper_tables_claim(d, p, "fig7", float(rules["paper_tables_gap"])),
     ]
-    out += _ring_claims(state, "_no_origin", rules, criterion, hold, septic_by_end("_no_origin"))
-    out += [origin_particle_claim(d, case["quartic_power"], case["septic_power"], float(rules["origin_departure"])),
-            paper_tables_claim(d, p, "fig7", float(rules["paper_tables_gap"]))]
-    return out
 
 
 def _when_steady(value, *steady_times):
@@ -560,10 +559,8 @@ def _ring_claims(state, suffix, rules, criterion, hold, septic_ends):
 
 def origin_particle_claim(d, power: int, septic: int, departure: float):
     """The grid particle at the origin leaves it: its largest distance from 0 in the blob runs of the power
-    kernels on hZ^2, over the ring's radius, smaller of the two (0 if it stays: the explanation fails)."""
-    from particle_methods.blob.rings import uniform_ring_radius
-
-    radius = uniform_ring_radius(4.0, 1.5)
+    kernels on hZ^2, over the radius of that run's end state (its farthest particle), smaller of the two (0 if
+    it stays: the explanation fails)."""
     moves, text = [], []
     for i, name in ((power, "quartic"), (septic, "septic")):
         positions = d[f"case{i}_blob"]
@@ -571,6 +568,7 @@ def origin_particle_claim(d, power: int, septic: int, departure: float):
         if np.linalg.norm(positions[0, origin]) != 0.0:
             raise ValueError("the grid of Figure 7 has no particle at the origin")
         distance = np.linalg.norm(positions[:, origin], axis=-1)
+        radius = float(np.linalg.norm(positions[-1], axis=-1).max())
         times = d[f"case{i}_times"]
         left = times[np.argmax(distance > 0.1 * radius)] if np.any(distance > 0.1 * radius) else np.inf
         moves.append(float(distance.max() / radius))
@@ -579,7 +577,8 @@ def origin_particle_claim(d, power: int, septic: int, departure: float):
     return claim(c.at_least, "fig7.origin_particle", "7", "the grid particle at the origin sits at an unstable "
                  "balance: rounding moves it until it reaches the ring, which breaks up (the runs without it, "
                  "fig7.no_origin.*, test that this is what decides the end times): its largest distance from 0 over "
-                 f"the ring radius, smaller of the blob runs of the power kernels ({'; '.join(text)})", departure,
+                 f"the radius of the run's end state, smaller of the blob runs of the power kernels "
+                 f"({'; '.join(text)})", departure,
                  min(moves), published="n/a")
 
 
