@@ -22,7 +22,8 @@ EXPECTED_VERDICTS = read_verdicts(ROOT / "config" / "verdicts.yaml", "quick")
 # Claims whose measured values are timings, different on every run.
 TIMED = ("sticky.cost.", "sticky.beyond.ratio.", "sticky.beyond.cost.wall_time", "cross.fastest")
 
-pytestmark = pytest.mark.pipeline
+# One xdist worker runs this module (its quick run is a module fixture); the unit tests share the other cores.
+pytestmark = [pytest.mark.pipeline, pytest.mark.xdist_group("pipeline")]
 
 
 # What a clone holds besides the sources: never copied into the scratch repositories.

@@ -5,7 +5,7 @@ import pytest
 from scipy import integrate
 
 from particle_methods.ltp import B3, HAT, potential
-from particle_methods.ltp.kernels import convolutions, density_at
+from particle_methods.ltp.kernels import convolutions, density_at, far_series, shape_moments
 
 
 def power_integral(phi, lo, hi, t, p):
@@ -94,3 +94,17 @@ def test_far_particles_by_the_binomial_series_match_a_fine_gauss_rule(shape, a):
         expected_second += (a - 1) * np.sum(weights[:, None] * phi * np.abs(z) ** (a - 2), axis=(1, 2))
     assert np.max(np.abs(first - expected_first)) <= 1e-12 * np.max(np.abs(expected_first))
     assert np.max(np.abs(second - expected_second)) <= 1e-12 * np.max(np.abs(expected_second))
+
+
+def test_far_series_holds_the_binomial_coefficients_times_the_moments():
+    """far_series(a, mu)[term, row, m] = binom(q, m) mu_m with q = a - 1 (row 0) and a - 2 (row 1): the
+    coefficients the pair sums evaluate by Horner's rule, against scipy's binomial coefficients."""
+    from scipy.special import binom
+
+    moments = shape_moments(B3.breaks, B3.coefficients)
+    exponents = np.array([1.5, 2.5, 4.0])
+    series = far_series(exponents, moments)
+    m = np.arange(moments.size)
+    for term, a in enumerate(exponents):
+        np.testing.assert_allclose(series[term, 0], binom(a - 1.0, m) * moments, rtol=1e-13, atol=0)
+        np.testing.assert_allclose(series[term, 1], binom(a - 2.0, m) * moments, rtol=1e-13, atol=0)
