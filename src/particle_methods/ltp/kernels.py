@@ -22,7 +22,15 @@ with u = |d|, sigma = sign(d) and mu_m = int s^m phi(s) ds the moments of the sh
 a binomial series whose terms are at most |binom(q, m)| (r h_k / u)^m <= (r / (12 + r))^m (phi >= 0, so
 |mu_m| <= r^m): the FAR_MOMENTS = 16 terms (m = 0..15) leave about 3e-14 relative for the cubic
 B-spline (r = 2), with one power per pair instead of one per Gauss node (2 to 4 times faster).
-Terms with a = 2 need no pair sums: (c z) * rho_h and c * rho_h are moments.
+Terms with a = 2 need no pair sums: (c z) * rho_h and c * rho_h are moments. Nor do the other integer
+exponents 3 <= a <= POLYNOMIAL_MAX_EXPONENT: sign(z)|z|^{a-1} and |z|^{a-2} are the polynomials z^{a-1} and
+z^{a-2} for z > 0 and (-1)^a times them for z < 0. Written around the centre of mass c0, with t' = t - c0
+and E_k[y^l] = int phi(s) (x_k - c0 + h_k s)^l ds (binomial in the shape's moments mu_i), a particle
+whose support lies left of t contributes sum_l binom(n, l) t'^{n-l} (-1)^l omega_k E_k[y^l] (n = a - 1,
+a - 2), one right of t (-1)^a times that: for even a the sum over all particles (the moments of rho_h,
+O(N) once, O(1) per target), for odd a twice the sum over the particles left of t (prefix sums over the
+sorted right edges) minus the total, with the few particles whose support holds t integrated piece by
+piece instead (as above).
 Terms with a = 1, W = c|x| (the Newtonian potential in 1D), have W' = c sign(z) and the
 distributional W'' = 2c delta, so both convolutions are exact without piece integrals:
 (W' * rho_h)(t) = c (2 F_h(t) - M) with M = sum_k omega_k and F_h(t) = sum_k omega_k Phi((t - x_k)/h_k)
@@ -38,6 +46,7 @@ check that the results are finite.
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 from numba import prange
@@ -54,6 +63,9 @@ _RULES = [np.polynomial.legendre.leggauss(points) for _, points in GAUSS_TIERS]
 _FAR, _MIDDLE = GAUSS_TIERS[0][0], GAUSS_TIERS[1][0]
 #: A particle whose support lies beyond this many piece lengths from the target takes the binomial series.
 EXPANSION = _MIDDLE
+#: Integer exponents 3 <= a <= this take the moments of rho_h instead of pair sums (module docstring);
+#: higher powers of t' would cancel more in the expansion.
+POLYNOMIAL_MAX_EXPONENT = 6
 #: Terms of the binomial series (moments m = 0 .. FAR_MOMENTS - 1 of the shape).
 FAR_MOMENTS = 16
 _NO_MOMENTS = np.zeros(FAR_MOMENTS)  # for sums without power terms, which never read them
@@ -205,11 +217,59 @@ def _shape_cdf(s, breaks, pieces):
     return total
 
 
+@njit(inline="always")
+def _particle_pieces(d, width, a, breaks, pieces, buffer):
+    """int sign(z)|z|^{a-1} phi(s) ds and int |z|^{a-2} phi(s) ds, z = d - width s, piece by piece: the
+    exact antiderivatives on pieces near z = 0, Gauss-Legendre rules (GAUSS_TIERS) on the others."""
+    pair_first = 0.0
+    pair_second = 0.0
+    for j in range(pieces.shape[0]):
+        lo = breaks[j]
+        hi = breaks[j + 1]
+        z_far = d - width * lo
+        z_near = d - width * hi
+        length = width * (hi - lo)
+        distance = max(z_near, -z_far)
+        if distance > _FAR * length:
+            p1, p2 = _piece_gauss(d, width, lo, hi, pieces[j], a, _NODES_FAR, _WEIGHTS_FAR)
+        elif distance > _MIDDLE * length:
+            p1, p2 = _piece_gauss(d, width, lo, hi, pieces[j], a, _NODES_MIDDLE, _WEIGHTS_MIDDLE)
+        elif distance > NEAR * length:
+            p1, p2 = _piece_gauss(d, width, lo, hi, pieces[j], a, _NODES_NEAR, _WEIGHTS_NEAR)
+        else:
+            p1, p2 = _piece_exact(d, width, lo, hi, pieces[j], a, buffer)
+        pair_first += p1
+        pair_second += p2
+    return pair_first, pair_second
+
+
+@njit
+def _expanded_power(t, moments, n):
+    """sum_l binom(n, l) t^{n-l} (-1)^l moments[l]: the sum of E[(t - y)^n] over the particles whose
+    moments moments[l] = sum omega_k E_k[y^l] are given."""
+    total = 0.0
+    binomial = 1.0
+    for power in range(n + 1):
+        term = binomial * moments[power] * t ** (n - power)
+        total += -term if power % 2 else term
+        binomial = binomial * (n - power) / (power + 1.0)
+    return total
+
+
+@njit
+def _is_polynomial(a):
+    """Whether the term with exponent a takes the moments of rho_h (an integer 3 <= a <= POLYNOMIAL_MAX_EXPONENT)."""
+    return 3.0 <= a <= POLYNOMIAL_MAX_EXPONENT and a == np.floor(a)
+
+
 @njit_threaded
 def _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, series, cumulative,
-                  density):
+                  density, polynomial):
     """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) at every target t_i; the terms with a = 1 from F_h and rho_h
-    at the targets (``cumulative``, ``density``, computed once by :func:`_cumulative_and_density`)."""
+    at the targets (``cumulative``, ``density``, computed once by :func:`_cumulative_and_density`), those
+    with integer 3 <= a <= POLYNOMIAL_MAX_EXPONENT from the moments of :func:`_polynomial_moments`
+    (``polynomial``)."""
+    origin, rows, totals, prefix, right_edges, right_sorted, order, sorted_centres = polynomial
     first = np.zeros(targets.size)
     second = np.zeros(targets.size)
     total_mass = 0.0
@@ -220,6 +280,7 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
     longest = 0.0
     for j in range(pieces.shape[0]):
         longest = max(longest, breaks[j + 1] - breaks[j])
+    reach = max(breaks[-1], -breaks[0]) * widths.max()
     for i in prange(targets.size):
         buffer = np.empty(4)
         f = 0.0
@@ -239,6 +300,27 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
                 continue
             term_first = 0.0
             term_second = 0.0
+            if _is_polynomial(a):
+                n = int(a) - 1
+                shifted = targets[i] - origin
+                term_first = _expanded_power(shifted, totals, n)
+                term_second = _expanded_power(shifted, totals, n - 1)
+                if n % 2 == 0:  # odd a: the particles right of t enter with the sign flipped
+                    left = np.searchsorted(right_sorted, targets[i], side="right")
+                    term_first = 2.0 * _expanded_power(shifted, prefix[left], n) - term_first
+                    term_second = 2.0 * _expanded_power(shifted, prefix[left], n - 1) - term_second
+                    for m in range(np.searchsorted(sorted_centres, targets[i] - reach),
+                                   np.searchsorted(sorted_centres, targets[i] + reach, side="right")):
+                        k = order[m]
+                        d = targets[i] - centres[k]
+                        if right_edges[k] > targets[i] and d > widths[k] * breaks[0]:
+                            # t inside the support (the test of the prefix sums: counted right of t): exact instead
+                            p1, p2 = _particle_pieces(d, widths[k], a, breaks, pieces, buffer)
+                            term_first += weights[k] * p1 + _expanded_power(shifted, rows[k], n)
+                            term_second += weights[k] * p2 + _expanded_power(shifted, rows[k], n - 1)
+                f += c * term_first
+                s2 += c * (a - 1.0) * term_second
+                continue
             for k in range(centres.size):
                 d = targets[i] - centres[k]
                 width = widths[k]
@@ -247,32 +329,40 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
                     term_first += weights[k] * p1
                     term_second += weights[k] * p2
                     continue
-                pair_first = 0.0
-                pair_second = 0.0
-                for j in range(pieces.shape[0]):
-                    lo = breaks[j]
-                    hi = breaks[j + 1]
-                    z_far = d - width * lo
-                    z_near = d - width * hi
-                    length = width * (hi - lo)
-                    distance = max(z_near, -z_far)
-                    if distance > _FAR * length:
-                        p1, p2 = _piece_gauss(d, width, lo, hi, pieces[j], a, _NODES_FAR, _WEIGHTS_FAR)
-                    elif distance > _MIDDLE * length:
-                        p1, p2 = _piece_gauss(d, width, lo, hi, pieces[j], a, _NODES_MIDDLE, _WEIGHTS_MIDDLE)
-                    elif distance > NEAR * length:
-                        p1, p2 = _piece_gauss(d, width, lo, hi, pieces[j], a, _NODES_NEAR, _WEIGHTS_NEAR)
-                    else:
-                        p1, p2 = _piece_exact(d, width, lo, hi, pieces[j], a, buffer)
-                    pair_first += p1
-                    pair_second += p2
-                term_first += weights[k] * pair_first
-                term_second += weights[k] * pair_second
+                p1, p2 = _particle_pieces(d, width, a, breaks, pieces, buffer)
+                term_first += weights[k] * p1
+                term_second += weights[k] * p2
             f += c * term_first
             s2 += c * (a - 1.0) * term_second
         first[i] = f
         second[i] = s2
     return first, second
+
+
+def _polynomial_moments(centres, weights, widths, breaks, moments, count, odd):
+    """What :func:`_convolutions` needs for its terms with integer 3 <= a <= POLYNOMIAL_MAX_EXPONENT (module
+    docstring), ``count`` the largest such a: the centre of mass c0; every particle's omega_k E_k[y^l], (N, L),
+    and their sums over all particles, (L,), for l < L = count; if a term has an ``odd`` exponent, their
+    prefix sums over the particles sorted by right edge x_k + h_k r, (N + 1, L), the right edges (the kernel
+    tests a particle against t with the very numbers the prefix sums were sorted by: a particle whose
+    support ends at t counts left of t in both), the sorted right edges, the order of the centres and the
+    sorted centres (else empty arrays)."""
+    origin = float(np.dot(weights, centres) / weights.sum())
+    shifted = centres - origin
+    rows = np.zeros((centres.size, count))
+    for power in range(count):
+        for i in range(power + 1):
+            rows[:, power] += math.comb(power, i) * moments[i] * shifted ** (power - i) * widths**i
+    rows *= weights[:, None]
+    totals = rows.sum(axis=0)
+    if not odd:
+        return (origin, rows, totals, np.zeros((0, count)), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
+                np.zeros(0))
+    right = centres + breaks[-1] * widths
+    by_right = np.argsort(right, kind="stable")
+    prefix = np.concatenate([np.zeros((1, count)), np.cumsum(rows[by_right], axis=0)])
+    order = np.argsort(centres, kind="stable")
+    return origin, rows, totals, prefix, right, right[by_right], order, centres[order]
 
 
 @njit
@@ -337,20 +427,45 @@ def _cumulative_and_density_of(points, centres, weights, widths, breaks, pieces)
     return _cumulative_and_density(points, centres, weights, widths, breaks, pieces, order, by_right)
 
 
+@functools.lru_cache(maxsize=64)
+def _term_needs(exponents: bytes) -> tuple[bool, int, bool]:
+    """For the exponents of a potential's terms: whether a term takes pair sums, the largest exponent that
+    takes the moments of rho_h (0 if none; :func:`_is_polynomial`) and whether one of those is odd."""
+    exponents = np.frombuffer(exponents)
+    polynomial = [a for a in exponents if 3.0 <= a <= POLYNOMIAL_MAX_EXPONENT and a == math.floor(a)]
+    pairs = any(a not in (1.0, 2.0) and a not in polynomial for a in exponents)
+    return pairs, int(max(polynomial, default=0)), any(a % 2 == 1 for a in polynomial)
+
+
+@functools.lru_cache(maxsize=64)
+def _cached_far_series(exponents: bytes, moments: bytes) -> np.ndarray:
+    """:func:`far_series`, computed once per potential and shape (the time loops ask at every step)."""
+    return far_series(np.frombuffer(exponents), np.frombuffer(moments))
+
+
+_NO_SERIES = np.zeros((0, 2, FAR_MOMENTS))  # for potentials without pair sums, which never read it
+_NO_POLYNOMIAL = (0.0, np.zeros((0, 1)), np.zeros(1), np.zeros((0, 1)), np.zeros(0), np.zeros(0),
+                  np.zeros(0, dtype=np.int64), np.zeros(0))
+
+
 def convolution_sums(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
     """(W' * rho_h)(t_i) and (W'' * rho_h)(t_i) for arrays already checked (by :func:`convolutions`, or
     once before the time loop of :func:`particle_methods.ltp.solver.simulate`, which checks every step's
-    results): the terms with a = 1 from F_h and rho_h (:func:`_cumulative_and_density`), the others by
-    the pair sums of :func:`_convolutions`."""
+    results): the terms with a = 1 from F_h and rho_h (:func:`_cumulative_and_density`), those with an
+    integer 3 <= a <= POLYNOMIAL_MAX_EXPONENT from the moments of rho_h (:func:`_polynomial_moments`), the
+    others by the pair sums of :func:`_convolutions`."""
+    pairs, largest, odd = _term_needs(exponents.tobytes())
     with threads_for(targets.size, PARALLEL_MIN_TARGETS):
         if np.any(exponents == 1.0):
             cumulative, density = _cumulative_and_density_of(targets, centres, weights, widths, breaks, pieces)
         else:
             cumulative = density = targets
-        moments = shape_moments(breaks, pieces) if np.any((exponents != 1.0) & (exponents != 2.0)) else _NO_MOMENTS
-        series = far_series(exponents, moments)
+        moments = shape_moments(breaks, pieces) if pairs or largest else _NO_MOMENTS
+        series = _cached_far_series(exponents.tobytes(), moments.tobytes()) if pairs else _NO_SERIES
+        polynomial = (_polynomial_moments(centres, weights, widths, breaks, moments, largest, odd) if largest
+                      else _NO_POLYNOMIAL)
         return _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, series,
-                             cumulative, density)
+                             cumulative, density, polynomial)
 
 
 OVERFLOW = "overflow: the particles are too narrow or too far from the points for double precision"
