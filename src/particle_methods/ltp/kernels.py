@@ -269,7 +269,7 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
     at the targets (``cumulative``, ``density``, computed once by :func:`_cumulative_and_density`), those
     with integer 3 <= a <= POLYNOMIAL_MAX_EXPONENT from the moments of :func:`_polynomial_moments`
     (``polynomial``)."""
-    origin, rows, totals, prefix, right_edges, right_sorted, order, sorted_centres = polynomial
+    origin, rows, totals, prefix, right_edges, left_counts, window_starts, window_stops, order = polynomial
     first = np.zeros(targets.size)
     second = np.zeros(targets.size)
     total_mass = 0.0
@@ -280,7 +280,6 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
     longest = 0.0
     for j in range(pieces.shape[0]):
         longest = max(longest, breaks[j + 1] - breaks[j])
-    reach = max(breaks[-1], -breaks[0]) * widths.max()
     for i in prange(targets.size):
         buffer = np.empty(4)
         f = 0.0
@@ -306,11 +305,10 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
                 term_first = _expanded_power(shifted, totals, n)
                 term_second = _expanded_power(shifted, totals, n - 1)
                 if n % 2 == 0:  # odd a: the particles right of t enter with the sign flipped
-                    left = np.searchsorted(right_sorted, targets[i], side="right")
-                    term_first = 2.0 * _expanded_power(shifted, prefix[left], n) - term_first
-                    term_second = 2.0 * _expanded_power(shifted, prefix[left], n - 1) - term_second
-                    for m in range(np.searchsorted(sorted_centres, targets[i] - reach),
-                                   np.searchsorted(sorted_centres, targets[i] + reach, side="right")):
+                    left = prefix[left_counts[i]]
+                    term_first = 2.0 * _expanded_power(shifted, left, n) - term_first
+                    term_second = 2.0 * _expanded_power(shifted, left, n - 1) - term_second
+                    for m in range(window_starts[i], window_stops[i]):
                         k = order[m]
                         d = targets[i] - centres[k]
                         if right_edges[k] > targets[i] and d > widths[k] * breaks[0]:
@@ -339,14 +337,16 @@ def _convolutions(targets, centres, weights, widths, coefficients, exponents, br
     return first, second
 
 
-def _polynomial_moments(centres, weights, widths, breaks, moments, count, odd):
+def _polynomial_moments(targets, centres, weights, widths, breaks, moments, count, odd):
     """What :func:`_convolutions` needs for its terms with integer 3 <= a <= POLYNOMIAL_MAX_EXPONENT (module
     docstring), ``count`` the largest such a: the centre of mass c0; every particle's omega_k E_k[y^l], (N, L),
-    and their sums over all particles, (L,), for l < L = count; if a term has an ``odd`` exponent, their
-    prefix sums over the particles sorted by right edge x_k + h_k r, (N + 1, L), the right edges (the kernel
-    tests a particle against t with the very numbers the prefix sums were sorted by: a particle whose
-    support ends at t counts left of t in both), the sorted right edges, the order of the centres and the
-    sorted centres (else empty arrays)."""
+    and their sums over all particles, (L,), for l < L = count. If a term has an ``odd`` exponent, also their
+    prefix sums over the particles sorted by right edge x_k + h_k r, (N + 1, L); the right edges (the kernel
+    tests a particle against t with the very numbers the prefix sums were sorted by: a support ending at t
+    counts left of t in both); for every target the number of right edges at or left of it and the window
+    [start, stop) of the centres sorted by ``order`` within r max h_k of it, where every support holding the
+    target lies (else empty arrays). NumPy sorts and searches here: compiled, they would cost every cold
+    process their compilation."""
     origin = float(np.dot(weights, centres) / weights.sum())
     shifted = centres - origin
     rows = np.zeros((centres.size, count))
@@ -356,13 +356,17 @@ def _polynomial_moments(centres, weights, widths, breaks, moments, count, odd):
     rows *= weights[:, None]
     totals = rows.sum(axis=0)
     if not odd:
-        return (origin, rows, totals, np.zeros((0, count)), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.int64),
-                np.zeros(0))
+        none = np.zeros(0, dtype=np.int64)
+        return origin, rows, totals, np.zeros((0, count)), np.zeros(0), none, none, none, none
     right = centres + breaks[-1] * widths
     by_right = np.argsort(right, kind="stable")
     prefix = np.concatenate([np.zeros((1, count)), np.cumsum(rows[by_right], axis=0)])
     order = np.argsort(centres, kind="stable")
-    return origin, rows, totals, prefix, right, right[by_right], order, centres[order]
+    reach = max(breaks[-1], -breaks[0]) * widths.max()
+    sorted_centres = centres[order]
+    return (origin, rows, totals, prefix, right, np.searchsorted(right[by_right], targets, side="right"),
+            np.searchsorted(sorted_centres, targets - reach), np.searchsorted(sorted_centres, targets + reach,
+                                                                             side="right"), order)
 
 
 @njit
@@ -444,8 +448,8 @@ def _cached_far_series(exponents: bytes, moments: bytes) -> np.ndarray:
 
 
 _NO_SERIES = np.zeros((0, 2, FAR_MOMENTS))  # for potentials without pair sums, which never read it
-_NO_POLYNOMIAL = (0.0, np.zeros((0, 1)), np.zeros(1), np.zeros((0, 1)), np.zeros(0), np.zeros(0),
-                  np.zeros(0, dtype=np.int64), np.zeros(0))
+_NO_POLYNOMIAL = (0.0, np.zeros((0, 1)), np.zeros(1), np.zeros((0, 1)), np.zeros(0),
+                  *(np.zeros(0, dtype=np.int64),) * 4)
 
 
 def convolution_sums(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
@@ -462,8 +466,8 @@ def convolution_sums(targets, centres, weights, widths, coefficients, exponents,
             cumulative = density = targets
         moments = shape_moments(breaks, pieces) if pairs or largest else _NO_MOMENTS
         series = _cached_far_series(exponents.tobytes(), moments.tobytes()) if pairs else _NO_SERIES
-        polynomial = (_polynomial_moments(centres, weights, widths, breaks, moments, largest, odd) if largest
-                      else _NO_POLYNOMIAL)
+        polynomial = (_polynomial_moments(targets, centres, weights, widths, breaks, moments, largest, odd)
+                      if largest else _NO_POLYNOMIAL)
         return _convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces, series,
                              cumulative, density, polynomial)
 
