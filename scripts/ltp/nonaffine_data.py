@@ -7,7 +7,10 @@
     sum_k omega_k x_k over the run, at several h (not conserved by LTP for a non-quadratic W).
 (c) Theorem 4 under its own hypotheses: the same W, each run with dt = dt_over_h2 h^2, the L1 and Linf
     errors (p = inf is allowed for alpha = -1/2) against a run with h / reference_factor of the finest h
-    at the finest run's dt, largest over the record times; weights (2.14) (shape b3) and (2.16) (hat)."""
+    at the finest run's dt, largest over the record times; weights (2.14) (shape b3) and (2.16) (hat).
+(d) Theorem 3 (any initial measure, grad W in W^{1,inf}): rough data and W = |x|^a/a with a >= 2, each
+    run with dt = dt_over_h h, the W1 distance (L1 distance of the CDFs) to a run with h / reference_factor
+    of the finest h at its own dt, largest over the record times."""
 
 import numpy as np
 
@@ -50,6 +53,34 @@ def theorem4_errors(initial, w, grid, q):
     return out
 
 
+def theorem3_distances(q, grid_points):
+    """Largest W1 distance over the record times for each h (dt = dt_over_h h) to the reference (h_min /
+    reference_factor, its own dt), and the reference's distance to the run with twice its h (its own error)."""
+    initial = density_named(q["initial"])
+    w = potential("power", a=q["a"])
+    grid = np.linspace(initial.lower, initial.upper, grid_points)
+    h_values, times = np.asarray(q["h_values"], float), np.asarray(q["times"], float)
+    reference_h = h_values.min() / q["reference_factor"]
+
+    def cdfs(h):
+        dt = q["dt_over_h"] * h
+        progress(f"Theorem 3: {w.name} on {initial.name}, h = {h:g}, dt = {dt:g}, t = {times[-1]:g}")
+        sim = simulate(initial, w, h, dt, times[-1], record_every=int(round(times[0] / dt)))
+        recorded = np.array([np.argmin(np.abs(sim.times - t)) for t in times])
+        if not np.allclose(sim.times[recorded], times, rtol=0, atol=1e-9):
+            raise ValueError("the record times must be multiples of every run's dt")
+        return [sim.at(int(i)).cumulative_mass(grid) for i in recorded]
+
+    def distance(a, b):
+        return max(grid_errors(x, y, grid)[0] for x, y in zip(a, b))
+
+    reference = cdfs(reference_h)
+    return {"theorem3_h": h_values, "theorem3_dt": q["dt_over_h"] * h_values, "theorem3_times": times,
+            "theorem3_reference_h": reference_h, "theorem3_label": np.array(f"{w.name} on {initial.name}"),
+            "theorem3_distances": np.array([distance(cdfs(h), reference) for h in h_values]),
+            "theorem3_reference_gap": distance(cdfs(2 * reference_h), reference)}
+
+
 def run(p, output):
     initial = density_named(p["initial"])
     w = potential("power", a=p["a"])
@@ -73,7 +104,8 @@ def run(p, output):
         drifts.append(abs(sim.at(-1).centre_of_mass - sim.at(0).centre_of_mass))
         progress(f"{w_centre.name}: h = {h:g}: centre of mass drift {drifts[-1]:.3e}")
     theorem4 = theorem4_errors(initial, w, grid, p["theorem4"])
-    save_results(output, **theorem4, h_values=h_values, errors=errors, reference_h=reference_h,
+    theorem3 = theorem3_distances(p["theorem3"], p["grid_points"])
+    save_results(output, **theorem4, **theorem3, h_values=h_values, errors=errors, reference_h=reference_h,
                  reference_gap=reference_gap, order_points=p["order_points"], label=np.array(w.name), t=p["t"],
                  dt=p["dt"], grid=grid, reference=reference, centre_h=np.asarray(centre["h_values"], float),
                  centre_drift=np.array(drifts), centre_label=np.array(w_centre.name))

@@ -5,7 +5,7 @@ import pytest
 from scipy import integrate
 
 from particle_methods.ltp import B3, HAT, potential
-from particle_methods.ltp.kernels import convolutions, density_at, far_series, shape_moments
+from particle_methods.ltp.kernels import convolutions, density_at, far_series, shape_moments, takes_pair_sums
 
 
 def power_integral(phi, lo, hi, t, p):
@@ -148,3 +148,9 @@ def test_integer_exponents_on_a_grid_where_supports_end_at_the_targets(a):
                           B3.coefficients)
     for value, pairs in zip(exact, nearby):
         np.testing.assert_allclose(value, pairs, rtol=0, atol=1e-10 * np.abs(pairs).max())
+
+
+def test_which_potentials_take_pair_sums():
+    """The work limit of simulate counts N^2 pairs per step only for these (tests/ltp/test_ltp_safety.py)."""
+    assert not takes_pair_sums([1.0]) and not takes_pair_sums([2.0]) and not takes_pair_sums([3.0, 4.0, 6.0])
+    assert takes_pair_sums([3.0, 2.5]) and takes_pair_sums([1.5]) and takes_pair_sums([7.0])

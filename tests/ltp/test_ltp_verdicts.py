@@ -146,23 +146,30 @@ def test_thm1_dt_order_check_fails_for_a_second_order_time_error():
 # Non-affine flow
 
 
-def nonaffine(power=1.3, theorem4_power=1.0, biorthogonal_power=1.0, theorem4_gap=0.1):
+def nonaffine(power=1.3, theorem4_power=1.0, biorthogonal_power=1.0, theorem4_gap=0.1, theorem3_power=1.0,
+              theorem3_gap=0.1):
     """The non-affine study at orders ``power`` (our dt) and, for Theorem 4 (dt = h^2/4), ``theorem4_power``
     with the weights (2.14) and ``biorthogonal_power`` with (2.16); the reference gaps ``theorem4_gap`` of
-    the smallest error."""
+    the smallest error; for Theorem 3 (dt = h/4) the W1 order ``theorem3_power``, its reference gap
+    ``theorem3_gap`` of the smallest distance."""
     h = np.array([0.08, 0.04, 0.02, 0.01])
     errors = np.column_stack([h**power, 3 * h**power])
     centre_h = np.array([0.04, 0.02, 0.01, 0.005])
     h4 = np.array([0.2, 0.1, 0.05])
     cell = np.column_stack([h4**theorem4_power, 2 * h4**theorem4_power])
     biorthogonal = np.column_stack([h4**biorthogonal_power, 2 * h4**biorthogonal_power])
+    h3 = np.array([0.04, 0.02, 0.01])
+    distances = 0.3 * h3**theorem3_power
     return {"order_points": 3, "h_values": h, "errors": errors, "label": "|x|^1.5/1.5", "reference_h": 0.0025,
             "dt": 2e-3, "reference_gap": 0.1 * errors[-1], "centre_h": centre_h, "centre_drift": 0.5 * centre_h**2,
             "centre_label": "|x|^3/3 - |x|^2.5/2.5", "t": 0.5, "theorem4_h": h4, "theorem4_dt": 0.25 * h4**2,
             "theorem4_times": np.array([0.1, 0.2, 0.3, 0.4, 0.5]), "theorem4_reference_h": 0.0125,
             "theorem4_weights": np.array(["cell", "biorthogonal"]), "theorem4_cell_errors": cell,
             "theorem4_biorthogonal_errors": biorthogonal, "theorem4_cell_reference_gap": theorem4_gap * cell[-1],
-            "theorem4_biorthogonal_reference_gap": theorem4_gap * biorthogonal[-1]}
+            "theorem4_biorthogonal_reference_gap": theorem4_gap * biorthogonal[-1], "theorem3_h": h3,
+            "theorem3_dt": 0.25 * h3, "theorem3_times": np.array([0.1, 0.2, 0.3, 0.4, 0.5]),
+            "theorem3_reference_h": 0.00125, "theorem3_label": "|x|^3/3 on rho2", "theorem3_distances": distances,
+            "theorem3_reference_gap": theorem3_gap * distances[-1]}
 
 
 @pytest.mark.parametrize("weights", ["cell", "biorthogonal"])
@@ -178,6 +185,18 @@ def test_theorem4_order_below_one_fails_for_either_weights(weights):
 def test_theorem4_reference_check_fails_when_the_reference_is_as_far_as_the_errors():
     claims = v.nonaffine_claims(nonaffine(theorem4_gap=1.0), quiet(), NONAFFINE, RULES)
     assert status(claims, "thm4.reference") == "fail"
+
+
+def test_theorem3_order_below_one_fails():
+    """A W1 (bounded-Lipschitz) order of 0.8, as a dt^(0.8) time error or a rough-data error of h^0.8 would give."""
+    claims = v.nonaffine_claims(nonaffine(theorem3_power=0.8), quiet(), NONAFFINE, RULES)
+    assert status(claims, "thm3.order_w1") == "fail"
+    assert status(claims, "thm4.order_l1_cell") == "pass"
+
+
+def test_theorem3_reference_check_fails_when_the_reference_is_half_as_far_as_the_errors():
+    claims = v.nonaffine_claims(nonaffine(theorem3_gap=0.5), quiet(), NONAFFINE, RULES)
+    assert status(claims, "thm3.reference") == "fail"
 
 
 def test_nonaffine_claims_pass_on_an_order_above_one():
@@ -464,7 +483,7 @@ COVERED = {
     "fig6.b2.5_concentrates", "fig6.b2.5_dirac_mass", "fig6.b1.5_steady", "fig6.b1.5_profile", "fig6.b1.5_edges",
     "fig7.concentrates", "fig7.dirac_mass", "fig8.sp_steady", "fig8.ltp_steady", "fig8.sp_oscillates",
     "fig8.ltp_smooth", "fig8.shifted.ltp_steady", "fig8.shifted.ltp_smooth", "thm4.order_l1_cell",
-    "thm4.order_linf_cell", "thm4.order_l1_biorthogonal", "thm4.order_linf_biorthogonal",
+    "thm4.order_linf_cell", "thm4.order_l1_biorthogonal", "thm4.order_linf_biorthogonal", "thm3.order_w1",
 }
 
 

@@ -441,6 +441,12 @@ def _term_needs(exponents: bytes) -> tuple[bool, int, bool]:
     return pairs, int(max(polynomial, default=0)), any(a % 2 == 1 for a in polynomial)
 
 
+def takes_pair_sums(exponents) -> bool:
+    """Whether a potential with these exponents needs the O(N^2) pair sums (an exponent other than 1, 2 and
+    the integers 3 <= a <= POLYNOMIAL_MAX_EXPONENT, which :func:`convolution_sums` takes in O(N log N))."""
+    return _term_needs(np.ascontiguousarray(exponents, dtype=np.float64).tobytes())[0]
+
+
 @functools.lru_cache(maxsize=64)
 def _cached_far_series(exponents: bytes, moments: bytes) -> np.ndarray:
     """:func:`far_series`, computed once per potential and shape (the time loops ask at every step)."""

@@ -31,7 +31,7 @@ from ..validation import (
 )
 from .checks import particle_arrays
 from .initial import InitialDensity, density_named, grid_particles
-from .kernels import OVERFLOW, convolution_sums, convolutions, cumulative_mass_at, density_at
+from .kernels import OVERFLOW, convolution_sums, convolutions, cumulative_mass_at, density_at, takes_pair_sums
 from .potentials import Potential
 from .shapes import Shape, shape_named
 
@@ -183,8 +183,8 @@ def _step_count(t_final: float, dt: float) -> int:
 
 def _check_work(steps: int, count: int, potential: Potential, records: int):
     """Refuse a run beyond MAX_PAIRS pair interactions or MAX_RECORDED values per recorded array
-    (a potential with only quadratic terms needs no pair sums, see :mod:`.kernels`)."""
-    pairs = (steps + 1) * count * (1 if set(potential.exponents) == {2.0} else count)
+    (a potential whose exponents need no pair sums, :func:`.kernels.takes_pair_sums`, counts one per particle)."""
+    pairs = (steps + 1) * count * (count if takes_pair_sums(potential.exponents) else 1)
     if pairs > MAX_PAIRS:
         raise ValueError(f"{steps} steps of {count} particles need {pairs:.3g} pair interactions, beyond the limit "
                          f"MAX_PAIRS = {MAX_PAIRS:.3g} of one run: increase h or dt, or reduce t_final")

@@ -147,6 +147,7 @@ def nonaffine_claims(d, rates: Recorder, p, rules):
                          f"{float(d['dt']):g} (above h^2 at every h here: the common time error cancels), at least "
                          f"first order; slope on the {k} finest h", 1.0, slope, published=">= 1"))
     out += theorem4_claims(d, rates, p, rules)
+    out += theorem3_claims(d, rates, p, rules)
     share = float((d["reference_gap"] / d["errors"][-1]).max())
     out.append(claim(c.at_most, "nonaffine.reference", "check", "our reference for the non-affine study", "(ours)",
                      "the reference's own error is small: its distance to a run with twice its h over the smallest "
@@ -183,6 +184,28 @@ def theorem4_claims(d, rates: Recorder, p, rules):
                      "the reference's own error is small: its distance to the run with twice its h (same dt) over the "
                      "smallest measured error, largest over L1, Linf and both weights", p["reference_share"],
                      max(shares)))
+    return out
+
+
+def theorem3_claims(d, rates: Recorder, p, rules):
+    """Theorem 3 (any initial probability measure, grad W in W^{1,inf}): the bounded-Lipschitz distance at most
+    C (d_BL(rho^0, rho_h^0) + h + dt), measured as W1 (within a factor 2 of d_BL on [-1, 1]) with dt
+    proportional to h; and the reference's own error."""
+    h, distances = d["theorem3_h"], d["theorem3_distances"]
+    q = p["theorem3"]
+    slope = rates.add(order(f"{PAPER}.thm3.order_w1", "h", h, distances, h.size))
+    out = [claim(c.at_least, "thm3.order_w1", "paper", "Theorem 3", "(ours)",
+                 f"max_n d_BL(rho^n, rho_h^n) <= C (d_BL(rho^0, rho_h^0) + h + dt) for any initial measure: "
+                 f"{d['theorem3_label']} (rough data; W'' bounded on [-1, 1], where the flow keeps the mass), dt = "
+                 f"{float(q['dt_over_h']):g} h at h = {', '.join(f'{v:g}' for v in h)}, W1 distance to h = "
+                 f"{float(d['theorem3_reference_h']):g} (d_BL <= W1 <= 2 d_BL there), largest over t = "
+                 f"{', '.join(f'{v:g}' for v in d['theorem3_times'])}; order on every h, at least 1 - "
+                 f"{rules['theorem3_tolerance']:g}", 1.0 - float(rules["theorem3_tolerance"]), slope,
+                 published="O(h + dt)")]
+    out.append(claim(c.at_most, "thm3.reference", "check", "our reference for Theorem 3", "(ours)",
+                     "the reference's own error is small: its W1 distance to the run with twice its h over the "
+                     "smallest measured distance", p["reference_share"],
+                     float(d["theorem3_reference_gap"] / distances[-1])))
     return out
 
 
