@@ -3,7 +3,10 @@
 Every step is recorded, for the collapse measure of Figure 5 (the smallest particle width and the
 spread of the centres at every step). Figure 6 runs continue past the figure's final time to
 ``t_long`` with the same time step, for the concentration measures (width holding a fraction of
-each side's mass, mass near each side's peak, density at the edge over the centre)."""
+each side's mass, mass near each side's peak, density at the edge over the centre). Figure 6's case
+``edge_refinement["b"]`` runs again at the coarser ``edge_refinement["h_values"]`` (same dt and final time):
+the largest density at the centres at every record, with the widths of the concentration measure that
+date its steady state, at every h (the figure's included)."""
 
 import numpy as np
 
@@ -16,6 +19,13 @@ def case_potential(p, case):
     if "b" in case:
         return potential("attractive_repulsive", a=p["a"], b=case["b"])
     return potential("power", a=case["a"])
+
+
+def edge_series(sim, concentration):
+    """Largest density at the centres and the concentration widths, at every record of ``sim``."""
+    peaks = [sim.at(i).density(sim.at(i).centres).max() for i in range(sim.steps.size)]
+    widths, _ = concentration_series(sim, concentration["fraction"], concentration["radius"])
+    return np.array(peaks), widths
 
 
 def run(p, concentration, output):
@@ -49,6 +59,16 @@ def run(p, concentration, output):
                             f"{prefix}_edge_ratio": edge_ratio})
             progress(f"  t = {t_end:g}: widths holding {concentration['fraction']:g} of each side "
                      f"{widths[-1]}, mass within {concentration['radius']:g} of the peaks {masses[-1].sum():.4g}")
+        refinement = p.get("edge_refinement")
+        if refinement is not None and case.get("b") == refinement["b"]:
+            runs = {p["h"]: sim}
+            for h in refinement["h_values"]:
+                progress(f"{w.name}: edge refinement, h = {h:g}, {steps} steps of {dt:g}")
+                runs[h] = simulate(initial, w, h, dt, steps * dt, record_every=1, log=None)
+            edge_h = np.array(sorted(runs, reverse=True))
+            peaks, widths = zip(*(edge_series(runs[h], concentration) for h in edge_h))
+            results.update({"edge_h": edge_h, "edge_peaks": np.array(peaks), "edge_widths": np.array(widths),
+                            "edge_case": index})
     results["labels"] = np.array(results["labels"])
     save_results(output, grid=grid, x_potential=x_potential, h=p["h"], steps=p["steps"], **results)
 

@@ -110,7 +110,8 @@ RESULTS = (
         Job("LTP and SP with hat and B3 shapes for W = x^2/2 (Figure 4)", lambda s: {"cfg": s["fig4"]}),
     ),
     _rows_result("fig5"),
-    _rows_result("fig6", ("case*_concentration_widths", "case*_concentration_masses", "case*_edge_ratio")),
+    _rows_result("fig6", ("case*_concentration_widths", "case*_concentration_masses", "case*_edge_ratio", "edge_h",
+                          "edge_peaks", "edge_widths", "edge_case")),
     Result(
         "results/ltp/fig7.npz",
         "fig7_data.py",
