@@ -449,10 +449,16 @@ def test_fig8_shifted_ltp_centres_that_keep_moving_are_not_steady():
     assert status(claims, "fig8.shifted.ltp_steady") == "fail"
 
 
-def test_fig8_shifted_ltp_ripples_at_the_last_record_are_not_smooth():
-    shifted = [SMOOTH] * T8.size
-    shifted[-1] = OSCILLATING
-    assert status(v.fig8_claims(fig8(shifted=shifted), FIG8, RULES), "fig8.shifted.ltp_smooth") == "fail"
+def test_fig8_shifted_ltp_ripples_at_its_stationary_state_are_not_smooth():
+    """The paper speaks of the stationary state: ripples from the steady time on fail, ripples at the last record
+    only (where collapsed clusters pass below the sampling) do not decide, and a run that never settles fails."""
+    at = int(np.argmin(np.abs(T8 - steady(SETTLED_CENTRES))))
+    rippled = [SMOOTH] * at + [OSCILLATING] * (T8.size - at)
+    assert status(v.fig8_claims(fig8(shifted=rippled), FIG8, RULES), "fig8.shifted.ltp_smooth") == "fail"
+    last = [SMOOTH] * (T8.size - 1) + [OSCILLATING]
+    assert status(v.fig8_claims(fig8(shifted=last), FIG8, RULES), "fig8.shifted.ltp_smooth") == "pass"
+    moving = v.fig8_claims(fig8(shifted_centres=MOVING_CENTRES), FIG8, RULES)
+    assert status(moving, "fig8.shifted.ltp_smooth") == "fail"
 
 
 def test_fig8_sp_centres_that_keep_moving_are_not_steady():
