@@ -123,3 +123,25 @@ def test_the_p_system_formula_path_gives_the_checked_primitive_bit_for_bit(case)
     assert np.array_equal(fast, mspd_positions(x, _Delegate(system), 0.05, 40))
     # Every step: d^2 n rank entries, then n pushes and at most n - 1 merges per type.
     assert 40 * (4 * 60 + 2 * 60) <= operations <= 40 * (4 * 60 + 2 * (2 * 60 - 1))
+
+
+class _PythonPath(PSystem):
+    """A PSystem subclass: mspd_positions takes the Python time loop for it (the compiled one is PSystem's own)."""
+
+
+@pytest.mark.parametrize("case, x0, n, steps", [("rarefaction", 0.1, 40, 40), ("shocks", -4.0, 64, 31),
+                                                ("shocks", -4.0, 7, 200)])
+def test_compiled_tspd_steps_are_the_python_steps_to_the_bit(case, x0, n, steps):
+    """The p-system's compiled steps (mspd._tspd_psystem_kernel) give the Python loop's positions and operation
+    counts exactly, for even and odd numbers of steps, through collisions and crossings."""
+    x = psystem_initial_configuration(case, x0, n)
+    compiled = mspd_positions(x, SYSTEM, 2.0 / steps, steps, return_operations=True)
+    python = mspd_positions(x, _PythonPath(), 2.0 / steps, steps, return_operations=True)
+    assert np.array_equal(compiled[0], python[0]) and compiled[1] == python[1]
+
+
+def test_compiled_tspd_refuses_a_reach_that_could_overflow_as_the_python_loop_does():
+    x = psystem_initial_configuration("shocks", -4.0, 10)
+    for system in (SYSTEM, _PythonPath()):
+        with pytest.raises(ValueError, match=r"x \+ Delta velocities may overflow"):
+            mspd_positions(x, system, 1e306, 2)

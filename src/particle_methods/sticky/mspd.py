@@ -21,15 +21,17 @@ from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
 
 from ..jit import njit
 from ..systems import MINUS, PLUS, PSystem, checked_primitive, checked_system, speed_primitive_formula
 from ..validation import ParameterTypeError, instance, integer_at_least, positive, sorted_array
-from .spd import MAX_POSITIONS, check_reach, hull_operations, hull_positions_kernel
+from .spd import LARGEST, MAX_POSITIONS, check_reach, hull_operations, hull_positions_kernel
 
-#: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms
-#: (Python calls of the system), so 10**6 steps take one to two minutes. The figures take at most 10**4.
+#: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms on the Python
+#: path (calls of the system; a PSystem's compiled steps about 10 us), so 10**6 steps take at most one to two
+#: minutes. The figures take at most 10**4.
 MAX_STEPS = 10**6
 
 #: Largest n d^2 L (rank entries over L steps, the O(n d^2) cost per step of section 5.2.1) one
@@ -154,6 +156,90 @@ def _tspd_step(x, system, delta, out) -> int:
     return operations
 
 
+#: Status of :func:`_tspd_psystem_kernel`: all steps taken, velocities not finite, free positions beyond the reach
+#: :func:`~.spd.check_reach` allows.
+_DONE, _NOT_FINITE, _TOO_FAR = 0, 1, 2
+
+
+def _psystem_primitives(spreads, a, coefficient, primitives):
+    """primitives = coefficient atan(sinh(a spreads)) by NumPy (:func:`speed_primitive_formula`, as the Python
+    path evaluates it), so that the compiled steps give the Python path's numbers to the last bit."""
+    primitives[:] = speed_primitive_formula(spreads, a, coefficient)
+
+
+@njit(nogil=False)  # it takes the GIL for NumPy at every step
+def _tspd_psystem_kernel(x, out, delta, steps, a, coefficient, spreads, primitives, velocities, report):
+    """The steps of :func:`mspd_positions` for the p-system (d = 2), compiled, on checked input: each step is
+    :func:`_tspd_step`'s, operation for operation (ranks, levels k/n, the primitive of (5.7) at the upper and
+    lower levels of both types by NumPy in one object-mode call, velocities n (P(upper) - P(lower)), the finite
+    and reach checks, the two hull passes). ``x`` and ``out`` (2, n) alternate as current and next state;
+    ``spreads`` and ``primitives`` (4, n) and ``velocities`` (2, n) are scratch. Returns :data:`_DONE` with
+    ``report`` = (operations, index of the array holding the result), or a failure status with ``report`` =
+    (the step, the speed or reach that failed) for the caller to raise."""
+    d, n = x.shape
+    step_of_n = 1.0 / n
+    limit = LARGEST / max(float(n), 1.0) ** 2
+    current, following = x, out
+    operations = 0
+    for step in range(steps):
+        counts = ranks_kernel(current)
+        for gamma in range(d):
+            for k in range(n):
+                plus, minus = counts[gamma, k, PLUS] / n, counts[gamma, k, MINUS] / n
+                spreads[2 * gamma, k] = plus - minus
+                if gamma == PLUS:
+                    spreads[2 * gamma + 1, k] = (plus - step_of_n) - minus
+                else:
+                    spreads[2 * gamma + 1, k] = plus - (minus - step_of_n)
+        with numba.objmode():
+            _psystem_primitives(spreads, a, coefficient, primitives)
+        speed = 0.0
+        for gamma in range(d):
+            for k in range(n):
+                velocities[gamma, k] = n * (primitives[2 * gamma, k] - primitives[2 * gamma + 1, k])
+                speed = max(speed, abs(velocities[gamma, k])) if np.isfinite(velocities[gamma, k]) else np.inf
+        if not np.isfinite(speed):
+            report[0], report[1] = step, speed
+            return _NOT_FINITE
+        largest = 0.0
+        for g in range(d):
+            largest = max(largest, abs(current[g, 0]), abs(current[g, n - 1]))
+        reach = largest + delta * speed
+        if not reach <= limit:
+            report[0], report[1] = step, reach
+            return _TOO_FAR
+        operations += d * d * n
+        for gamma in range(d):
+            clusters = hull_positions_kernel(current[gamma], velocities[gamma], delta, following[gamma])
+            operations += 2 * n - clusters
+        current, following = following, current
+    report[0], report[1] = operations, 0.0 if steps % 2 == 0 else 1.0
+    return _DONE
+
+
+def _compiled_tspd(system) -> bool:
+    """True for a :class:`PSystem` itself (not a subclass): :func:`mspd_positions` then runs its steps compiled."""
+    return type(system) is PSystem and system.d == 2
+
+
+def _tspd_psystem(x0, system, delta, steps):
+    """:func:`mspd_positions`' steps by :func:`_tspd_psystem_kernel`, with :func:`_tspd_step`'s errors."""
+    n = x0.shape[1]
+    buffers = [x0.copy(), np.empty_like(x0)]
+    spreads, primitives = np.empty((2, 4, n))
+    velocities = np.empty((2, n))
+    report = np.zeros(2)
+    status = _tspd_psystem_kernel(buffers[0], buffers[1], delta, steps, system.a, system.primitive_coefficient,
+                                  spreads, primitives, velocities, report)
+    if status == _NOT_FINITE:
+        raise ValueError("the velocities (1.8) are not finite: system.speed_primitive returned non-finite values, "
+                         "or values whose differences overflow")
+    if status == _TOO_FAR:
+        check_reach(buffers[int(report[0]) % 2], np.abs(velocities).max(), delta, "Delta", "velocities")
+        raise AssertionError("the compiled reach check and check_reach disagree")  # check_reach raised above
+    return buffers[int(report[1])], int(report[0])
+
+
 def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
     """Iterated TSPD: configurations at times 0, Delta, ..., steps*Delta, shape (steps+1, d, n)."""
     x0 = checked_configuration("x0", x0, system)
@@ -176,6 +262,9 @@ def mspd_positions(x0, system, delta: float, steps: int, return_operations: bool
     delta = positive("Delta", delta)
     steps = _checked_steps(steps, x0)
     return_operations = instance("return_operations", return_operations, (bool, np.bool_))
+    if _compiled_tspd(system):
+        current, operations = _tspd_psystem(x0, system, delta, steps)
+        return (current, operations) if return_operations else current
     current, following = x0.copy(), np.empty_like(x0)
     operations = 0
     for _ in range(steps):

@@ -51,7 +51,8 @@ MAX_POSITIONS = 10**8
 #: n 2^-1075 / 2^-501 on a mean).
 MAX_MASS_RATIO = 2.0**500
 
-_LARGEST = float(np.finfo(np.float64).max)
+#: The largest double: :func:`check_reach` keeps every sum of the hull passes below it.
+LARGEST = float(np.finfo(np.float64).max)
 
 
 @njit
@@ -175,7 +176,7 @@ def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: 
     total_mass = n if masses is None else float(masses.sum())
     with np.errstate(over="ignore"):
         reach = max(np.abs(x[..., 0]).max(), np.abs(x[..., -1]).max()) + t * speed
-    limit = _LARGEST / max(total_mass, 1.0) ** 2
+    limit = LARGEST / max(total_mass, 1.0) ** 2
     if not reach <= limit:
         raise ValueError(
             f"x + {time_name} {velocity_name} may overflow: |x| + {time_name} |{velocity_name}| reaches {reach:.3g}, "
