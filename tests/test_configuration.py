@@ -75,9 +75,26 @@ def edited(path, value):
         ("sticky.cost.hull_n", [100000, 1000000, 10**12], "beyond"),
         ("blob.fig4.inverse_h", [20, 40, 10**6], "1/h beyond"),
         ("ltp.quadratic.h_values", [0.1, 0.05, 1e-9], "h below"),
+        # ranges by the schema's meaning, whatever their key (issue 30: these three passed the dry run)
+        ("sticky.beyond.domain", [30.0, -30.0], "low < high"),
+        ("sticky.beyond.scalar.concave_laplace.domain", [40.0, -40.0], "low < high"),
+        ("cross.claims.spd_order", [1.1, 0.9], "low < high"),
+        ("ltp.fig5.collapse.windows", [[0.5, 0.25], [0.5, 0.75]], "low < high"),
+        ("ltp.quadratic.dt", 0.3, "not a whole number of steps"),
+        ("ltp.quadratic.dt_study.dt_values", [0.02, 0.01, 0.003], "not a whole number of steps"),
     ],
 )
 def test_a_meaningless_value_is_refused_naming_its_key(path, value, message):
     with pytest.raises(ValueError, match=re.escape(message)) as error:
         check_configuration(edited(path, value))
     assert path.rsplit(".", 1)[0] in str(error.value)
+
+
+def test_ranges_are_found_by_the_schema_not_by_the_key_name():
+    """Every [low, high] the schema declares (bands, domains, windows, zoom boxes) and no other list."""
+    from particle_replication.configuration import range_paths
+
+    ranges = {".".join(path) for path in range_paths()}
+    assert {"sticky.beyond.domain", "sticky.beyond.scalar.*.domain", "cross.claims.spd_order", "blob.fig1.zoom",
+            "ltp.fig5.collapse.windows.*", "sticky.cost.band"} <= ranges
+    assert not {"blob.fig5.inverse_h", "sticky.beyond.limit_n", "ltp.nonaffine.theorem3.h_values"} & ranges

@@ -599,3 +599,14 @@ def test_step_counts_are_returned_on_request():
                  lambda: godunov(BURGERS, u0, edges, t, return_steps=1)):
         with pytest.raises(TypeError, match="return_steps"):
             call()
+
+
+def test_hll_takes_data_at_the_ends_of_the_volume_range():
+    """u0 = 0 and u0 = nu are allowed (found by the fuzz of issue 30: the inverse of g at w+ - w- = -1 landed
+    5.6e-17 below 0 and u0 = 0 was refused as 'outside [0, nu]'); a state at rest stays at rest."""
+    system = PSystem()
+    edges = np.linspace(-1.0, 1.0, 11)
+    for level in (0.0, system.nu):
+        u, v = hll_psystem(system, np.full(10, level), np.zeros(10), edges, 0.1)
+        np.testing.assert_array_equal(u, level)
+        np.testing.assert_array_equal(v, 0.0)

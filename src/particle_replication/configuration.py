@@ -6,10 +6,13 @@ meaningless number hours later, with a ValueError naming the dotted key:
 
 - NaN or infinite numbers (YAML's ``.nan`` and ``.inf`` pass the schema's ``type: number``);
 - lists of resolutions, sizes or times that repeat a value or are not monotone (an order fitted
-  on repeated resolutions is meaningless), and ranges given backwards (``zoom``, ``*_band``,
-  fit windows, ``x_min`` above ``x_max``);
+  on repeated resolutions is meaningless), and ranges given backwards: every value the schema
+  declares a range (``$defs`` :data:`RANGE_DEFINITIONS`: bands, domains, windows, zoom boxes),
+  whatever its key is called, and ``x_min`` above ``x_max``;
 - fit windows longer than the list they are fitted on;
-- times beyond the ``t_max`` of their run;
+- times beyond the ``t_max`` of their run, and time steps that do not divide the final time of
+  their runs into a whole number of steps (:data:`WHOLE_STEPS`; the solver refuses them, but only once
+  the job runs);
 - sizes beyond what one run can compute (:data:`MAX_COUNT` particles, steps or cells;
   :data:`MAX_INVERSE_H` for 1/h).
 """
@@ -17,8 +20,14 @@ meaningless number hours later, with a ValueError naming the dotted key:
 from __future__ import annotations
 
 import copy
+import functools
 import math
 from numbers import Real
+from pathlib import Path
+
+import yaml
+
+from .paths import REPOSITORY
 
 MAX_COUNT = 10**8
 """Largest integer parameter (particles, cells, steps): 1e8 doubles are 0.8 GB per array."""
@@ -53,6 +62,19 @@ TIMES_WITHIN = {
     "blob.fig3.density_times": "blob.fig3.t_max",
 }
 
+# Time steps (a number or a list of them) and the final time every run with them must reach in whole steps.
+WHOLE_STEPS = {
+    "ltp.quadratic.dt": "ltp.quadratic.t",
+    "ltp.quadratic.eps_scan.dt": "ltp.quadratic.t",
+    "ltp.quadratic.eps_scan.fine_dt": "ltp.quadratic.t",
+    "ltp.quadratic.dt_study.dt_values": "ltp.quadratic.t",
+    "ltp.nonaffine.dt": "ltp.nonaffine.t",
+    "ltp.nonaffine.centre_of_mass.dt": "ltp.nonaffine.t",
+}
+
+#: Relative tolerance of a whole number of steps, as the solver's (:func:`particle_methods.ltp.solver.simulate`).
+STEPS_TOLERANCE = 1e-9
+
 
 def _is_number(value) -> bool:
     return isinstance(value, Real) and not isinstance(value, bool)
@@ -80,18 +102,54 @@ def _get(config, dotted):
     return node
 
 
-def _is_range(path: str) -> bool:
-    """Lists that are [low, high] ranges: bands, zoom boxes (x pairs, y pairs) and fit windows."""
-    last = path.split(".")[-1]
-    parent = path.split(".")[-2] if "." in path else ""
-    return last.endswith("band") or last == "zoom" or parent == "windows"
+#: Definitions of ``config/schema.yaml`` whose values are [low, high] ranges (or pairs of them).
+RANGE_DEFINITIONS = ("#/$defs/band", "#/$defs/interval", "#/$defs/unit_interval", "#/$defs/boxes")
+
+SCHEMA = REPOSITORY / "config" / "schema.yaml"
 
 
-def _check_list(path: str, values: list) -> None:
+@functools.cache
+def range_paths(schema_path: Path = SCHEMA) -> frozenset[tuple[str, ...]]:
+    """The configuration paths (tuples of keys, ``*`` for any list index or free key) whose schema is one of
+    :data:`RANGE_DEFINITIONS`: found by walking the schema and the definitions it refers to."""
+    schema = yaml.safe_load(Path(schema_path).read_text())
+    definitions = schema.get("$defs", {})
+    found = set()
+
+    def walk(node, path, seen):
+        if not isinstance(node, dict):
+            return
+        reference = node.get("$ref")
+        if reference in RANGE_DEFINITIONS:
+            found.add(path)
+            return
+        if isinstance(reference, str) and reference.startswith("#/$defs/") and reference not in seen:
+            walk(definitions.get(reference.removeprefix("#/$defs/")), path, seen | {reference})
+        for key, child in node.get("properties", {}).items():
+            walk(child, (*path, key), seen)
+        for key in ("items", "additionalProperties"):
+            walk(node.get(key), (*path, "*"), seen)
+        for child in node.get("patternProperties", {}).values():
+            walk(child, (*path, "*"), seen)
+        for key in ("allOf", "anyOf", "oneOf"):
+            for child in node.get(key, ()):
+                walk(child, path, seen)
+
+    walk(schema, (), frozenset())
+    return frozenset(found)
+
+
+def _is_range(path: str, ranges) -> bool:
+    """Whether the schema declares the list at ``path`` a range (:func:`range_paths`)."""
+    keys = tuple(path.split("."))
+    return any(len(pattern) == len(keys) and all(p in ("*", k) for p, k in zip(pattern, keys)) for pattern in ranges)
+
+
+def _check_list(path: str, values: list, ranges) -> None:
     if len(values) < 2 or not all(_is_number(value) for value in values):
         return
     steps = [b - a for a, b in zip(values, values[1:])]
-    if _is_range(path):
+    if _is_range(path, ranges):
         pairs = [values[i:i + 2] for i in range(0, len(values), 2)]
         if any(len(pair) == 2 and pair[0] >= pair[1] for pair in pairs):
             raise ValueError(f"{path} = {values}: a range must be given as [low, high] with low < high")
@@ -115,11 +173,13 @@ def overlay(base: dict, *overlays: dict) -> dict:
     return merged
 
 
-def check_configuration(config: dict) -> None:
-    """Raise ValueError naming the first key whose value no run can use meaningfully."""
+def check_configuration(config: dict, schema_path: Path = SCHEMA) -> None:
+    """Raise ValueError naming the first key whose value no run can use meaningfully (ranges: those
+    ``schema_path`` declares)."""
+    ranges = range_paths(Path(schema_path))
     for path, value in _walk(config):
         if isinstance(value, list):
-            _check_list(path, value)
+            _check_list(path, value, ranges)
         elif isinstance(value, float) and not math.isfinite(value):
             raise ValueError(f"{path} = {value}: every number must be finite")
         elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > MAX_COUNT:
@@ -136,6 +196,7 @@ def check_configuration(config: dict) -> None:
             if _is_number(upper) and value >= upper:
                 raise ValueError(f"{path} = {value} must be below {path[: -len('_min')]}_max = {upper}")
     _check_times_within(config)
+    _check_whole_steps(config)
     for window_path, lists in FIT_WINDOWS.items():
         window = _get(config, window_path)
         for paths in lists:
@@ -143,6 +204,16 @@ def check_configuration(config: dict) -> None:
             length = sum(len(_get(config, path) or ()) for path in paths)
             if _is_number(window) and window > length:
                 raise ValueError(f"{window_path} = {window}: longer than {' + '.join(paths)}, {length} values")
+
+
+def _check_whole_steps(config: dict) -> None:
+    for dt_path, t_path in WHOLE_STEPS.items():
+        steps, t = _get(config, dt_path), _get(config, t_path)
+        for dt in steps if isinstance(steps, list) else [steps]:
+            if _is_number(dt) and _is_number(t) and dt > 0:
+                count = t / dt
+                if abs(count - round(count)) > STEPS_TOLERANCE * max(count, 1.0):
+                    raise ValueError(f"{dt_path} = {steps}: {t_path} = {t} is not a whole number of steps {dt}")
 
 
 def _check_times_within(config: dict) -> None:

@@ -113,7 +113,8 @@ def _largest_sound_speed(system: PSystem, u: np.ndarray, v: np.ndarray) -> float
     spread = np.clip(0.0, w_plus.min() - w_minus.max(), w_plus.max() - w_minus.min())
     spread = float(np.clip(spread, -1.0, 1.0))  # |w^+ - w^-| = 2 |g(u)| <= 1, up to rounding
     nearest, _ = system.physical_variables(0.5 * (1.0 - spread), 0.5 * (1.0 + spread))
-    return float(system.sound_speed(nearest))
+    # At an end of [0, nu] (u = 0 gives spread -1) the inverse of g lands a rounding error outside it.
+    return float(system.sound_speed(np.clip(nearest, 0.0, system.nu)))
 
 
 @njit
