@@ -575,6 +575,14 @@ def test_fig7_blob_ring_that_settles_with_the_particle_ring_is_not_faster():
     assert status(claims, "fig7.blob_ring_faster") == "fail"
 
 
+def test_fig7_blob_state_farther_from_the_ring_at_t_8_fails_the_papers_comparison():
+    """The paper compares the methods at t = 8: a blob state relaxing more slowly is farther from the ring then."""
+    claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.001), 3.0), power_particle=(ring(RING, 0.05), 1.0)),
+                           CONFIG["fig7"], RULES)
+    assert status(claims, "fig7.blob_closer_at_8") == "fail"
+    assert status(claims, "fig7.no_origin.blob_closer_at_8") == "fail"
+
+
 def test_fig7_blob_ring_still_moving_at_the_final_time_is_unmeasured():
     claims = v.fig7_claims(fig7(power_blob=(ring(RING, 0.001), 30.0)), CONFIG["fig7"], RULES)
     assert status(claims, "fig7.delta_ring_radius") == "fail" and status(claims, "fig7.blob_ring_faster") == "fail"
@@ -705,9 +713,10 @@ COVERED = {
     "fig6.quadratic_point", "fig6.cubic_ring", "fig6.cubic_ring_radius", "fig6.star_rounding_newtonian",
     "fig6.star_no_rounding_quadratic", "fig6.newtonian_blowup", "energy.decrease_2d",
     "fig7.delta_ring_radius", "fig7.delta_ring_thin", "fig7.particle_log_disk", "fig7.particle_power_ring",
-    "fig7.blob_ring_faster", "fig7.log_ring_collapse",
+    "fig7.blob_ring_faster", "fig7.blob_closer_at_8", "fig7.log_ring_collapse",
     "fig7.septic_three_points", "fig7.no_origin.delta_ring_radius", "fig7.no_origin.delta_ring_thin",
-    "fig7.no_origin.particle_power_ring", "fig7.no_origin.blob_ring_faster", "fig7.no_origin.septic_three_points",
+    "fig7.no_origin.particle_power_ring", "fig7.no_origin.blob_ring_faster", "fig7.no_origin.blob_closer_at_8",
+    "fig7.no_origin.septic_three_points",
     "fig8.regularisation_effect",
 }
 
