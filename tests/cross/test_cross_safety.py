@@ -183,3 +183,21 @@ def test_measures_without_the_needed_methods_are_refused_naming_measure(measure)
 def test_positions_whose_products_with_the_mass_overflow_are_refused_naming_them(call, name):
     with pytest.raises(ValueError, match=rf"\b{name}\b"):
         call(AggregationSolution("indicator", 0.5))
+
+
+@pytest.mark.parametrize("mass", [float("nan"), None, 1 + 2j, -1.0, 0.0, float("inf")], ids=repr)
+def test_aggregation_flux_refuses_a_mass_that_is_not_a_positive_number(mass):
+    """Found by the fuzz of issue 30: NaN, None, complex and negative masses gave a flux silently."""
+    from particle_methods.cross.methods import aggregation_flux
+
+    with pytest.raises((ValueError, TypeError), match="mass"):
+        aggregation_flux(mass)
+
+
+def test_ltp_method_names_its_own_time_parameter():
+    """Found by the fuzz of issue 30: a bad t was refused naming simulate's t_final."""
+    from particle_methods.cross.methods import ltp_method
+
+    for t in (-1.0, 0.0, float("nan")):
+        with pytest.raises(ValueError, match=r"^t must"):
+            ltp_method("smooth20", 0.1, 0.01, t)

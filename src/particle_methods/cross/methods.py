@@ -45,7 +45,8 @@ KERNEL = "newtonian_attractive"
 
 
 def aggregation_flux(mass: float):
-    """Lambda(F) = M F/2 - F^2/2, the flux of the law of the cumulative mass F."""
+    """Lambda(F) = M F/2 - F^2/2, the flux of the law of the cumulative mass F (M > 0 finite: the total mass)."""
+    mass = positive("mass", mass)
     return lambda level: 0.5 * mass * np.asarray(level) - 0.5 * np.asarray(level) ** 2
 
 
@@ -149,6 +150,7 @@ def initial_density(data) -> InitialDensity:
 def ltp_method(data, h: float, dt: float, t: float, *, method: str = "ltp", eps: float | None = None):
     """The LTP (or SP, with width ``eps``) particles at t for W = |x|/2: a
     :class:`~particle_methods.ltp.solver.Particles` with ``cumulative_mass``."""
+    t = positive("t", t)  # checked here so that the error names this function's parameter, not simulate's t_final
     return simulate(initial_density(data), potential("newtonian"), h, dt, t, method=method, eps=eps).at(-1)
 
 
