@@ -300,3 +300,22 @@ def test_never_is_the_only_infinity_returned():
     assert safe_call(never_as_minus_one(holds_from), times, times > 20.0) == -1.0
     with pytest.raises(AssertionError, match="non-finite"):
         safe_call(never_as_minus_one(lambda: math.nan))
+
+
+def test_issue_30_silent_garbage_is_refused():
+    """Found by the fuzz of issue 30: each returned NaN, inf or a value of the wrong input, or an IndexError."""
+    from particle_methods.cross.methods import weighted_velocities
+    from particle_methods.finite_volume.riemann import PSystemRiemann
+    from particle_methods.sticky.mspd import ScalarLaw
+    from particle_methods.systems import PSystem
+
+    with pytest.raises(ValueError, match="t = .* too small"):
+        PSystemRiemann(PSystem(), (0.1, 0.0), (0.2, 0.0)).cell_averages(np.linspace(-1, 1, 5), 5e-324)
+    with pytest.raises(ValueError, match="masses must have a finite sum"):
+        weighted_velocities(np.array([1.7e308, 1.7e308]))
+    law = ScalarLaw(lambda u: u**2 / 2)
+    with pytest.raises(ValueError, match="levels must have a last axis of length d = 1"):
+        law.speed_primitive(0, np.array([[0.1, 0.2], [0.3, 0.4]]))
+    with pytest.raises((ValueError, TypeError), match="levels"):
+        law.speed_primitive(0, None)
+    np.testing.assert_allclose(law.speed_primitive(0, np.array([[0.1], [0.3]])), [0.005, 0.045])

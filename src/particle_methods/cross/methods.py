@@ -88,7 +88,10 @@ def weighted_velocities(masses) -> np.ndarray:
     masses = finite_array("masses", masses)
     if masses.size == 0 or np.any(masses <= 0):
         raise ValueError("masses must be positive, at least one")
-    levels = _levels(masses)
+    with np.errstate(over="ignore"):
+        levels = _levels(masses)
+    if not np.isfinite(levels[-1]):
+        raise ValueError("masses must have a finite sum: their total overflows")
     return 0.5 * (levels[-1] - levels[:-1] - levels[1:])
 
 

@@ -181,7 +181,10 @@ class PSystemRiemann:
         """Exact averages of (u, v)(t, .) over the cells of the strictly increasing ``x_edges``, for t > 0."""
         edges = checked_edges(x_edges)
         t = positive("t", t)
-        xi = edges / t
+        with np.errstate(over="ignore"):
+            xi = edges / t
+        if not np.all(np.isfinite(xi)):
+            raise ValueError(f"t = {t:g} is too small for these x_edges: x / t overflows (the averages would be NaN)")
         a_end, b_end = xi[:-1], xi[1:]
         sums_u, sums_v = np.zeros(a_end.size), np.zeros(a_end.size)
         for start, end, kind, data in self._pieces():

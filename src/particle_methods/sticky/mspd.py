@@ -26,7 +26,7 @@ import numpy as np
 
 from ..jit import njit
 from ..systems import MINUS, PLUS, PSystem, checked_primitive, checked_system, speed_primitive_formula
-from ..validation import ParameterTypeError, instance, integer_at_least, positive, sorted_array
+from ..validation import ParameterTypeError, instance, integer_at_least, positive, real_array, sorted_array
 from .spd import LARGEST, MAX_POSITIONS, check_reach, hull_operations, hull_positions_kernel
 
 #: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms on the Python
@@ -84,7 +84,10 @@ class ScalarLaw:
         """A(levels[..., 0]); gamma must be 0."""
         if integer_at_least("gamma", gamma, 0) != 0:
             raise ValueError(f"gamma must be 0 for a scalar law, got {gamma}")
-        return self.flux(np.asarray(levels)[..., 0])
+        levels = real_array("levels", levels)
+        if levels.ndim == 0 or levels.shape[-1] != 1:
+            raise ValueError(f"levels must have a last axis of length d = 1 for a scalar law, got shape {levels.shape}")
+        return self.flux(levels[..., 0])
 
 
 def checked_configuration(name: str, x, system) -> np.ndarray:
