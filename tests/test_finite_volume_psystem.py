@@ -23,7 +23,7 @@ from particle_methods.finite_volume.riemann import PSystemRiemann
 from particle_methods.norms import cdf_antiderivative
 from particle_methods.sticky import ScalarLaw, burgers_flux
 from particle_methods.sticky.cases import psystem_initial_measures
-from particle_methods.systems import MINUS, PLUS, PSystem
+from particle_methods.systems import MINUS, PLUS, PSystem, speed_primitive_formula
 from particle_methods.validation import ParameterTypeError
 
 SYSTEM = PSystem(nu=0.5, kappa=5.0)
@@ -384,7 +384,7 @@ def test_psystem_inflow_is_face_pass_and_entering(rng):
     w = np.sort(rng.uniform(0.0, 1.0, (2, m)), axis=1)
     w[:, 50:60] = w[:, 50:51]  # ties: no jump
     w[:, 100:110] = 1e-29 * np.arange(10)  # jumps far below the rounding of the primitives
-    primitives = fv_psystem.speed_primitive_formula(rng.uniform(-1.0, 1.0, (3, m - 1)), SYSTEM.a,
+    primitives = speed_primitive_formula(rng.uniform(-1.0, 1.0, (3, m - 1)), SYSTEM.a,
                                                     SYSTEM.primitive_coefficient)
     primitives[1:, 100:110] = primitives[0, 100:110] * (1.0 + rng.integers(-8, 9, (2, 10)) * np.finfo(float).eps)
     primitives[1, 50:60] = primitives[0, 50:60]  # no fluctuation across a tie

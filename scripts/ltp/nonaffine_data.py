@@ -22,6 +22,14 @@ from particle_replication.workflow import logged, progress, save_results
 WEIGHTS = {"cell": "b3", "biorthogonal": "hat"}
 
 
+def records(sim, times):
+    """Indices of ``sim``'s records at ``times``, which must be multiples of its dt (and of its record step)."""
+    recorded = [int(np.argmin(np.abs(sim.times - t))) for t in times]
+    if not np.allclose(sim.times[recorded], times, rtol=0, atol=1e-9):
+        raise ValueError("the record times must be multiples of every run's dt")
+    return recorded
+
+
 def theorem4_errors(initial, w, grid, q):
     """Largest L1 and Linf errors over the record times (rows: h, columns: L1, Linf) for each weight rule,
     each run with dt = dt_over_h2 h^2; the reference (h_min / reference_factor, the finest run's dt) and its
@@ -33,10 +41,7 @@ def theorem4_errors(initial, w, grid, q):
         progress(f"Theorem 4: {w.name}, weights {weights}, h = {h:g}, dt = {dt:g}, t = {times[-1]:g}")
         every = int(round(times[0] / dt))
         sim = simulate(initial, w, h, dt, times[-1], shape=WEIGHTS[weights], weights=weights, record_every=every)
-        recorded = np.array([np.argmin(np.abs(sim.times - t)) for t in times])
-        if not np.allclose(sim.times[recorded], times, rtol=0, atol=1e-9):
-            raise ValueError("the record times must be multiples of every run's dt")
-        return [sim.at(int(i)).density(grid) for i in recorded]
+        return [sim.at(i).density(grid) for i in records(sim, times)]
 
     out = {"theorem4_h": h_values, "theorem4_dt": dt_values, "theorem4_times": times,
            "theorem4_weights": np.array(list(WEIGHTS))}
@@ -66,10 +71,7 @@ def theorem3_distances(q, grid_points):
         dt = q["dt_over_h"] * h
         progress(f"Theorem 3: {w.name} on {initial.name}, h = {h:g}, dt = {dt:g}, t = {times[-1]:g}")
         sim = simulate(initial, w, h, dt, times[-1], record_every=int(round(times[0] / dt)))
-        recorded = np.array([np.argmin(np.abs(sim.times - t)) for t in times])
-        if not np.allclose(sim.times[recorded], times, rtol=0, atol=1e-9):
-            raise ValueError("the record times must be multiples of every run's dt")
-        return [sim.at(int(i)).cumulative_mass(grid) for i in recorded]
+        return [sim.at(i).cumulative_mass(grid) for i in records(sim, times)]
 
     def distance(a, b):
         return max(grid_errors(x, y, grid)[0] for x, y in zip(a, b))

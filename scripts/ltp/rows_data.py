@@ -21,11 +21,9 @@ def case_potential(p, case):
     return potential("power", a=case["a"])
 
 
-def edge_series(sim, concentration):
-    """Largest density at the centres and the concentration widths, at every record of ``sim``."""
-    peaks = [sim.at(i).density(sim.at(i).centres).max() for i in range(sim.steps.size)]
-    widths, _ = concentration_series(sim, concentration["fraction"], concentration["radius"])
-    return np.array(peaks), widths
+def largest_densities(sim):
+    """Largest density at the centres, at every record of ``sim``."""
+    return np.array([sim.at(i).density(sim.at(i).centres).max() for i in range(sim.steps.size)])
 
 
 def run(p, concentration, output):
@@ -61,14 +59,15 @@ def run(p, concentration, output):
                      f"{widths[-1]}, mass within {concentration['radius']:g} of the peaks {masses[-1].sum():.4g}")
         refinement = p.get("edge_refinement")
         if refinement is not None and case.get("b") == refinement["b"]:
-            runs = {p["h"]: sim}
+            series = {p["h"]: (largest_densities(sim), widths)}  # the figure's run, its widths measured above
             for h in refinement["h_values"]:
                 progress(f"{w.name}: edge refinement, h = {h:g}, {steps} steps of {dt:g}")
-                runs[h] = simulate(initial, w, h, dt, steps * dt, record_every=1, log=None)
-            edge_h = np.array(sorted(runs, reverse=True))
-            peaks, widths = zip(*(edge_series(runs[h], concentration) for h in edge_h))
-            results.update({"edge_h": edge_h, "edge_peaks": np.array(peaks), "edge_widths": np.array(widths),
-                            "edge_case": index})
+                refined = simulate(initial, w, h, dt, steps * dt, record_every=1, log=None)
+                series[h] = (largest_densities(refined),
+                             concentration_series(refined, concentration["fraction"], concentration["radius"])[0])
+            edge_h = np.array(sorted(series, reverse=True))
+            results.update({"edge_h": edge_h, "edge_peaks": np.array([series[h][0] for h in edge_h]),
+                            "edge_widths": np.array([series[h][1] for h in edge_h]), "edge_case": index})
     results["labels"] = np.array(results["labels"])
     save_results(output, grid=grid, x_potential=x_potential, h=p["h"], steps=p["steps"], **results)
 

@@ -39,6 +39,18 @@ def reference(potential_, shape, centres, weights, widths, t):
     return first, second
 
 
+def assert_matches_quadrature(w, shape, centres, weights, widths, targets, rel, tolerance):
+    """W' * rho_h and W'' * rho_h at every target within ``rel`` = (relative for W', for W'') and the absolute
+    ``tolerance`` of :func:`reference`'s adaptive quadrature."""
+    coefficients, exponents = w.as_arrays()
+    first, second = convolutions(targets, centres, weights, widths, coefficients, exponents, shape.breaks,
+                                 shape.coefficients)
+    for i, t in enumerate(targets):
+        expected_first, expected_second = reference(w, shape, centres, weights, widths, t)
+        assert first[i] == pytest.approx(expected_first, rel=rel[0], abs=tolerance)
+        assert second[i] == pytest.approx(expected_second, rel=rel[1], abs=tolerance)
+
+
 CENTRES = np.array([-0.4, 0.0, 0.013, 0.5])
 WEIGHTS = np.array([0.2, 0.3, 0.1, 0.4])
 WIDTHS = np.array([0.05, 0.01, 0.004, 0.2])
@@ -54,13 +66,7 @@ TARGETS = np.array([-0.4, -0.37, 0.0, 0.006, 0.013, 0.05, 0.5, 0.93, 1.7])
     ids=lambda w: w.name,
 )
 def test_convolutions_match_independent_quadrature(shape, w):
-    coefficients, exponents = w.as_arrays()
-    first, second = convolutions(TARGETS, CENTRES, WEIGHTS, WIDTHS, coefficients, exponents, shape.breaks,
-                                 shape.coefficients)
-    for i, t in enumerate(TARGETS):
-        expected_first, expected_second = reference(w, shape, CENTRES, WEIGHTS, WIDTHS, t)
-        assert first[i] == pytest.approx(expected_first, rel=1e-9, abs=1e-12)
-        assert second[i] == pytest.approx(expected_second, rel=1e-8, abs=1e-12)
+    assert_matches_quadrature(w, shape, CENTRES, WEIGHTS, WIDTHS, TARGETS, rel=(1e-9, 1e-8), tolerance=1e-12)
 
 
 def test_density_matches_the_sum_of_shapes():
@@ -123,14 +129,8 @@ def test_integer_exponents_by_moments_match_quadrature_among_overlapping_particl
     edges = np.concatenate([centres[[5, 20]] + shape.radius * widths[[5, 20]],
                             centres[[9]] - shape.radius * widths[[9]]])
     targets = np.concatenate([rng.uniform(-1.5, 1.5, 6), centres[[3, 17]], edges])
-    w = potential("power", a=a)
-    coefficients, exponents = w.as_arrays()
-    first, second = convolutions(targets, centres, weights, widths, coefficients, exponents, shape.breaks,
-                                 shape.coefficients)
-    for i, t in enumerate(targets):
-        expected_first, expected_second = reference(w, shape, centres, weights, widths, t)
-        assert first[i] == pytest.approx(expected_first, rel=1e-10, abs=1e-13)
-        assert second[i] == pytest.approx(expected_second, rel=1e-10, abs=1e-13)
+    assert_matches_quadrature(potential("power", a=a), shape, centres, weights, widths, targets, rel=(1e-10, 1e-10),
+                              tolerance=1e-13)
 
 
 @pytest.mark.parametrize("a", [3.0, 4.0, 5.0])

@@ -52,7 +52,7 @@ from ..systems import (
     checked_system,
     pressure_formula,
     sound_speed_formula,
-    speed_primitive_formula,
+    speed_primitives_into,
 )
 from ..validation import finite_array, finite_result, finite_values, in_interval, instance, nonnegative
 from .grids import check_cell_steps, check_cells_match, checked_edges, checked_time_and_cfl, uniform_width
@@ -322,25 +322,6 @@ def _compiled_psystem(system) -> bool:
     return type(system) is PSystem and system.d == 2
 
 
-#: Elements of the p-system's primitive evaluated by one NumPy call in :func:`_psystem_primitives`: each of the
-#: formula's temporaries (64 kB) then stays below glibc's default threshold for mapping a block of its own
-#: (128 kB). On the whole (3, cells + 1) array at 64000 cells (temporaries of 1.5 MB) a run in a fresh process
-#: took 5.2 million page faults, 718 a step, and 14.4 to 15.2 s, against 1100 faults and 4.4 to 5.1 s in chunks
-#: of 8192 (4096: 5.6 s, 2048: 7.0 s, the calls' overhead; measured with benchmarks/bench_upwind.py's data).
-PRIMITIVE_CHUNK = 8192
-
-
-def _psystem_primitives(spreads, a, coefficient, primitives):
-    """primitives = coefficient atan(sinh(a spreads)), the p-system's primitive of (5.7), by
-    :func:`~particle_methods.systems.speed_primitive_formula` on NumPy arrays as :meth:`PSystem.speed_primitive`
-    evaluates it on the Python path, in chunks of :data:`PRIMITIVE_CHUNK` elements: the same values to the last
-    bit (NumPy's vectorised sinh and arctan give an element the same result at any place in any array)."""
-    spreads, primitives = spreads.reshape(-1), primitives.reshape(-1)
-    for start in range(0, spreads.size, PRIMITIVE_CHUNK):
-        stop = start + PRIMITIVE_CHUNK
-        primitives[start:stop] = speed_primitive_formula(spreads[start:stop], a, coefficient)
-
-
 @njit
 def _psystem_spreads(w, spreads):
     """Arguments w^+ - w^- of the p-system's primitive at every face k of the padded states w (2, m), the other
@@ -400,9 +381,10 @@ def _upwind_psystem_kernel(w, dx, t, cfl, a, coefficient, low, high, max_steps, 
     (3, m - 1), ``inflow`` (2, m) and the rows of :func:`_psystem_inflow` are scratch.
 
     Each step is that of the Python path, operation for operation: the primitives at the spreads of
-    :func:`_psystem_spreads` (evaluated by NumPy, :func:`_psystem_primitives`: the one object-mode call of the
-    loop), the fluctuations, directions and averaged speeds (1.8) of :func:`_psystem_inflow`, the time step
-    cfl dx / s_max recomputed and shortened at the end, the update clipped to [low, high]. Returns
+    :func:`_psystem_spreads` (evaluated by NumPy, :func:`~particle_methods.systems.speed_primitives_into`: the
+    one object-mode call of the loop), the fluctuations, directions and averaged speeds (1.8) of
+    :func:`_psystem_inflow`, the time step cfl dx / s_max recomputed and shortened at the end, the update
+    clipped to [low, high]. Returns
     :data:`_REACHED` with ``report[0]`` the steps taken (t reached, or a steady state: no fluctuation enters any
     cell), :data:`_NOT_FINITE`, or :data:`_TOO_MUCH_WORK` with ``report[0]`` the steps the run would need, more
     than ``max_steps`` or (with 2 cells updates per step) beyond ``max_work``, for the caller to raise."""
@@ -412,7 +394,7 @@ def _upwind_psystem_kernel(w, dx, t, cfl, a, coefficient, low, high, max_steps, 
     while time < t:
         _psystem_spreads(w, spreads)
         with numba.objmode():
-            _psystem_primitives(spreads, a, coefficient, primitives)
+            speed_primitives_into(spreads, a, coefficient, primitives)
         fastest = _psystem_inflow(w, primitives, fluctuations, speeds, right_going, inflow)
         if not np.isfinite(fastest):
             return _NOT_FINITE

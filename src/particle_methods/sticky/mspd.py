@@ -25,7 +25,15 @@ import numba
 import numpy as np
 
 from ..jit import njit
-from ..systems import MINUS, PLUS, PSystem, checked_primitive, checked_system, speed_primitive_formula
+from ..systems import (
+    MINUS,
+    PLUS,
+    PSystem,
+    checked_primitive,
+    checked_system,
+    speed_primitive_formula,
+    speed_primitives_into,
+)
 from ..validation import ParameterTypeError, instance, integer_at_least, positive, real_array, sorted_array
 from .spd import LARGEST, MAX_POSITIONS, check_reach, hull_operations, hull_positions_kernel
 
@@ -164,12 +172,6 @@ def _tspd_step(x, system, delta, out) -> int:
 _DONE, _NOT_FINITE, _TOO_FAR = 0, 1, 2
 
 
-def _psystem_primitives(spreads, a, coefficient, primitives):
-    """primitives = coefficient atan(sinh(a spreads)) by NumPy (:func:`speed_primitive_formula`, as the Python
-    path evaluates it), so that the compiled steps give the Python path's numbers to the last bit."""
-    primitives[:] = speed_primitive_formula(spreads, a, coefficient)
-
-
 @njit(nogil=False)  # it takes the GIL for NumPy at every step
 def _tspd_psystem_kernel(x, out, delta, steps, a, coefficient, spreads, primitives, velocities, report):
     """The steps of :func:`mspd_positions` for the p-system (d = 2), compiled, on checked input: each step is
@@ -195,7 +197,7 @@ def _tspd_psystem_kernel(x, out, delta, steps, a, coefficient, spreads, primitiv
                 else:
                     spreads[2 * gamma + 1, k] = plus - (minus - step_of_n)
         with numba.objmode():
-            _psystem_primitives(spreads, a, coefficient, primitives)
+            speed_primitives_into(spreads, a, coefficient, primitives)
         speed = 0.0
         for gamma in range(d):
             for k in range(n):
