@@ -314,5 +314,5 @@ def test_fuzz_measures_bad(values, number):
     safe_call(measures.side_concentration, np.array([-1.0, 1.0]), np.ones(2), values, number, 0.1)
     safe_call(measures.peak_count, values, number)
     safe_call(measures.excess_variation, values, values)
-    safe_call(measures.shrink_factor, times, np.exp(-times), number, number)
+    safe_call(measures.shrink_rate_ratios, times, np.exp(-times), number, number, number)
     safe_call(measures.concentration_series, values, 0.5, number)

@@ -11,7 +11,7 @@ from particle_methods.ltp.measures import (
     collapse_times,
     excess_variation,
     peak_count,
-    shrink_factor,
+    shrink_rate_ratios,
     shrink_rate_inverse,
     side_concentration,
 )
@@ -70,36 +70,50 @@ def test_algebraic_shrinking_gives_positive_slopes_and_no_collapse():
     assert np.all(np.isinf(collapse))
 
 
-# shrink_factor
+# shrink_rate_ratios
+
+FLOOR = math.log1p(0.01) / 10.0  # the steady rate of a 1 % change per window of 10
 
 
-def test_shrink_factor_of_exponential_sizes_is_exp_rate_times_window():
-    t = np.linspace(0.0, 60.0, 6001)  # records every 0.01, far below the window
-    assert shrink_factor(t, 0.5 * np.exp(-0.1 * t), 10.0, 30.0) == pytest.approx(math.e, rel=2e-3)
-    assert shrink_factor(t, np.exp(-0.05 * t), 5.0, 0.0) == pytest.approx(math.exp(0.25), rel=2e-3)
-
-
-def test_shrink_factor_is_taken_over_the_whole_window_with_coarse_records():
-    assert shrink_factor([0.0, 1.0, 2.0], [4.0, 2.0, 1.0], 1.0, 0.0) == pytest.approx(2.0)
+def test_shrink_rate_ratios_of_exponential_sizes_are_one_and_start_two_windows_after_since():
     t = np.linspace(0.0, 60.0, 121)
-    assert shrink_factor(t, 0.5 * np.exp(-0.1 * t), 10.0, 30.0) == pytest.approx(math.e, rel=1e-9)
+    ends, ratios = shrink_rate_ratios(t, 0.5 * np.exp(-0.1 * t), 10.0, 10.0, FLOOR)
+    assert ends[0] == pytest.approx(30.0) and ends[-1] == pytest.approx(60.0)
+    np.testing.assert_allclose(ratios, 1.0, rtol=1e-9)
 
 
-def test_shrink_factor_of_constant_sizes_is_one():
+def test_shrink_rate_ratios_grow_when_the_shrinking_speeds_up():
     t = np.linspace(0.0, 60.0, 121)
-    assert shrink_factor(t, np.full(t.size, 0.2), 10.0, 30.0) == pytest.approx(1.0)
+    _, ratios = shrink_rate_ratios(t, np.exp(-0.002 * t**2), 10.0, 10.0, FLOOR)
+    # rates 0.002 (2 t - 10): the ratio over t = 30 is 50/30
+    assert ratios[0] == pytest.approx(5.0 / 3.0) and np.all(ratios > 1.0)
 
 
-def test_shrink_factor_is_the_smallest_over_the_times_after_since():
+@pytest.mark.parametrize("sizes", [lambda t: 0.3 + 0.2 * np.exp(-0.5 * t), lambda t: np.full(t.size, 0.2),
+                                   lambda t: 0.2 / (1.0 + t)], ids=["settling", "settled", "algebraic"])
+def test_shrink_rate_ratios_fall_below_one_for_a_width_that_settles_or_slows(sizes):
     t = np.linspace(0.0, 60.0, 121)
-    settling = 0.3 + 0.2 * np.exp(-t)  # shrinks fast at first, then settles
-    assert shrink_factor(t, settling, 10.0, 0.0) < 1.001
-    assert shrink_factor(t, settling, 10.0, 30.0) < 1.001
-    shrinking_late = np.where(t < 30.0, 1.0, np.exp(-0.1 * (t - 30.0)))
-    assert shrink_factor(t, shrinking_late, 10.0, 0.0) == pytest.approx(1.0)  # the early settled part counts
-    assert shrink_factor(t, shrinking_late, 10.0, 40.0) > 2.0  # from since = 40 on only the shrinking part
-    with pytest.raises(ValueError, match="window"):
-        shrink_factor(t, settling, 10.0, 61.0)
+    _, ratios = shrink_rate_ratios(t, sizes(t), 10.0, 10.0, FLOOR)
+    assert ratios.min() < 0.7
+
+
+def test_shrink_rate_ratios_of_a_settled_size_with_rounding_noise_are_near_zero():
+    t = np.linspace(0.0, 60.0, 121)
+    noisy = 0.2 * (1.0 + 1e-15 * np.random.default_rng(0).standard_normal(t.size))
+    _, ratios = shrink_rate_ratios(t, noisy, 10.0, 10.0, FLOOR)  # tiny rates of either sign: not shrinking
+    assert np.abs(ratios).max() < 1e-9
+
+
+def test_shrink_rate_ratios_take_whole_windows_with_coarse_records_and_refuse_short_runs():
+    ends, ratios = shrink_rate_ratios([0.0, 1.0, 2.0, 3.0], [8.0, 4.0, 1.0, 0.25], 1.0, 0.0, FLOOR)
+    np.testing.assert_allclose(ends, [2.0, 3.0])
+    np.testing.assert_allclose(ratios, [2.0, 1.0])
+    with pytest.raises(ValueError, match="two windows"):
+        shrink_rate_ratios(np.linspace(0.0, 60.0, 121), np.ones(121), 10.0, 41.0, FLOOR)
+    with pytest.raises(ValueError, match="floor"):
+        shrink_rate_ratios(np.linspace(0.0, 60.0, 121), np.ones(121), 10.0, 10.0, 0.0)
+    with pytest.raises(ValueError, match="increasing"):
+        shrink_rate_ratios([0.0, 2.0, 1.0], np.ones(3), 0.5, 0.0, FLOOR)
 
 
 # side_concentration
@@ -200,10 +214,10 @@ def test_excess_variation_grows_with_ripples_and_a_lone_small_bump_adds_its_heig
 
 @pytest.mark.parametrize("call", [
     lambda: shrink_rate_inverse([0.0, 1.0, 2.0], [1.0, 0.5]),
-    lambda: shrink_factor([0.0, 1.0, 2.0], [1.0, 0.5], 1.0, 0.0),
+    lambda: shrink_rate_ratios([0.0, 1.0, 2.0], [1.0, 0.5], 1.0, 0.0, 0.1),
     lambda: side_concentration([-1.0, 1.0], [0.5, 0.5], [1.0], 0.9, 0.1),
     lambda: excess_variation([0.0, 1.0], [1.0]),
-], ids=["shrink_rate_inverse", "shrink_factor", "side_concentration", "excess_variation"])
+], ids=["shrink_rate_inverse", "shrink_rate_ratios", "side_concentration", "excess_variation"])
 def test_mismatched_lengths_raise(call):
     with pytest.raises(ValueError, match="mismatched"):
         call()
@@ -216,7 +230,7 @@ def test_non_positive_sizes_raise(sizes):
     with pytest.raises(ValueError, match="positive"):
         collapse_times([0.0, 1.0, 2.0], sizes, [(0.0, 1.0)])
     with pytest.raises(ValueError, match="positive"):
-        shrink_factor([0.0, 1.0, 2.0], sizes, 1.0, 0.0)
+        shrink_rate_ratios([0.0, 1.0, 2.0], sizes, 1.0, 0.0, 0.1)
 
 
 def test_too_few_records_raise():
@@ -238,11 +252,11 @@ def test_a_window_of_constant_size_raises():
 @pytest.mark.parametrize("call", [
     lambda: shrink_rate_inverse([0.0, 1.0, math.nan], [1.0, 0.5, 0.2]),
     lambda: collapse_times([0.0, 1.0, 2.0], [1.0, math.nan, 0.2], [(0.0, 1.0)]),
-    lambda: shrink_factor([0.0, 1.0, 2.0], [1.0, math.nan, 0.2], 1.0, 0.0),
+    lambda: shrink_rate_ratios([0.0, 1.0, 2.0], [1.0, math.nan, 0.2], 1.0, 0.0, 0.1),
     lambda: side_concentration([-1.0, math.nan], [0.5, 0.5], [1.0, 1.0], 0.9, 0.1),
     lambda: peak_count([0.0, math.nan, 0.0]),
     lambda: excess_variation([-1.0, 0.0, 1.0], [0.0, math.inf, 0.0]),
-], ids=["shrink_rate_inverse", "collapse_times", "shrink_factor", "side_concentration", "peak_count",
+], ids=["shrink_rate_inverse", "collapse_times", "shrink_rate_ratios", "side_concentration", "peak_count",
         "excess_variation"])
 def test_nan_raises(call):
     with pytest.raises(ValueError, match="NaN"):

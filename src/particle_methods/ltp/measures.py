@@ -10,6 +10,8 @@
   fraction of that side's mass, and the mass within a radius of the side's densest particle.
   Dirac masses forming: width to 0, mass near the peak to the side's mass; an L1 profile: both
   settle.
+- :func:`shrink_rate_ratios`: whether such a width keeps shrinking at least exponentially: its shrink
+  rate over each window against the rate over the window before.
 - :func:`peak_count`: local maxima of a sampled density standing out from their surroundings.
 """
 
@@ -126,21 +128,41 @@ def excess_variation(x, density) -> float:
     return float(variation / (2 * (left.max() + right.max())) - 1.0)
 
 
-def shrink_factor(times, sizes, window: float, since: float) -> float:
-    """Smallest factor s(t - window)/s(t) over the recorded t >= ``since``: at least 2 means the
-    size halves over every window, a settled size gives 1."""
+def shrink_rate_ratios(times, sizes, window: float, since: float, floor: float):
+    """Whether a size keeps shrinking at least exponentially, window after window, from ``since`` on.
+
+    The shrink rate over the window ending at a recorded t is r(t) = log(s(t - window)/s(t))/window
+    (s(t - window) at the latest record not after it). For every recorded t with t - 2 window >= since,
+    the ratio r(t)/max(r(t - window), floor) compares the rate with the one a window earlier: 1 for
+    exponential shrinking, above 1 when it speeds up, exp(-mu window) for a size settling at rate mu to a
+    positive limit, and about 0 for a settled size (its rate below ``floor``, the rate of a size the caller
+    calls steady, > 0). Unlike a shrink factor over the end of the run, no ratio depends on where the run
+    stops: a longer run adds ratios. Returns (t, ratios), one per such record.
+    """
     times = finite_array("times", times)
     sizes = finite_array("sizes", sizes)
     same_length(times=times, sizes=sizes)
     window = positive("window", window)
     since = finite_number("since", since)
+    floor = positive("floor", floor)
     if np.any(sizes <= 0):
         raise ValueError("sizes must be positive")
-    earlier = np.searchsorted(times, times - window + 1e-9 * window, side="right") - 1  # latest <= t - window
-    usable = (earlier >= 0) & (times >= since)
-    if not usable.any():
-        raise ValueError("no recorded time at least one window after the start and after `since`")
-    return float((sizes[earlier[usable]] / sizes[usable]).min())
+    if np.any(np.diff(times) <= 0):
+        raise ValueError("times must be increasing")
+
+    def earlier(t):  # the latest record <= t (to rounding), -1 before the first
+        return np.searchsorted(times, t + 1e-9 * window, side="right") - 1
+
+    ends = np.flatnonzero(times - 2.0 * window >= since - 1e-9 * window)
+    if ends.size == 0:
+        raise ValueError("no recorded time two windows after `since`")
+    middle = earlier(times[ends] - window)
+    first = earlier(times[middle] - window)
+    if np.any(first < 0):
+        raise ValueError("`since` lies before the first record")
+    rate = np.log(sizes[middle] / sizes[ends]) / window
+    before = np.log(sizes[first] / sizes[middle]) / window
+    return times[ends], rate / np.maximum(before, floor)
 
 
 def concentration_series(simulation, fraction: float, radius: float) -> tuple[np.ndarray, np.ndarray]:

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from particle_methods.ltp.measures import collapse_times, shrink_factor
+from particle_methods.ltp.measures import collapse_times, shrink_rate_ratios
 
 from .. import claims as c
 from ..rates import Recorder, order
@@ -272,33 +272,29 @@ def _steady_time(times, widths, q) -> float:
     return first_steady_time(times, widths, q["window"], q["steady_tolerance"])
 
 
-def _shrink_by_run_end(times, widths, q, end):
-    """The concentration measure of a run ending at ``end``: the smallest shrink factor per window, of both
-    sides, over the part of that run from ``shrink_from`` of its duration on."""
-    last = int(np.searchsorted(times, end + c.ROUNDING * end, side="right"))
-    late = times[0] + q["shrink_from"] * (times[last - 1] - times[0])
-    return min(shrink_factor(times[:last], widths[:last, side], q["window"], late) for side in range(2))
-
-
 def _concentrating(times, widths, masses, q, name, figure, source, what):
-    """The two claims of Dirac masses forming: widths shrinking, mass gathering near the peaks. The run length
-    is not stated in the paper: the concentration claim also gives its measure for runs ending every window
-    from four windows on, and at how many of those ends it holds."""
-    start = q["shrink_from"]
-    factor = _shrink_by_run_end(times, widths, q, times[-1])
-    ends = np.arange(times[0] + 4 * q["window"], times[-1] - 0.5 * q["window"], q["window"])
-    earlier = [_shrink_by_run_end(times, widths, q, end) for end in ends]
-    holds = sum(value >= q["shrink_min"] for value in earlier)
-    listed = ", ".join(f"{end:g}: {value:.2f}" for end, value in zip(ends, earlier))
-    part = {0.0: "the whole", 0.5: "the second half"}.get(start, f"the last {1 - start:g}")
+    """The two claims of Dirac masses forming: widths shrinking at least exponentially for as long as the run
+    lasts, mass gathering near the peaks. The shrink rate over each window is compared with the rate over the
+    window before (:func:`shrink_rate_ratios`, from the end of the transient on, both sides): no ratio depends
+    on the run's length, which only adds ratios; the text lists them at every window's end."""
+    floor = math.log1p(q["steady_tolerance"]) / q["window"]
+    ends, ratios = zip(*(shrink_rate_ratios(times, widths[:, side], q["window"], q["transient"], floor)
+                         for side in range(2)))
+    ends, ratios = ends[0], np.minimum(*ratios)
+    marks = np.flatnonzero(np.isclose(np.remainder(ends - ends[0] + 1e-9, q["window"]), 0.0, atol=1e-6))
+    listed = ", ".join(f"{ends[i]:g}: {ratios[i]:.2f}" for i in marks)
+    holds = int(np.sum(ratios[marks] >= q["rate_ratio_min"]))
     steady = _steady_time(times, widths, q)
     return [
         claim(c.at_least, f"{name}concentrates", "paper", source, figure,
-              f"{what}: the width holding {q['fraction']:g} of each side's mass keeps shrinking (it is "
-              f"{widths[-1].max():.3g} at t = {times[-1]:g}; settled by the criterion from t = {steady:g}): smallest "
-              f"shrink factor per {q['window']:g} time units over {part} of the run; the run length is ours: for "
-              f"runs ending earlier (end: factor) {listed}, at least {q['shrink_min']:g} for {holds} of "
-              f"{len(earlier)}", q["shrink_min"], factor, published="Dirac masses (t -> infinity)"),
+              f"{what}: the width holding {q['fraction']:g} of each side's mass keeps shrinking at least "
+              f"exponentially (it is {widths[-1].max():.3g} at t = {times[-1]:g}; settled by the criterion from "
+              f"t = {steady:g}): smallest ratio of its shrink rate over a window of {q['window']:g} time units to "
+              f"the rate over the window before (a rate below the steady one, log(1 + {q['steady_tolerance']:g}) "
+              f"per window, counts as that), from t = {q['transient']:g} on (1: exponential; a width settling "
+              f"to a positive limit: exp(-rate window) -> 0); at the windows' ends (t: ratio) {listed}, at least "
+              f"{q['rate_ratio_min']:g} at {holds} of {marks.size}", q["rate_ratio_min"], float(ratios.min()),
+              published="Dirac masses (t -> infinity)"),
         claim(c.at_least, f"{name}dirac_mass", "paper", source, figure,
               f"{what}: mass within {q['radius']:g} of the two peaks at t = {times[-1]:g} (an L1 profile keeps a "
               "share that shrinks with the radius)", q["dirac_mass"], float(masses[-1].sum()),
