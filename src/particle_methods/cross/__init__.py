@@ -6,13 +6,16 @@ blob methods, the LTP and SP methods and a finite-volume scheme all approximate 
 solution, known exactly (:mod:`.exact`). Public entry points:
 
 - :func:`exact_mass_function`, :class:`AggregationSolution`: the exact solution, before and after
-  the blow-up (:mod:`.exact`);
+  the blow-up (:mod:`.exact`); :class:`HullSolution` for asymmetric data whose aggregates move and merge
+  ('two_bumps', :mod:`.hull`);
 - :mod:`.methods`: every method's output at time t;
 - :mod:`.distances`: W1 distances computed on each output;
 - the claims of the comparison are measured in :mod:`particle_replication.verdicts.cross`.
 """
 
-from .exact import AggregationSolution, exact_mass_function
+from .exact import AggregationSolution, exact_mass_function, solution
+from .hull import TWO_BUMPS, BumpData, HullSolution, aggregate_paths, merger_time
 from .profiles import PROFILES, Profile, profile
 
-__all__ = ["PROFILES", "AggregationSolution", "Profile", "exact_mass_function", "profile"]
+__all__ = ["PROFILES", "TWO_BUMPS", "AggregationSolution", "BumpData", "HullSolution", "Profile", "aggregate_paths",
+           "exact_mass_function", "merger_time", "profile", "solution"]

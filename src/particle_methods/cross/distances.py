@@ -19,6 +19,10 @@ import numpy as np
 from ..norms import check_within_range, l1_to_step_function, tail_integrals
 from ..validation import ParameterTypeError, finite_array, finite_result, instance, integer_at_least, sorted_array
 from .exact import AggregationSolution
+from .hull import HullSolution
+
+#: The exact solutions W1 is measured against.
+SOLUTIONS = (AggregationSolution, HullSolution)
 
 #: Gauss-Legendre nodes per smooth piece of |F - F_h| (exact for polynomials of degree 19).
 GAUSS_NODES = 10
@@ -32,7 +36,7 @@ def w1_atoms(solution: AggregationSolution, positions, masses) -> float:
 
     The masses must be non-negative and add up to the solution's mass M (within 1e-9 relative).
     """
-    instance("solution", solution, AggregationSolution)
+    instance("solution", solution, SOLUTIONS)
     x = finite_array("positions", positions)
     m = finite_array("masses", masses)
     if x.shape != m.shape or x.size == 0:
@@ -51,7 +55,7 @@ def w1_atoms(solution: AggregationSolution, positions, masses) -> float:
 def w1_cells(solution: AggregationSolution, edges, values) -> float:
     """W1 between the exact solution and the finite-volume F_h, values[i] on [edges[i], edges[i+1]),
     0 left of the grid and M right of it."""
-    instance("solution", solution, AggregationSolution)
+    instance("solution", solution, SOLUTIONS)
     edges = sorted_array("edges", edges)
     values = finite_array("values", values)
     if values.size + 1 != edges.size:

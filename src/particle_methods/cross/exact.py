@@ -33,6 +33,7 @@ import math
 import numpy as np
 
 from ..validation import finite_result, finite_values, in_interval, nonnegative
+from .hull import BUMP_DATA, BumpData, HullSolution
 from .profiles import MAX_ITERATIONS, Profile, monotone_root, profile
 
 
@@ -157,9 +158,17 @@ class AggregationSolution:
         return finite_result("int_0^w X_t", value, "the data overflow")
 
 
+def solution(data, t: float):
+    """The exact solution at time t: :class:`~particle_methods.cross.hull.HullSolution` for the asymmetric bump data
+    ('two_bumps', a :class:`~particle_methods.cross.hull.BumpData`), :class:`AggregationSolution` otherwise."""
+    if isinstance(data, BumpData) or (isinstance(data, str) and data in BUMP_DATA):
+        return HullSolution(data, t)
+    return AggregationSolution(data, t)
+
+
 def exact_mass_function(data, t: float, x):
     """F(t, x), the mass left of x at time t, of the entropy solution of the aggregation equation
-    with K = |x|/2 from ``data`` (a name: 'smooth20', 'indicator', 'smooth10', 'laplace'; or a
-    :class:`~particle_methods.blob.initial.Data1D`), before and after the blow-up time
-    1/max rho0 (see :class:`AggregationSolution`)."""
-    return AggregationSolution(data, t).cdf(x)
+    with K = |x|/2 from ``data`` (a name: 'smooth20', 'indicator', 'smooth10', 'laplace', 'two_bumps'; a
+    :class:`~particle_methods.blob.initial.Data1D` or a :class:`~particle_methods.cross.hull.BumpData`),
+    before and after the blow-ups and mergers (see :func:`solution`)."""
+    return solution(data, t).cdf(x)

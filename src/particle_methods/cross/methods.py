@@ -37,7 +37,7 @@ from ..ltp.solver import simulate
 from ..norms import cdf_antiderivative
 from ..sticky.spd import MAX_POSITIONS, spd_positions
 from ..validation import finite_array, integer_at_least, nonnegative, positive, same_length
-from .exact import AggregationSolution
+from .exact import AggregationSolution, solution
 from .profiles import Profile, profile
 
 #: The attractive Newtonian kernel |x|/2 of the blob package.
@@ -107,12 +107,11 @@ def particle_velocities(x, masses) -> np.ndarray:
 
 def spd_equal(data, n: int, t: float):
     """(positions, masses) of the SPD with n equal masses at the median quantiles (2.1), at time t."""
-    shape = profile(data)
+    initial = solution(data, 0.0)
     n = integer_at_least("n", n, 1)
     t = nonnegative("t", t)
-    initial = AggregationSolution(shape, 0.0)
-    x = initial.quantile((np.arange(n) + 0.5) * (shape.mass / n))
-    masses = np.full(n, shape.mass / n)
+    x = initial.quantile((np.arange(n) + 0.5) * (initial.mass / n))
+    masses = np.full(n, initial.mass / n)
     return spd_positions(x, weighted_velocities(masses), t), masses
 
 

@@ -1,0 +1,360 @@
+"""Exact entropy solution of the 1D aggregation equation with K = |x|/2 from any sum of polynomial bumps.
+
+In mass coordinates (sticky paper, section 2; Brenier and Grenier) the level w of F moves at the speed
+lambda(w) = M/2 - w (M the total mass), so before any collision it sits at the free-flight position
+
+    Y_t(w) = X_0(w) + t (M/2 - w),    X_0 the quantile of rho0.
+
+The entropy solution's quantile X_t is the derivative of the greatest convex minorant of
+Psi_t(w) = int_0^w Y_t (the continuous Brenier-Grenier hull; Lax-Oleinik for the concave flux
+M F/2 - F^2/2). Its Legendre transform gives the CDF and its antiderivative directly:
+
+    A(t, x) = int_{-inf}^x F(t, .) = max_{0 <= w <= M} (x w - Psi_t(w)),   F(t, x) = the largest maximiser.
+
+Along a bump's levels, parametrised by the initial position a (w = F_0(a)), Y_t(a) = a + t (M/2 - F_0(a))
+has the slope 1 - t rho0(a): it increases except where t rho0 > 1, an interval around the top of each
+bump (closed form for c (1 - s^2)^p). A maximiser lies on a piece where Y_t increases, at the root of
+Y_t = x (or at a piece's end): the maximum over the few pieces is exact up to one monotone root per piece
+(:func:`~particle_methods.cross.profiles.monotone_root`). Aggregates (Dirac masses) are the jumps of F: the
+x at which the best piece of a higher level overtakes the best of the lower ones, found by bisection on
+x (the difference of the two maxima grows with x at the rate of the jump in w; Brent's method), with the masses and levels
+on either side. Everything is exact up to rounding: F_0 and int s rho0 are polynomials, evaluated by the
+stable recurrence of :class:`~particle_methods.blob.initial.Data1D` and in closed form.
+
+The data of issue 29, ``two_bumps``, 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2 (mass
+0.9067, not normalised), blows up in its left bump at t = 1/2 and in its right one at t = 1; the two
+aggregates move towards each other and merge.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..blob.initial import Data1D
+from ..validation import (
+    ParameterTypeError,
+    finite_number,
+    finite_result,
+    finite_values,
+    in_interval,
+    instance,
+    nonnegative,
+    one_of,
+    positive,
+)
+from .profiles import monotone_root
+
+#: Iterations of Brent's method allowed for an aggregate's position (it converges to rounding in about 10).
+POSITION_STEPS = 80
+#: A jump of F smaller than this share of the mass is no aggregate (two pieces that meet continuously).
+JUMP_SHARE = 1e-13
+
+
+@dataclass(frozen=True)
+class Bump:
+    """height (1 - ((x - centre)/radius)^2)_+^power: power 0 is the indicator of [centre - radius, centre + radius]."""
+
+    height: float
+    centre: float
+    radius: float
+    power: int
+
+    def __post_init__(self):
+        positive("height", self.height)
+        finite_number("centre", self.centre)
+        positive("radius", self.radius)
+        object.__setattr__(self, "unit", Data1D("unit bump", self.power))
+
+    @property
+    def mass(self) -> float:
+        return self.height * self.radius * self.unit.mass
+
+    def scaled(self, a):
+        return (np.asarray(a, dtype=np.float64) - self.centre) / self.radius
+
+    def density(self, a):
+        return self.height * self.unit(self.scaled(a))
+
+    def mass_left(self, a):
+        """int_{-inf}^a of the bump: c r (M_1/2 + m_1(s)), s = (a - centre)/radius."""
+        return self.height * self.radius * (0.5 * self.unit.mass + self.unit.mass_from_origin(np.clip(self.scaled(a),
+                                                                                                         -1.0, 1.0)))
+
+    def moment_left(self, a):
+        """int_{-inf}^a x times the bump: c r (centre (M_1/2 + m_1(s)) + r int_{-1}^s u (1 - u^2)^p du)."""
+        s = np.clip(self.scaled(a), -1.0, 1.0)
+        return self.height * self.radius * (self.centre * (0.5 * self.unit.mass + self.unit.mass_from_origin(s))
+                                            + self.radius * self.unit.moment_from_left(s))
+
+    def dense_interval(self, t: float):
+        """The a where t rho0(a) > 1, as (low, high), or None: (1 - s^2)^p > 1/(c t) for |s| < sqrt(1 - (c t)^(-1/p))."""
+        ct = self.height * t
+        if ct <= 1.0:
+            return None
+        half = 1.0 if self.power == 0 else math.sqrt(-math.expm1(-math.log(ct) / self.power))
+        return self.centre - half * self.radius, self.centre + half * self.radius
+
+
+@dataclass(frozen=True)
+class BumpData:
+    """A density made of bumps with disjoint supports, sorted left to right."""
+
+    name: str
+    bumps: tuple[Bump, ...]
+
+    def __post_init__(self):
+        instance("name", self.name, str)
+        if not isinstance(self.bumps, tuple) or not self.bumps or not all(isinstance(b, Bump) for b in self.bumps):
+            raise ParameterTypeError("bumps must be a non-empty tuple of Bump")
+        ends = [(b.centre - b.radius, b.centre + b.radius) for b in self.bumps]
+        if any(right > left for (_, right), (left, _) in zip(ends, ends[1:])):
+            raise ValueError("bumps must be sorted left to right with disjoint supports")
+        masses = np.array([b.mass for b in self.bumps])
+        object.__setattr__(self, "_before", np.concatenate(([0.0], np.cumsum(masses)[:-1])))
+        object.__setattr__(self, "_moments_before", np.concatenate(
+            ([0.0], np.cumsum([b.moment_left(b.centre + b.radius) for b in self.bumps])[:-1])))
+
+    @property
+    def mass(self) -> float:
+        return float(sum(b.mass for b in self.bumps))
+
+    @property
+    def support(self) -> tuple[float, float]:
+        return self.bumps[0].centre - self.bumps[0].radius, self.bumps[-1].centre + self.bumps[-1].radius
+
+    @property
+    def peak(self) -> float:
+        return max(b.height for b in self.bumps)
+
+    def density(self, x):
+        x = finite_values("x", x)
+        return sum(b.density(x) for b in self.bumps)
+
+    def in_bump(self, index: int, a):
+        """(F_0(a), int_{-inf}^a s rho0(s) ds) for a in the support of bump ``index``."""
+        bump = self.bumps[index]
+        return self._before[index] + bump.mass_left(a), self._moments_before[index] + bump.moment_left(a)
+
+
+TWO_BUMPS = BumpData("two bumps 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2",
+                     (Bump(2.0, -0.4, 0.3, 2), Bump(1.0, 0.5, 0.25, 2)))
+#: Data that only the hull solves (asymmetric); the symmetric data of :mod:`.profiles` are bumps too.
+BUMP_DATA = {"two_bumps": TWO_BUMPS}
+
+
+def bump_data(data) -> BumpData:
+    """``data`` itself, or the data named by it: 'two_bumps', or a symmetric polynomial datum of
+    :data:`~particle_methods.blob.initial.DATA_1D` ('smooth20', 'indicator', 'smooth10') as one bump."""
+    if isinstance(data, BumpData):
+        return data
+    if isinstance(data, Data1D):
+        return BumpData(data.name, (Bump(1.0, 0.0, 1.0, data.power),))
+    if isinstance(data, str):
+        from ..blob.initial import DATA_1D  # the symmetric data, as single bumps
+
+        choices = {**BUMP_DATA, **{name: BumpData(d.name, (Bump(1.0, 0.0, 1.0, d.power),))
+                                   for name, d in DATA_1D.items()}}
+        return one_of("initial data", data, choices)
+    raise ParameterTypeError(f"data must be a data name, a Data1D or a BumpData, got {data!r}")
+
+
+@dataclass(frozen=True)
+class _Piece:
+    """Levels [w0, w1] of one bump, at positions [a0, a1], on which Y_t increases."""
+
+    bump: int
+    a0: float
+    a1: float
+
+
+class HullSolution:
+    """Entropy solution at time t of F_t + (M F/2 - F^2/2)_x = 0 from bump data (module docstring).
+
+    Attributes ``mass`` M, ``t``, ``aggregates`` (positions, masses, lower levels), the Dirac masses at t.
+    Provides what the W1 distances need (:func:`particle_methods.norms.l1_to_step_function`): ``cdf``,
+    ``antiderivative``, ``quantile``, ``quantile_integral``.
+    """
+
+    def __init__(self, data, t: float):
+        self.data = bump_data(data)
+        self.t = nonnegative("t", t)
+        if not math.isfinite(self.t * self.data.mass):
+            raise ValueError(f"t = {t} is too large")
+        self.mass = self.data.mass
+        self._pieces = self._increasing_pieces()
+        self.aggregates = self._find_aggregates()
+        positions, masses, levels = self.aggregates
+        #: Mass held in Dirac masses at t.
+        self.dirac_mass = float(masses.sum())
+
+    # --- free flight along the pieces -------------------------------------------------------------
+
+    def _increasing_pieces(self):
+        pieces = []
+        for index, bump in enumerate(self.data.bumps):
+            low, high = bump.centre - bump.radius, bump.centre + bump.radius
+            dense = bump.dense_interval(self.t)
+            if dense is None:
+                pieces.append(_Piece(index, low, high))
+            else:
+                pieces += [_Piece(index, low, max(low, dense[0])), _Piece(index, min(high, dense[1]), high)]
+        return pieces
+
+    def _levels(self, piece, a):
+        """(w, Psi_t(w), Y_t(w)) at the positions a of a piece."""
+        w, moment = self.data.in_bump(piece.bump, a)
+        t, mass = self.t, self.mass
+        return w, moment + t * (0.5 * mass * w - 0.5 * w * w), a + t * (0.5 * mass - w)
+
+    def _best_on_piece(self, piece, x):
+        """(value, w) of max over the piece's levels of x w - Psi_t(w): at the root of Y_t = x, or at an end."""
+        bump = self.data.bumps[piece.bump]
+
+        def flight(a):
+            return self._levels(piece, a)[2]
+
+        ends = np.array([piece.a0, piece.a1])
+        y0, y1 = flight(ends)
+        inside = (x > y0) & (x < y1)
+        a = np.where(x <= y0, piece.a0, piece.a1)
+        if np.any(inside):
+            a[inside] = monotone_root(flight, lambda s: 1.0 - self.t * bump.density(s), x[inside], piece.a0, piece.a1)
+        w, psi, _ = self._levels(piece, a)
+        return x * w - psi, w
+
+    def _best(self, x, pieces):
+        """(value, largest maximiser w) of x w - Psi_t(w) over the given pieces (ties: the larger w)."""
+        value, level = np.full(x.shape, -np.inf), np.zeros(x.shape)
+        for piece in pieces:
+            v, w = self._best_on_piece(piece, x)
+            better = (v > value) | ((v == value) & (w > level))
+            value, level = np.where(better, v, value), np.where(better, w, level)
+        return value, level
+
+    # --- aggregates ---------------------------------------------------------------------------------
+
+    def _find_aggregates(self):
+        """Jumps of F: for each boundary between consecutive pieces, the x where the pieces above overtake
+        the pieces below (bisection on x), and the jump in levels there; boundaries at the same x are one
+        aggregate."""
+        pieces = self._pieces
+        low, high = self.data.support
+        bracket = (low - self.t * self.mass, high + self.t * self.mass)  # every Y_t lies within
+        found = []
+        for split in range(1, len(pieces)):
+            below, above = pieces[:split], pieces[split:]
+
+            def overtaking(x, below=below, above=above):
+                point = np.array([x])
+                return float(self._best(point, above)[0][0] - self._best(point, below)[0][0])
+
+            # (Where two pieces meet at one level, the difference is 0 over an interval of x and Brent's method
+            # may not settle: any x of it finds no jump.)
+            x = brentq(overtaking, *bracket, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=POSITION_STEPS,
+                       disp=False)
+            point = np.array([x])
+            lower, upper = self._best(point, below)[1][0], self._best(point, above)[1][0]
+            if upper - lower > JUMP_SHARE * self.mass:
+                found.append((x, float(lower), float(upper)))
+        merged = []
+        for x, lower, upper in found:
+            # Boundaries inside one aggregate find the same two levels; distinct aggregates share none.
+            if merged and lower < merged[-1][2] - JUMP_SHARE * self.mass:
+                merged[-1] = (merged[-1][0], min(merged[-1][1], lower), max(merged[-1][2], upper))
+            else:
+                merged.append((x, lower, upper))
+        positions = np.array([m[0] for m in merged])
+        lowers = np.array([m[1] for m in merged])
+        masses = np.array([m[2] - m[1] for m in merged])
+        return positions, masses, lowers
+
+    # --- what W1 needs ------------------------------------------------------------------------------
+
+    def antiderivative(self, x):
+        """int_{-inf}^x F(t, .) = max_w (x w - Psi_t(w))."""
+        x = finite_values("x", x)
+        value, _ = self._best(x.ravel(), self._pieces)
+        return finite_result("int F(t, .)", value.reshape(x.shape), "x is too large: x F(t, x) overflows")
+
+    def cdf(self, x):
+        """F(t, x), right-continuous: the largest maximiser of x w - Psi_t(w)."""
+        x = finite_values("x", x)
+        _, level = self._best(x.ravel(), self._pieces)
+        return np.clip(level, 0.0, self.mass).reshape(x.shape)
+
+    def _free_quantile(self, w):
+        """(Y_t(w), Psi_t(w)) at levels w off the aggregates: the initial quantile by one root per level."""
+        data = self.data
+        before = np.append(data._before, self.mass)
+        # A level between two bumps' masses (F_0 flat over the gap) belongs to the left one: X_t is left-continuous.
+        index = np.clip(np.searchsorted(before, w, side="left") - 1, 0, len(data.bumps) - 1)
+        y, psi = np.empty_like(w), np.empty_like(w)
+        for b, bump in enumerate(data.bumps):
+            mine = index == b
+            if not np.any(mine):
+                continue
+            low, high = bump.centre - bump.radius, bump.centre + bump.radius
+            level = w[mine]
+            a = monotone_root(lambda s: data.in_bump(b, s)[0], bump.density, level, np.full(level.size, low),
+                              np.full(level.size, high))
+            # The bump's first and last levels sit at its ends (F_0 is flat there: a root would be any point of
+            # the flat tail to rounding).
+            a = np.where(level <= before[b], low, np.where(level >= before[b + 1], high, a))
+            piece = _Piece(b, low, high)
+            _, psi[mine], y[mine] = self._levels(piece, a)
+        return y, psi
+
+    def quantile(self, w):
+        """X_t(w) = inf{x : F(t, x) >= w}: the aggregate's position on its levels, the free flight elsewhere."""
+        w = in_interval("w", w, 0.0, self.mass)
+        flat = w.ravel()
+        value, _ = self._free_quantile(flat)
+        positions, masses, lowers = self.aggregates
+        for x, m, lower in zip(positions, masses, lowers):
+            value = np.where((flat >= lower) & (flat <= lower + m), x, value)
+        return finite_result("X_t(w)", value.reshape(w.shape), "the data overflow")
+
+    def quantile_integral(self, w):
+        """int_0^w X_t = the convex minorant of Psi_t at w: Psi_t off the aggregates, linear across each."""
+        w = in_interval("w", w, 0.0, self.mass)
+        flat = w.ravel()
+        _, value = self._free_quantile(flat)
+        positions, masses, lowers = self.aggregates
+        if positions.size:
+            _, start = self._free_quantile(lowers)
+            for x, m, lower, psi in zip(positions, masses, lowers, start):
+                value = np.where((flat > lower) & (flat < lower + m), psi + (flat - lower) * x, value)
+        return finite_result("int_0^w X_t", value.reshape(w.shape), "the data overflow")
+
+
+def aggregate_paths(data, times):
+    """(positions, masses) of the aggregates at each of the ``times``, as lists of arrays (one per time)."""
+    times = finite_values("times", times)
+    if times.ndim != 1 or times.size == 0:
+        raise ValueError(f"times must be a non-empty 1D array, got shape {times.shape}")
+    solutions = [HullSolution(data, float(t)) for t in times]
+    return [s.aggregates[0] for s in solutions], [s.aggregates[1] for s in solutions]
+
+
+def merger_time(data, low: float, high: float) -> float:
+    """The time in [low, high] at which the number of aggregates drops, by bisection to rounding; ``low`` and
+    ``high`` must bracket one such drop (more aggregates at ``low`` than at ``high``)."""
+    low, high = nonnegative("low", low), nonnegative("high", high)
+    if not low < high:
+        raise ValueError(f"need low < high, got {low} and {high}")
+    count = lambda t: HullSolution(data, t).aggregates[0].size  # noqa: E731
+    before, after = count(low), count(high)
+    if not before > after:
+        raise ValueError(f"[{low}, {high}] brackets no merger: {before} aggregates, then {after}")
+    while True:
+        middle = 0.5 * (low + high)
+        if middle in (low, high):
+            return high
+        if count(middle) > after:
+            low = middle
+        else:
+            high = middle
