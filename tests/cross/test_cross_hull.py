@@ -94,3 +94,4 @@ def test_bad_bumps_and_times_are_refused():
     with pytest.raises(ValueError, match="times"):
         aggregate_paths("two_bumps", [])
     assert math.isfinite(HullSolution("two_bumps", 1e6).dirac_mass)
+

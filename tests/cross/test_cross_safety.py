@@ -201,3 +201,16 @@ def test_ltp_method_names_its_own_time_parameter():
     for t in (-1.0, 0.0, float("nan")):
         with pytest.raises(ValueError, match=r"^t must"):
             ltp_method("smooth20", 0.1, 0.01, t)
+
+
+@pytest.mark.parametrize("change", [{"peak": -1.0}, {"peak": 0.0}, {"mass": float("nan")}, {"mass": 0.0},
+                                    {"radius": -1.0}, {"radius": None}, {"density": 3.0}],
+                         ids=["negative peak", "zero peak", "NaN mass", "zero mass", "negative radius", "None radius",
+                              "density not callable"])
+def test_a_profile_is_checked_at_construction(change):
+    import dataclasses
+
+    from particle_methods.cross import PROFILES
+
+    with pytest.raises(ValueError, match=next(iter(change))):
+        dataclasses.replace(PROFILES["smooth20"], **change)

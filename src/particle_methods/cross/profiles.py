@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..blob.initial import DATA_1D, Data1D
-from ..validation import ParameterTypeError, one_of
+from ..validation import ParameterTypeError, instance, one_of, positive
 
 #: Newton steps (each safeguarded by bisection) allowed to reach rounding; bisection alone needs 64.
 MAX_ITERATIONS = 200
@@ -73,6 +73,21 @@ class Profile:
     mass_from_origin: Callable
     moment_from_left: Callable
     level_position: Callable
+
+    def __post_init__(self):
+        # Checked at construction: a zero or negative peak or mass would give a CDF outside [0, M] or divide by 0
+        # in the blow-up time 1/peak.
+        instance("name", self.name, str)
+        for key in ("mass", "peak"):
+            value = positive(key, getattr(self, key))
+            if not math.isfinite(value):
+                raise ValueError(f"{key} must be finite, got {value}")
+        if not (isinstance(self.radius, (int, float)) and not isinstance(self.radius, bool) and self.radius > 0):
+            raise ParameterTypeError(f"radius must be a positive number (inf for an unbounded support), got "
+                                     f"{self.radius!r}")
+        for key in ("density", "mass_from_origin", "moment_from_left", "level_position"):
+            if not callable(getattr(self, key)):
+                raise ParameterTypeError(f"{key} must be callable, got {getattr(self, key)!r}")
 
 
 def _polynomial_profile(data: Data1D) -> Profile:
