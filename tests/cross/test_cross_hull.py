@@ -35,7 +35,8 @@ def test_before_the_first_blowup_every_level_flies_freely():
     assert solution.aggregates[0].size == 0
     for w in (0.05, 0.3, 0.6, 0.7, 0.85):
         bump = 0 if w < MASS_A else 1
-        a = brentq(lambda s: TWO_BUMPS.in_bump(bump, np.array([s]))[0][0] - w, -0.7, 0.75, xtol=1e-15)
+        a = brentq(lambda s, bump=bump, w=w: TWO_BUMPS.in_bump(bump, np.array([s]))[0][0] - w, -0.7, 0.75,
+                   xtol=1e-15)
         assert solution.quantile(np.array([w]))[0] == pytest.approx(a + t * (MASS / 2 - w), abs=1e-13)
         assert solution.cdf(np.array([a + t * (MASS / 2 - w)]))[0] == pytest.approx(w, abs=1e-12)
 

@@ -11,8 +11,8 @@ from particle_methods.ltp.measures import (
     collapse_times,
     excess_variation,
     peak_count,
-    shrink_rate_ratios,
     shrink_rate_inverse,
+    shrink_rate_ratios,
     side_concentration,
 )
 

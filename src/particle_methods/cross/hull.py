@@ -16,9 +16,9 @@ has the slope 1 - t rho0(a): it increases except where t rho0 > 1, an interval a
 bump (closed form for c (1 - s^2)^p). A maximiser lies on a piece where Y_t increases, at the root of
 Y_t = x (or at a piece's end): the maximum over the few pieces is exact up to one monotone root per piece
 (:func:`~particle_methods.cross.profiles.monotone_root`). Aggregates (Dirac masses) are the jumps of F: the
-x at which the best piece of a higher level overtakes the best of the lower ones, found by bisection on
-x (the difference of the two maxima grows with x at the rate of the jump in w; Brent's method), with the masses and levels
-on either side. Everything is exact up to rounding: F_0 and int s rho0 are polynomials, evaluated by the
+x at which the best piece of a higher level overtakes the best of the lower ones, found by Brent's
+method on x (the difference of the two maxima grows with x at the rate of the jump in w), with the masses
+and levels on either side. Everything is exact up to rounding: F_0 and int s rho0 are polynomials, evaluated by the
 stable recurrence of :class:`~particle_methods.blob.initial.Data1D` and in closed form.
 
 The data of issue 29, ``two_bumps``, 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2 (mass
@@ -91,7 +91,8 @@ class Bump:
                                             + self.radius * self.unit.moment_from_left(s))
 
     def dense_interval(self, t: float):
-        """The a where t rho0(a) > 1, as (low, high), or None: (1 - s^2)^p > 1/(c t) for |s| < sqrt(1 - (c t)^(-1/p))."""
+        """The a where t rho0(a) > 1, as (low, high), or None:
+        (1 - s^2)^p > 1/(c t) for |s| < sqrt(1 - (c t)^(-1/p))."""
         ct = self.height * t
         if ct <= 1.0:
             return None
@@ -299,7 +300,7 @@ class HullSolution:
                 continue
             low, high = bump.centre - bump.radius, bump.centre + bump.radius
             level = w[mine]
-            a = monotone_root(lambda s: data.in_bump(b, s)[0], bump.density, level, np.full(level.size, low),
+            a = monotone_root(lambda s, b=b: data.in_bump(b, s)[0], bump.density, level, np.full(level.size, low),
                               np.full(level.size, high))
             # The bump's first and last levels sit at its ends (F_0 is flat there: a root would be any point of
             # the flat tail to rounding).
