@@ -49,6 +49,13 @@ show_figure("cross", "error_size")
 show_figure("cross", "error_time")
 
 # %% [markdown]
+# Asymmetric data whose aggregates move and merge (`two_bumps`), against the exact solution by the continuous
+# hull (`particle_methods.cross.hull`): the paths, W1 against t, and W1 uniformly in time.
+
+# %%
+show_figure("cross", "aggregates")
+
+# %% [markdown]
 # Wall time to reach W1 = 1e-6 (interpolated between runs; * marks an extrapolation from the two
 # largest runs):
 

@@ -228,3 +228,13 @@ def test_ltp_on_the_indicator_is_refused_early_at_the_support_edge():
     densest = particles.centres[np.argmax(density)]
     edge = -AggregationSolution("indicator", 0.975).left_end
     assert abs(abs(densest) - edge) < 2 * h and density.max() > 2.5 / (1.0 - 0.975)
+
+
+def test_blob_paths_match_separate_runs_and_take_two_bumps():
+    positions, masses = methods.blob_paths("two_bumps", 1 / 20, [0.3, 1.2], order=4, q=0.9)
+    for k, t in enumerate((0.3, 1.2)):
+        alone, _ = methods.blob_method("two_bumps", 1 / 20, t, order=4, q=0.9)
+        np.testing.assert_allclose(positions[k], alone, rtol=0, atol=1e-9)  # dense output against a run ending at t
+    assert masses.sum() == pytest.approx(0.9066666666666667, rel=1e-14)  # grid masses scaled to the exact total
+    with pytest.raises(ValueError, match="times"):
+        methods.blob_paths("two_bumps", 1 / 20, [1.2, 0.3], order=4, q=0.9)

@@ -469,3 +469,71 @@ def test_early_refusal_explained_by_the_edge_particle_passes_and_other_causes_fa
 def test_time_to_error_does_not_extrapolate_a_cost_that_did_not_grow():
     """The largest run faster than the one before (a parallel threshold, a cache): no growth measured."""
     assert math.isnan(v.time_to_error([1e-2, 1e-3], [0.2, 0.15], 1e-6, min_seconds=0.1)[0])
+
+
+# Aggregates that move and merge (two_bumps)
+
+AGG = CONFIG["aggregates"]
+AGG_TIMES = np.union1d(np.linspace(0.0, AGG["t_end"], AGG["steps"] + 1), AGG["fixed_times"])
+MERGER = 0.9 / (0.9066666666666667 / 2)
+
+
+def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, blob_order=4.0, **changes):
+    """A two_bumps result as aggregates_data.py saves it: W1 falling in time from c/size^spd_order at t = 0 (times
+    (1 + growth t) if growth), merger errors 1e-1/n^merger_order, the blob's centres 1/(1/h)^blob_order off."""
+    blob = f"blob, m = {AGG['blob']['order']}"
+    runs = [("SPD, equal masses", n) for n in AGG["spd_n"]] + [("SPD, grid weights", k) for k in AGG["grid_inverse_h"]]
+    runs += [(blob, k) for k in AGG["blob"]["inverse_h"]] + [("Godunov for F", k) for k in AGG["godunov_cells"]]
+    exact = np.full((AGG_TIMES.size, 2), np.nan)
+    exact[(AGG_TIMES > 0.5) & (AGG_TIMES < 1.0), 0] = -0.3
+    exact[(AGG_TIMES > 1.0) & (AGG_TIMES < MERGER)] = [-0.2, 0.02]
+    exact[AGG_TIMES > MERGER, 0] = -0.135
+    errors, centres, mergers = [], [], []
+    for name, size in runs:
+        errors.append(0.3 * size ** -spd_order * np.exp(-AGG_TIMES) * (1.0 + growth * AGG_TIMES))
+        centres.append(exact + (size ** -blob_order if name == blob else 0.0))
+        mergers.append(MERGER + (0.1 * size ** -merger_order if name == "SPD, equal masses" else grid_merger)
+                       if name.startswith("SPD") else np.nan)
+    result = {"times": AGG_TIMES, "fixed_times": np.array(AGG["fixed_times"], float), "exact_positions": exact,
+              "exact_masses": np.where(np.isfinite(exact), 0.3, np.nan), "merger": MERGER,
+              "path_times": AGG_TIMES, "path_positions": exact, "path_masses": np.where(np.isfinite(exact), 0.3, np.nan),
+              "spd_clusters": np.full((AGG_TIMES.size, 4), np.nan), "blowups": np.array([0.5, 1.0]),
+              "methods": np.array([name for name, _ in runs]), "size": np.array([size for _, size in runs]),
+              "error": np.array(errors), "centre": np.array(centres), "spread": np.zeros_like(np.array(centres)),
+              "method_merger": np.array(mergers)}
+    return result | changes
+
+
+def run_aggregates(a):
+    return v.aggregate_claims(a, Recorder(lambda *_: None), CONFIG)
+
+
+def test_aggregate_results_have_the_keys_the_script_saves():
+    assert set(aggregates()) == saved_keys("aggregates_data.py")
+
+
+def test_aggregate_claims_pass_on_the_expected_outcome(tmp_path):
+    save_results(tmp_path / "aggregates.npz", **aggregates())
+    assert not failing(run_aggregates(load_results(tmp_path / "aggregates.npz")))
+
+
+def test_spd_at_order_one_half_uniformly_in_time_fails():
+    only_failing(run_aggregates(aggregates(spd_order=0.5)), "two_bumps.spd_order.equal_masses",
+                 "two_bumps.spd_order.grid_weights")
+
+
+def test_spd_error_growing_after_the_start_breaks_the_contraction():
+    # W1 (1 + 2 t) e^-t peaks above its t = 0 value at t = 1/2.
+    only_failing(run_aggregates(aggregates(growth=2.0)), "two_bumps.spd_contraction")
+
+
+def test_an_spd_merging_at_a_time_that_does_not_converge_fails():
+    only_failing(run_aggregates(aggregates(merger_order=0.0)), "aggregate.spd_merger.equal_masses")
+
+
+def test_a_grid_spd_merging_1e_6_late_fails():
+    only_failing(run_aggregates(aggregates(grid_merger=1e-6)), "aggregate.spd_merger.grid_weights")
+
+
+def test_blob_aggregates_off_by_a_fixed_offset_fail():
+    only_failing(run_aggregates(aggregates(blob_order=0.0)), "aggregate.blob_centres")

@@ -1,5 +1,6 @@
 """Every method of the three papers applied to one equation: rho_t + (rho v)_x = 0, v = -K' * rho,
-K = |x|/2 (so v = (M - 2F)/2), from the symmetric data of :mod:`.profiles`.
+K = |x|/2 (so v = (M - 2F)/2), from the symmetric data of :mod:`.profiles` and (SPDs, blob method,
+Godunov) the asymmetric bump data of :mod:`.hull` ('two_bumps').
 
 Each function returns the method's own output at time t, the object W1 is measured on
 (:mod:`.distances`): positions and masses of point masses, cell values of F, or LTP/SP particles.
@@ -10,7 +11,8 @@ Each function returns the method's own output at time t, the object W1 is measur
   Brenier-Grenier hull), velocities (mass right - mass left)/2.
 - :func:`particle_method`: the blob paper's particle method (Definition 2.2 with grad K(0) = 0),
   integrated by DOP853; defined up to the first collision of two particles.
-- :func:`blob_method`: Definition 2.2 with K_delta = K * psi_delta, delta = h^q.
+- :func:`blob_method`: Definition 2.2 with K_delta = K * psi_delta, delta = h^q (:func:`blob_paths`: at
+  several times from one integration).
 - :func:`ltp_method`: LTP (and SP) of Campos Pinto et al. with W = |x|/2.
 - :func:`godunov_mass`: Godunov for F; with u = F/M and tau = M t the law is (5.3),
   u_tau + (u(1 - u)/2)_x = 0, solved by :func:`particle_methods.finite_volume.godunov`.
@@ -37,7 +39,8 @@ from ..ltp.solver import simulate
 from ..norms import cdf_antiderivative
 from ..sticky.spd import MAX_POSITIONS, spd_positions
 from ..validation import finite_array, integer_at_least, nonnegative, positive, same_length
-from .exact import AggregationSolution, solution
+from .exact import solution
+from .hull import BUMP_DATA, BumpData, bump_data
 from .profiles import Profile, profile
 
 #: The attractive Newtonian kernel |x|/2 of the blob package.
@@ -56,11 +59,29 @@ def _compact(shape: Profile) -> Profile:
     return shape
 
 
+def _is_bumps(data) -> bool:
+    return isinstance(data, BumpData) or (isinstance(data, str) and data in BUMP_DATA)
+
+
+def _grid_density(data):
+    """rho0 of data the grid methods take: a symmetric profile on [-1, 1], or bump data inside [-1, 1]."""
+    if _is_bumps(data):
+        bumps = bump_data(data)
+        low, high = bumps.support
+        if low < -1.0 or high > 1.0:
+            raise ValueError(f"the grid methods need data supported in [-1, 1], got {bumps.name} on [{low}, {high}]")
+        return bumps.density
+    return _compact(profile(data)).density
+
+
 def grid_particles(data, h: float):
     """(positions, densities rho0(jh), masses) of the grid particles jh in [-1, 1] with positive
     mass; masses rho0(jh) h, halved at the two ends (trapezoid rule, total mass exact for (4.4)).
-    1/h must be a whole number k (the grid then holds +-1); at most MAX_POSITIONS = 2k + 1 points."""
-    shape = _compact(profile(data))
+    1/h must be a whole number k (the grid then holds +-1); at most MAX_POSITIONS = 2k + 1 points.
+    For bump data (two_bumps) the masses are scaled to the exact total: c (1 - s^2)^2 is only C^1 at the
+    ends of its support, where the trapezoid rule then errs by O(h^2) (6e-5 of the mass at h = 1/20), and W1
+    between measures of different masses is infinite; for (4.3)-(4.5) the sum is exact to rounding."""
+    density_of = _grid_density(data)
     h = positive("h", h)
     k = round(1.0 / h)
     if not (k >= 1 and abs(k * h - 1.0) <= 1e-9):
@@ -68,11 +89,14 @@ def grid_particles(data, h: float):
     if 2 * k + 1 > MAX_POSITIONS:
         raise ValueError(f"h = {h} gives {2 * k + 1} grid points, more than MAX_POSITIONS = {MAX_POSITIONS}")
     points = np.arange(-k, k + 1) / k
-    density = shape.density(points)
+    density = density_of(points)
     masses = density * h
     masses[[0, -1]] *= 0.5
     keep = masses > 0
-    return points[keep], density[keep], masses[keep]
+    masses = masses[keep]
+    if _is_bumps(data):
+        masses *= bump_data(data).mass / np.sum(masses)
+    return points[keep], density[keep], masses
 
 
 def _levels(masses):
@@ -131,12 +155,19 @@ def particle_method(data, h: float, t: float, *, rtol: float = 1e-12, atol: floa
 
 def blob_method(data, h: float, t: float, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
     """(positions, masses) of the blob method with the mollifier of ``order`` and delta = h^q at t."""
+    positions, masses = blob_paths(data, h, [nonnegative("t", t)], order=order, q=q, rtol=rtol, atol=atol)
+    return positions[-1], masses
+
+
+def blob_paths(data, h: float, times, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
+    """(positions at each of the increasing ``times``, shape (times, particles); masses) of the blob method with
+    the mollifier of ``order`` and delta = h^q, from one integration."""
     x, density, masses = grid_particles(data, h)
     h = positive("h", h)
     kernel = kernel_1d(KERNEL, mollifier(order, 1), h ** positive("q", q))
-    run = integrate_particles(x[:, None], density, masses, kernel, [nonnegative("t", t)], with_density=False,
-                              rtol=rtol, atol=atol, h=h)
-    return run.positions[-1, :, 0], masses
+    run = integrate_particles(x[:, None], density, masses, kernel, times, with_density=False, rtol=rtol, atol=atol,
+                              h=h)
+    return run.positions[:, :, 0], masses
 
 
 def initial_density(data) -> InitialDensity:
@@ -159,12 +190,12 @@ def ltp_method(data, h: float, dt: float, t: float, *, method: str = "ltp", eps:
 def godunov_mass(data, cells: int, t: float, *, cfl: float = 0.9):
     """(edges, F values) of Godunov's scheme for F on ``cells`` cells of [-1, 1] at time t, started
     from the exact cell averages of F0 (ghost states 0 and M)."""
-    shape = _compact(profile(data))
+    _grid_density(data)  # supported in [-1, 1]
     cells = integer_at_least("cells", cells, 1)
     t = nonnegative("t", t)
     edges = np.linspace(-1.0, 1.0, cells + 1)
-    initial = AggregationSolution(shape, 0.0)
+    initial = solution(data, 0.0)
     integrals = np.diff(cdf_antiderivative(initial, edges))
-    u0 = integrals / (np.diff(edges) * shape.mass)
-    u = godunov(CONCAVE, u0, edges, shape.mass * t, cfl=cfl, left=0.0, right=1.0)
-    return edges, shape.mass * u
+    u0 = integrals / (np.diff(edges) * initial.mass)
+    u = godunov(CONCAVE, u0, edges, initial.mass * t, cfl=cfl, left=0.0, right=1.0)
+    return edges, initial.mass * u

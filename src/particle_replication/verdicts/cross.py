@@ -435,7 +435,78 @@ def behaviour_claims(b, p):
     ]
 
 
+SOURCE_AGGREGATES = ("sticky paper Remark 3.3 and section 1.1.3 (a cluster moves at (mass right - mass left)/2); "
+                     "the exact solution by the continuous hull (particle_methods.cross.hull)")
+
+
+def _method_rows(a, method):
+    rows = np.flatnonzero(a["methods"] == method)
+    return rows[np.argsort(a["size"][rows], kind="stable")]
+
+
+def aggregate_claims(a, rates: Recorder, p):
+    """two_bumps, whose aggregates move and merge: the SPDs' W1 uniformly in time (order, contraction), their
+    merger times, and the blob method's aggregate centres, against the exact solution by the hull."""
+    q, window = p["aggregates"], p["fit_points"]
+    rules = q["claims"]
+    out = []
+    ratios = []
+    for method in SPD_METHODS:
+        rows = _method_rows(a, method)
+        sizes, errors = a["size"][rows], a["error"][rows]
+        largest = errors.max(axis=1)
+        slope = -rates.add(order(f"{PAPER}.two_bumps.spd_order", "size", sizes, largest, window, method))
+        key = "equal_masses" if method == "SPD, equal masses" else "grid_weights"
+        out.append(claim(
+            c.between, f"two_bumps.spd_order.{key}", "derived", SOURCE_SPD, "aggregates",
+            f"{method}, two_bumps: order in the size of the largest W1 over the time grid (t = 0 to "
+            f"{float(a['times'][-1]):g}, through both blow-ups and the merger): the data's discretisation is O(1/n) "
+            f"and the SPD, exact for it, contracts W1 (largest W1: {', '.join(f'{e:.3g}' for e in largest)})",
+            *rules["spd_order"], slope))
+        ratios.extend((errors / errors[:, :1]).ravel())
+        error = np.abs(a["method_merger"][rows] - float(a["merger"]))
+        listed = ", ".join(f"{e:.3g}" for e in error)
+        if key == "equal_masses":
+            merged = -rates.add(order(f"{PAPER}.aggregate.spd_merger", "size", sizes, np.maximum(error, 1e-300),
+                                      window, method))
+            out.append(claim(
+                c.at_least, f"aggregate.spd_merger.{key}", "derived", SOURCE_AGGREGATES, "aggregates",
+                f"{method}: the time its two heavy clusters become one, against the exact merger at "
+                f"{float(a['merger']):.10g}: order of the error in n (errors {listed}; the clusters' masses are "
+                "O(1/n) off where the gap between the bumps falls inside a particle's levels)",
+                rules["merger_order_min"], merged))
+        else:
+            out.append(claim(
+                c.at_most, f"aggregate.spd_merger.{key}", "derived", SOURCE_AGGREGATES, "aggregates",
+                f"{method}: the time its two heavy clusters become one, against the exact merger at "
+                f"{float(a['merger']):.10g}: largest error on the {window} finest grids (errors {listed}); the grid's "
+                "masses and centres are O(h^4) from the exact ones (trapezoid rule, the bumps' ends on the grid), so "
+                "the merger is exact to rounding", c.ROUNDING * TIME, float(error[-window:].max())))
+    out.append(claim(
+        c.at_most, "two_bumps.spd_contraction", "derived", SOURCE_SPD, "aggregates",
+        "both SPDs, every size: W1(SPD(t), exact(t)) / W1(SPD(0), exact(0)) over the time grid, largest (the entropy "
+        "solution contracts W1, and the SPD is the entropy solution of its discrete data; a wrong exact solution "
+        "after a blow-up or the merger, or a wrong cluster speed, breaks it)",
+        1.0 + rules["contraction_tolerance"], float(np.max(ratios))))
+    blob = f"blob, m = {q['blob']['order']}"
+    rows = _method_rows(a, blob)
+    fixed = [int(np.argmin(np.abs(a["times"] - t))) for t in a["fixed_times"]]
+    with_aggregates = [i for i in fixed if np.any(np.isfinite(a["exact_positions"][i]))]
+    centre_error = np.array([np.nanmax(np.abs(a["centre"][r][with_aggregates] - a["exact_positions"][with_aggregates]))
+                             for r in rows])
+    centre_order = -rates.add(order(f"{PAPER}.aggregate.blob_centres", "size", a["size"][rows], centre_error, window,
+                                    blob))
+    out.append(claim(
+        c.at_least, "aggregate.blob_centres", "derived", SOURCE_AGGREGATES, "aggregates",
+        f"{blob}, delta = h^{q['blob']['q']:g}: the centre of the particles in each exact aggregate's levels against "
+        f"its position, largest over the aggregates at t = "
+        f"{', '.join(f'{float(t):g}' for t in a['times'][with_aggregates])}; order in 1/h (errors "
+        f"{', '.join(f'{e:.3g}' for e in centre_error)})", rules["blob_centre_order_min"], centre_order))
+    return out
+
+
 def claims(results, cfg, recorder: Recorder) -> list:
     """Every claim of the comparison from its result files (``results``: file stem -> arrays) and the
     bands and tolerances of ``cfg``."""
-    return [*study_claims(results["study"], recorder, cfg), *behaviour_claims(results["behaviour"], cfg)]
+    return [*study_claims(results["study"], recorder, cfg), *behaviour_claims(results["behaviour"], cfg),
+            *aggregate_claims(results["aggregates"], recorder, cfg)]

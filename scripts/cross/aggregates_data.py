@@ -1,0 +1,134 @@
+"""Aggregates that move and merge: the asymmetric data two_bumps (particle_methods.cross.hull) by the SPD (equal
+masses and grid weights), the blob method and Godunov, against the exact solution by the continuous hull.
+
+- exact: the aggregates (positions, masses) at every time of the grid, the blow-up times 1/peak of each bump, the
+  merger time (bisection on the number of aggregates);
+- every method and size: W1 to the exact solution at every time of the grid (its largest value is the error
+  uniformly in time), and, at every time, the centre of mass and the spread of the particles whose levels lie
+  in each exact aggregate (the levels k - 1/2 of the cumulative masses; NaN for Godunov, which has no particles);
+- the SPD: its merger time, when its two heaviest clusters (particles at one position) become one.
+"""
+
+import numpy as np
+
+from particle_methods.cross import HullSolution, merger_time
+from particle_methods.cross import methods as m
+from particle_methods.cross.distances import w1_atoms, w1_cells
+from particle_methods.sticky.spd import spd_positions
+from particle_replication.workflow import logged, progress, save_results
+
+DATA = "two_bumps"
+
+
+def grid_times(p):
+    """The time grid: `steps` equal steps up to t_end, with the fixed times added."""
+    return np.union1d(np.linspace(0.0, p["t_end"], p["steps"] + 1), p["fixed_times"])
+
+
+def aggregate_centres(solution, positions, masses):
+    """(centre, spread) of the particles whose levels lie in each exact aggregate, padded to `slots` with NaN."""
+    order = np.argsort(positions, kind="stable")
+    x, w = positions[order], masses[order]
+    levels = np.cumsum(w) - 0.5 * w
+    centres, spreads = [], []
+    for position, mass, lower in zip(*solution.aggregates):
+        inside = (levels > lower) & (levels < lower + mass)
+        if not np.any(inside):
+            centres.append(np.nan)
+            spreads.append(np.nan)
+            continue
+        centres.append(float(np.sum(w[inside] * x[inside]) / np.sum(w[inside])))
+        spreads.append(float(np.max(np.abs(x[inside] - position))))
+    return centres, spreads
+
+
+def clusters(positions, masses, share):
+    """Number of clusters (particles at one position) holding at least ``share`` of the mass."""
+    values, index = np.unique(positions, return_inverse=True)
+    totals = np.bincount(index, weights=masses)
+    return int(np.sum(totals >= share * masses.sum()))
+
+
+def spd_merger(x0, velocities, masses, low, high, share):
+    """Time at which the SPD's heavy clusters drop from two to one, by bisection (NaN if [low, high] holds none)."""
+    count = lambda t: clusters(spd_positions(x0, velocities, t, masses=masses), masses, share)  # noqa: E731
+    if not (count(low) >= 2 and count(high) == 1):
+        return np.nan
+    while True:
+        middle = 0.5 * (low + high)
+        if middle in (low, high):
+            return high
+        low, high = (middle, high) if count(middle) >= 2 else (low, middle)
+
+
+def run(p, output):
+    times = grid_times(p)
+    solutions = [HullSolution(DATA, float(t)) for t in times]
+    slots = max(s.aggregates[0].size for s in solutions)
+    pad = lambda values: np.pad(np.asarray(values, float), (0, slots - len(values)), constant_values=np.nan)  # noqa: E731
+    exact_positions = np.array([pad(s.aggregates[0]) for s in solutions])
+    exact_masses = np.array([pad(s.aggregates[1]) for s in solutions])
+    # The paths for the figure, on a finer grid: the exact aggregates and the heavy clusters of the smallest SPD.
+    path_times = np.linspace(0.0, p["t_end"], p["path_steps"] + 1)
+    paths = [HullSolution(DATA, float(t)).aggregates for t in path_times]
+    path_slots = max(path[0].size for path in paths)
+    padded = lambda values: np.pad(values, (0, path_slots - values.size), constant_values=np.nan)  # noqa: E731
+    path_positions = np.array([padded(path[0]) for path in paths])
+    path_masses = np.array([padded(path[1]) for path in paths])
+    x0, masses0 = m.spd_equal(DATA, p["spd_n"][0], 0.0)
+    velocities0 = m.weighted_velocities(masses0)
+    cluster_rows = []
+    for t in path_times:
+        x = spd_positions(x0, velocities0, float(t), masses=masses0)
+        values, index = np.unique(x, return_inverse=True)
+        totals = np.bincount(index, weights=masses0)
+        heavy = values[totals >= p["cluster_share"] * masses0.sum()]
+        cluster_rows.append(np.pad(heavy, (0, 4 - min(heavy.size, 4)), constant_values=np.nan)[:4])
+    merger = merger_time(DATA, *p["merger_bracket"])
+    progress(f"exact: merger at t = {merger!r}; blow-ups at 1/peak of each bump")
+    blob = p["blob"]
+    runs = [("SPD, equal masses", n, lambda n, t: m.spd_equal(DATA, n, t)) for n in p["spd_n"]]
+    runs += [("SPD, grid weights", k, lambda k, t: m.spd_grid(DATA, 1.0 / k, t)) for k in p["grid_inverse_h"]]
+    # The blob method: one integration per size, through every time of the grid.
+    paths = {k: m.blob_paths(DATA, 1.0 / k, times, order=blob["order"], q=blob["q"]) for k in blob["inverse_h"]}
+    runs += [(f"blob, m = {blob['order']}", k, lambda k, t: (paths[k][0][int(np.searchsorted(times, t))], paths[k][1]))
+             for k in blob["inverse_h"]]
+    runs += [("Godunov for F", cells, lambda n, t: m.godunov_mass(DATA, n, t, cfl=p["cfl"]))
+             for cells in p["godunov_cells"]]
+    names, sizes, errors, centres, spreads, mergers = [], [], [], [], [], []
+    for name, size, method in runs:
+        row, centre_row, spread_row = [], [], []
+        for t, solution in zip(times, solutions):
+            out = method(size, float(t))
+            if name.startswith("Godunov"):
+                row.append(w1_cells(solution, *out))
+                centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
+            else:
+                row.append(w1_atoms(solution, *out))
+                centre, spread = aggregate_centres(solution, *out)
+            centre_row.append(pad(centre))
+            spread_row.append(pad(spread))
+        merged = np.nan
+        if name.startswith("SPD"):
+            if name == "SPD, equal masses":
+                x0, masses = m.spd_equal(DATA, size, 0.0)
+            else:
+                x0, _, masses = m.grid_particles(DATA, 1.0 / size)
+            merged = spd_merger(x0, m.weighted_velocities(masses), masses, *p["merger_bracket"], p["cluster_share"])
+        names.append(name)
+        sizes.append(size)
+        errors.append(row)
+        centres.append(centre_row)
+        spreads.append(spread_row)
+        mergers.append(merged)
+        progress(f"{name:18} size {size:6d}: largest W1 over t {max(row):.4g} (t = 0: {row[0]:.4g}); merger {merged!r}")
+    save_results(output, times=times, fixed_times=np.array(p["fixed_times"], float), exact_positions=exact_positions,
+                 exact_masses=exact_masses, merger=merger, path_times=path_times, path_positions=path_positions,
+                 path_masses=path_masses, spd_clusters=np.array(cluster_rows),
+                 blowups=np.array([1.0 / b.height for b in HullSolution(DATA, 0.0).data.bumps]),
+                 methods=np.array(names), size=np.array(sizes), error=np.array(errors), centre=np.array(centres),
+                 spread=np.array(spreads), method_merger=np.array(mergers))
+
+
+with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+    run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
