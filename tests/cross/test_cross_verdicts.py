@@ -496,7 +496,8 @@ def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, b
                        if name.startswith("SPD") else np.nan)
     result = {"times": AGG_TIMES, "fixed_times": np.array(AGG["fixed_times"], float), "exact_positions": exact,
               "exact_masses": np.where(np.isfinite(exact), 0.3, np.nan), "merger": MERGER,
-              "path_times": AGG_TIMES, "path_positions": exact, "path_masses": np.where(np.isfinite(exact), 0.3, np.nan),
+              "path_times": AGG_TIMES, "path_positions": exact,
+              "path_masses": np.where(np.isfinite(exact), 0.3, np.nan),
               "spd_clusters": np.full((AGG_TIMES.size, 4), np.nan), "blowups": np.array([0.5, 1.0]),
               "methods": np.array([name for name, _ in runs]), "size": np.array([size for _, size in runs]),
               "error": np.array(errors), "centre": np.array(centres), "spread": np.zeros_like(np.array(centres)),
