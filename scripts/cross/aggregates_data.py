@@ -1,5 +1,6 @@
 """Aggregates that move and merge: the asymmetric data two_bumps (particle_methods.cross.hull) by the SPD (equal
-masses and grid weights), the blob method and Godunov, against the exact solution by the continuous hull.
+masses and grid weights), the blob method, Godunov, LTP (before the first blow-up) and SP, against the exact
+solution by the continuous hull.
 
 - exact: the aggregates (positions, masses) at every time of the grid, the blow-up times 1/peak of each bump, the
   merger time (bisection on the number of aggregates);
@@ -13,7 +14,7 @@ import numpy as np
 
 from particle_methods.cross import HullSolution, merger_time
 from particle_methods.cross import methods as m
-from particle_methods.cross.distances import w1_atoms, w1_cells
+from particle_methods.cross.distances import w1_atoms, w1_cells, w1_smooth
 from particle_methods.sticky.spd import spd_positions
 from particle_replication.workflow import logged, progress, save_results
 
@@ -23,6 +24,12 @@ DATA = "two_bumps"
 def grid_times(p):
     """The time grid: `steps` equal steps up to t_end, with the fixed times added."""
     return np.union1d(np.linspace(0.0, p["t_end"], p["steps"] + 1), p["fixed_times"])
+
+
+def w1_particles(solution, particles):
+    """W1 of LTP or SP particles: F_h is a polynomial between the breaks of every particle's shape."""
+    breaks = np.unique(particles.centres[:, None] + particles.widths[:, None] * particles.shape.breaks[None, :])
+    return w1_smooth(solution, particles.cumulative_mass, breaks, particles.widths.min())
 
 
 def aggregate_centres(solution, positions, masses):
@@ -95,12 +102,27 @@ def run(p, output):
              for k in blob["inverse_h"]]
     runs += [("Godunov for F", cells, lambda n, t: m.godunov_mass(DATA, n, t, cfl=p["cfl"]))
              for cells in p["godunov_cells"]]
+    # LTP (refused as the left bump blows up: only the times before it) and SP (eps = h), one run per size.
+    ltp = p["ltp"]
+    before = times[times < min(1.0 / b.height for b in solutions[0].data.bumps)]
+    ltp_runs = {("LTP", k): dict(zip(before, m.ltp_paths(DATA, 1.0 / k, ltp["dt_over_h"] / k, before)))
+                for k in ltp["inverse_h"]}
+    ltp_runs |= {("SP", k): dict(zip(times, m.ltp_paths(DATA, 1.0 / k, ltp["dt_over_h"] / k, times, method="sp",
+                                                        eps=ltp["sp_eps_over_h"] / k)))
+                 for k in ltp["sp_inverse_h"]}
+    runs += [(name, k, lambda k, t, name=name: ltp_runs[name, k].get(t)) for name, k in ltp_runs]
     names, sizes, errors, centres, spreads, mergers = [], [], [], [], [], []
     for name, size, method in runs:
         row, centre_row, spread_row = [], [], []
         for t, solution in zip(times, solutions):
             out = method(size, float(t))
-            if name.startswith("Godunov"):
+            if out is None:  # LTP after the first blow-up
+                row.append(np.nan)
+                centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
+            elif name in ("LTP", "SP"):
+                row.append(w1_particles(solution, out))
+                centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
+            elif name.startswith("Godunov"):
                 row.append(w1_cells(solution, *out))
                 centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
             else:
@@ -121,7 +143,8 @@ def run(p, output):
         centres.append(centre_row)
         spreads.append(spread_row)
         mergers.append(merged)
-        progress(f"{name:18} size {size:6d}: largest W1 over t {max(row):.4g} (t = 0: {row[0]:.4g}); merger {merged!r}")
+        progress(f"{name:18} size {size:6d}: largest W1 over t {np.nanmax(row):.4g} (t = 0: {row[0]:.4g}); "
+                 f"merger {merged!r}")
     save_results(output, times=times, fixed_times=np.array(p["fixed_times"], float), exact_positions=exact_positions,
                  exact_masses=exact_masses, merger=merger, path_times=path_times, path_positions=path_positions,
                  path_masses=path_masses, spd_clusters=np.array(cluster_rows),

@@ -1,13 +1,14 @@
 """two_bumps, whose aggregates move and merge: (a) the exact aggregates' paths (line width growing with the mass)
-and the smallest equal-mass SPD's heavy clusters; (b) W1 against t at each method's largest size; (c) the largest
-W1 over t against the size."""
+and the smallest equal-mass SPD's heavy clusters; (b) W1 against t at each method's largest size (LTP only before
+the first blow-up); (c) the largest W1 over t against the size."""
 
 import numpy as np
 
 from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
-STYLES = {"SPD, equal masses": ("C0", "o"), "SPD, grid weights": ("C1", "s"), "Godunov for F": ("C3", "D")}
+STYLES = {"SPD, equal masses": ("C0", "o"), "SPD, grid weights": ("C1", "s"), "Godunov for F": ("C3", "D"),
+          "LTP": ("C6", ">"), "SP": ("C7", "p")}
 BLOB = ("C4", "v")
 
 
@@ -30,25 +31,27 @@ def run(d, p, output):
     low, high = float(np.nanmin(positions)), float(np.nanmax(positions))
     # Room below the paths for the legend.
     ax.set(xlabel="t", ylabel="position x", xlim=(0, times[-1]),
-           ylim=(low - 0.9 * (high - low), high + 0.05 * (high - low)))
+           ylim=(low - 1.3 * (high - low), high + 0.05 * (high - low)))
     ax.legend(loc="lower right", fontsize="x-small")
     label_panel(ax, "(a) aggregates")
     methods, sizes, errors = d["methods"], d["size"], d["error"]
-    floor = max(float(errors[errors > 0].min()) / 3.0, 1e-16)
+    floor = max(float(np.nanmin(errors[errors > 0])) / 3.0, 1e-16)
     for name in dict.fromkeys(map(str, methods)):
         rows = np.flatnonzero(methods == name)
         rows = rows[np.argsort(sizes[rows])]
         colour, marker = STYLES.get(name, BLOB)
         largest = rows[-1]
         axes[1].plot(d["times"], np.maximum(errors[largest], floor), "-" + marker, color=colour, ms=3)
-        axes[2].plot(sizes[rows], errors[rows].max(axis=1), "-" + marker, color=colour, ms=4, label=name)
+        axes[2].plot(sizes[rows], np.nanmax(errors[rows], axis=1), "-" + marker, color=colour, ms=4, label=name)
     for t in d["blowups"]:
         axes[1].axvline(t, color="0.6", lw=0.6, ls=":")
     axes[1].axvline(float(d["merger"]), color="C3", lw=0.6, ls="--")
     axes[1].set(yscale="log", xlabel="t", ylabel="W1 error", ylim=(floor, None))
     label_panel(axes[1], "(b) W1 against t")
     axes[2].set(xscale="log", yscale="log", xlabel="particles, 1/h or cells", ylabel="largest W1 over t")
-    axes[2].legend(loc="lower left", fontsize="x-small")
+    # One legend for (b) and (c), below the panels (inside, it would hide lines of one or the other).
+    handles, labels = axes[2].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize="small")
     label_panel(axes[2], "(c) W1 uniformly in time")
     suptitle(fig, "K = |x|/2 from two bumps: aggregates that move and merge, against the exact solution by the hull")
     save_figure(fig, output.pdf, output.png)

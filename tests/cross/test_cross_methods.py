@@ -238,3 +238,16 @@ def test_blob_paths_match_separate_runs_and_take_two_bumps():
     assert masses.sum() == pytest.approx(0.9066666666666667, rel=1e-14)  # grid masses scaled to the exact total
     with pytest.raises(ValueError, match="times"):
         methods.blob_paths("two_bumps", 1 / 20, [1.2, 0.3], order=4, q=0.9)
+
+
+def test_ltp_paths_match_separate_runs_and_refuse_times_off_the_steps():
+    h = 1 / 40
+    paths = methods.ltp_paths("two_bumps", h, h / 2, [0.0, 0.25, 0.45])
+    for particles, t in zip(paths, (0.0, 0.25, 0.45)):
+        if t > 0:
+            np.testing.assert_array_equal(particles.centres, methods.ltp_method("two_bumps", h, h / 2, t).centres)
+    assert paths[0].cumulative_mass(np.array([1.0]))[0] == pytest.approx(0.9066666666666667, rel=1e-12)
+    with pytest.raises(ValueError, match="whole number of steps"):
+        methods.ltp_paths("two_bumps", h, h / 2, [0.0, 0.2501])
+    with pytest.raises(ValueError, match="increasing"):
+        methods.ltp_paths("two_bumps", h, h / 2, [0.25, 0.0])

@@ -478,19 +478,27 @@ AGG_TIMES = np.union1d(np.linspace(0.0, AGG["t_end"], AGG["steps"] + 1), AGG["fi
 MERGER = 0.9 / (0.9066666666666667 / 2)
 
 
-def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, blob_order=4.0, **changes):
+def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, blob_order=4.0, ltp_order=2.0,
+               sp_order=1.0, **changes):
     """A two_bumps result as aggregates_data.py saves it: W1 falling in time from c/size^spd_order at t = 0 (times
-    (1 + growth t) if growth), merger errors 1e-1/n^merger_order, the blob's centres 1/(1/h)^blob_order off."""
+    (1 + growth t) if growth), merger errors 1e-1/n^merger_order, the blob's centres 1/(1/h)^blob_order off; LTP's
+    W1 c/size^ltp_order before the first blow-up (NaN after), SP's c/size^sp_order."""
     blob = f"blob, m = {AGG['blob']['order']}"
     runs = [("SPD, equal masses", n) for n in AGG["spd_n"]] + [("SPD, grid weights", k) for k in AGG["grid_inverse_h"]]
     runs += [(blob, k) for k in AGG["blob"]["inverse_h"]] + [("Godunov for F", k) for k in AGG["godunov_cells"]]
+    runs += [("LTP", k) for k in AGG["ltp"]["inverse_h"]] + [("SP", k) for k in AGG["ltp"]["sp_inverse_h"]]
     exact = np.full((AGG_TIMES.size, 2), np.nan)
     exact[(AGG_TIMES > 0.5) & (AGG_TIMES < 1.0), 0] = -0.3
     exact[(AGG_TIMES > 1.0) & (AGG_TIMES < MERGER)] = [-0.2, 0.02]
     exact[AGG_TIMES > MERGER, 0] = -0.135
     errors, centres, mergers = [], [], []
     for name, size in runs:
-        errors.append(0.3 * size ** -spd_order * np.exp(-AGG_TIMES) * (1.0 + growth * AGG_TIMES))
+        if name == "LTP":
+            errors.append(np.where(AGG_TIMES < 0.5, 0.3 * size ** -ltp_order, np.nan))
+        elif name == "SP":
+            errors.append(np.full(AGG_TIMES.size, 0.3 * size ** -sp_order))
+        else:
+            errors.append(0.3 * size ** -spd_order * np.exp(-AGG_TIMES) * (1.0 + growth * AGG_TIMES))
         centres.append(exact + (size ** -blob_order if name == blob else 0.0))
         mergers.append(MERGER + (0.1 * size ** -merger_order if name == "SPD, equal masses" else grid_merger)
                        if name.startswith("SPD") else np.nan)
@@ -538,3 +546,12 @@ def test_a_grid_spd_merging_1e_6_late_fails():
 
 def test_blob_aggregates_off_by_a_fixed_offset_fail():
     only_failing(run_aggregates(aggregates(blob_order=0.0)), "aggregate.blob_centres")
+
+
+def test_ltp_at_first_order_before_the_blowup_fails():
+    only_failing(run_aggregates(aggregates(ltp_order=1.0)), "two_bumps.ltp_order")
+
+
+def test_sp_at_second_order_after_the_blowup_fails():
+    # A Dirac mass reconstructed better than its mass times phi_eps would contradict the O(eps) of SP.
+    only_failing(run_aggregates(aggregates(sp_order=2.0)), "two_bumps.sp_order_after")

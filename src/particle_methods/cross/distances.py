@@ -73,17 +73,17 @@ def _pieces(breaks: np.ndarray, largest: float) -> np.ndarray:
     return np.append(starts + within * np.repeat(lengths / parts, parts), breaks[-1])
 
 
-def w1_smooth(solution: AggregationSolution, cumulative: Callable, breaks, largest: float) -> float:
+def w1_smooth(solution, cumulative: Callable, breaks, largest: float) -> float:
     """W1 between the exact solution and a measure with continuous cumulative mass ``cumulative``.
 
     ``breaks`` (sorted) must contain every point where ``cumulative`` is not smooth, and the
     support of the measure: ``cumulative`` is 0 left of breaks[0] and M right of breaks[-1].
     Pieces are cut to at most ``largest`` in length (below the features of both functions); the
-    kinks of the exact F (its support ends and 0) are added here. On each piece the difference is
-    sampled at the nodes and ends, every sign change is bisected to 2^-50 of the piece, and each
-    sub-piece is integrated by Gauss-Legendre with GAUSS_NODES nodes.
+    kinks of the exact F (``solution.kinks``: its support's ends, its Dirac masses) are added here.
+    On each piece the difference is sampled at the nodes and ends, every sign change is bisected to
+    2^-50 of the piece, and each sub-piece is integrated by Gauss-Legendre with GAUSS_NODES nodes.
     """
-    instance("solution", solution, AggregationSolution)
+    instance("solution", solution, SOLUTIONS)
     if not callable(cumulative):
         raise ParameterTypeError(f"cumulative must be callable, got {cumulative!r}")
     breaks = sorted_array("breaks", breaks)
@@ -93,7 +93,7 @@ def w1_smooth(solution: AggregationSolution, cumulative: Callable, breaks, large
     if not largest > 0:
         raise ValueError(f"largest must be positive, got {largest}")
     integer_at_least("pieces", int(np.ceil((breaks[-1] - breaks[0]) / largest)), 1, 10**7)
-    kinks = [k for k in (solution.left_end, 0.0, -solution.left_end) if breaks[0] < k < breaks[-1]]
+    kinks = [k for k in solution.kinks if breaks[0] < k < breaks[-1]]
     grid = _pieces(np.union1d(breaks, kinks), largest)
 
     def difference(x):

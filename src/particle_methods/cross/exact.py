@@ -87,6 +87,8 @@ class AggregationSolution:
         self.dirac_mass = shape.mass - 2.0 * self.level
         #: Left end of the support, -R + t M/2 (-inf for an unbounded support).
         self.left_end = min(-shape.radius + 0.5 * self.t * shape.mass, 0.0)
+        #: Where F(t, .) is not smooth: the support's ends and 0.
+        self.kinks = np.unique([k for k in (self.left_end, 0.0, -self.left_end) if math.isfinite(k)])
 
     def _characteristic(self, a):
         return a - self.t * self.profile.mass_from_origin(a)

@@ -135,6 +135,14 @@ class BumpData:
         x = finite_values("x", x)
         return sum(b.density(x) for b in self.bumps)
 
+    def cdf(self, x):
+        """F_0(x) = int_{-inf}^x rho0, exact: the bumps' masses before x plus the part of the bump holding x."""
+        x = finite_values("x", x)
+        value = np.zeros(x.shape)
+        for index, bump in enumerate(self.bumps):
+            value = np.where(x >= bump.centre - bump.radius, self._before[index] + bump.mass_left(x), value)
+        return value
+
     def in_bump(self, index: int, a):
         """(F_0(a), int_{-inf}^a s rho0(s) ds) for a in the support of bump ``index``."""
         bump = self.bumps[index]
@@ -191,6 +199,10 @@ class HullSolution:
         positions, masses, levels = self.aggregates
         #: Mass held in Dirac masses at t.
         self.dirac_mass = float(masses.sum())
+        #: Where F(t, .) is not smooth: the aggregates (jumps) and the free flight of every piece's ends (the
+        #: bumps' ends, where rho0 is only C^1, and the turning points).
+        flights = np.concatenate([self._levels(piece, np.array([piece.a0, piece.a1]))[2] for piece in self._pieces])
+        self.kinks = np.unique(np.concatenate([positions, flights[np.isfinite(flights)]]))
 
     # --- free flight along the pieces -------------------------------------------------------------
 

@@ -13,7 +13,8 @@ Each function returns the method's own output at time t, the object W1 is measur
   integrated by DOP853; defined up to the first collision of two particles.
 - :func:`blob_method`: Definition 2.2 with K_delta = K * psi_delta, delta = h^q (:func:`blob_paths`: at
   several times from one integration).
-- :func:`ltp_method`: LTP (and SP) of Campos Pinto et al. with W = |x|/2.
+- :func:`ltp_method`: LTP (and SP) of Campos Pinto et al. with W = |x|/2 (:func:`ltp_paths`: at several
+  times from one run).
 - :func:`godunov_mass`: Godunov for F; with u = F/M and tau = M t the law is (5.3),
   u_tau + (u(1 - u)/2)_x = 0, solved by :func:`particle_methods.finite_volume.godunov`.
 
@@ -172,6 +173,10 @@ def blob_paths(data, h: float, times, *, order: int, q: float, rtol: float = 1e-
 
 def initial_density(data) -> InitialDensity:
     """The data as an LTP initial density (cell weights (2.14) are differences of its CDF)."""
+    if _is_bumps(data):
+        _grid_density(data)  # supported in [-1, 1]
+        bumps = bump_data(data)
+        return InitialDensity(bumps.name, bumps.density, bumps.cdf, -1.0, 1.0)
     shape = _compact(profile(data))
 
     def cdf(x):
@@ -185,6 +190,21 @@ def ltp_method(data, h: float, dt: float, t: float, *, method: str = "ltp", eps:
     :class:`~particle_methods.ltp.solver.Particles` with ``cumulative_mass``."""
     t = positive("t", t)  # checked here so that the error names this function's parameter, not simulate's t_final
     return simulate(initial_density(data), potential("newtonian"), h, dt, t, method=method, eps=eps).at(-1)
+
+
+def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: float | None = None):
+    """The LTP (or SP) particles at each of the increasing ``times`` (each a whole number of steps dt), from one
+    run: a list of :class:`~particle_methods.ltp.solver.Particles`."""
+    times = finite_array("times", times)
+    dt = positive("dt", dt)
+    if times.size == 0 or np.any(np.diff(times) <= 0) or times[0] < 0:
+        raise ValueError("times must be non-negative and increasing, at least one")
+    steps = np.rint(times / dt).astype(np.int64)
+    if np.any(np.abs(steps * dt - times) > 1e-9 * np.maximum(times, dt)):
+        raise ValueError(f"every time must be a whole number of steps dt = {dt}, got {times}")
+    run = simulate(initial_density(data), potential("newtonian"), h, dt, float(times[-1]), method=method, eps=eps,
+                   record_every=1)
+    return [run.at(int(np.searchsorted(run.steps, step))) for step in steps]
 
 
 def godunov_mass(data, cells: int, t: float, *, cfl: float = 0.9):

@@ -498,6 +498,21 @@ def aggregate_claims(a, rates: Recorder, p):
         "solution contracts W1, and the SPD is the entropy solution of its discrete data; a wrong exact solution "
         "after a blow-up or the merger, or a wrong cluster speed, breaks it)",
         1.0 + rules["contraction_tolerance"], float(np.max(ratios))))
+    first_blowup = float(np.min(a["blowups"]))
+    for method, key, when, band, why in (
+            ("LTP", "ltp_order", a["times"] < first_blowup, p["claims"]["ltp_order"],
+             "the velocity (M - 2F_h)/2 carries the O(h^2) error of the reconstruction"),
+            ("SP", "sp_order_after", a["times"] > first_blowup, p["claims"]["sp_order_after"],
+             "each Dirac mass is reconstructed as its mass times phi_eps, eps = h")):
+        rows = _method_rows(a, method)
+        largest = np.nanmax(a["error"][rows][:, when], axis=1)
+        slope = -rates.add(order(f"{PAPER}.two_bumps.{key}", "size", a["size"][rows], largest, window, method))
+        out.append(claim(
+            c.between, f"two_bumps.{key}", "derived",
+            "LTP paper (2.31) and section 2.1 (SP); outside their assumptions", "aggregates",
+            f"{method}, two_bumps: order in 1/h of the largest W1 over the times "
+            f"{'before' if key == 'ltp_order' else 'after'} the first blow-up (t = {first_blowup:g}): {why} "
+            f"(largest W1: {', '.join(f'{e:.3g}' for e in largest)}; the symmetric study's band)", *band, slope))
     blob = f"blob, m = {q['blob']['order']}"
     rows = _method_rows(a, blob)
     fixed = [int(np.argmin(np.abs(a["times"] - t))) for t in a["fixed_times"]]
