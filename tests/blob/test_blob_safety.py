@@ -290,3 +290,11 @@ def test_kernels_are_checked_before_the_compiled_sums_read_them():
     assert k is None and np.isfinite(g).all()          # no NaN for the unknown potential
     with pytest.raises(ValueError, match="overflows"):
         Kernel("k", 1, (POWER,), (1.0,), (0.5,)).profile(np.array([5e-324]))   # r^-1.5
+
+
+def test_an_absolute_tolerance_below_the_range_is_refused_naming_atol():
+    # It ran into MAX_EVALUATIONS before, naming no parameter.
+    from particle_methods.blob import run_1d
+
+    with pytest.raises(ValueError, match="atol must lie in"):
+        run_1d("smooth20", "newtonian_attractive", 0.1, [0.0, 0.1], atol=1e-300)

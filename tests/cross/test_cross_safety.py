@@ -214,3 +214,26 @@ def test_a_profile_is_checked_at_construction(change):
 
     with pytest.raises(ValueError, match=next(iter(change))):
         dataclasses.replace(PROFILES["smooth20"], **change)
+
+
+# Work and range refused before the work starts (issue 30)
+
+def test_work_beyond_the_limits_is_refused_naming_the_parameter():
+    from particle_methods.cross import methods
+
+    with pytest.raises(ValueError, match="MAX_PARTICLES"):
+        methods.particle_velocities(np.linspace(0.0, 1.0, 10**6), np.ones(10**6))  # O(n^2): hung before
+    with pytest.raises(ValueError, match="n must be at most"):
+        methods.spd_equal("smooth20", 3 * 10**7, 1.1)  # ran for minutes before
+    with pytest.raises(ValueError, match="MAX_TIME"):
+        methods.spd_grid("smooth20", 1 / 1024, 1e300)  # put every particle at 1.9e284 before
+    with pytest.raises(ValueError, match="MAX_POINTS"):
+        exact_mass_function("smooth20", 1.1, np.zeros(10**7 + 1))
+
+
+def test_w1_smooth_refuses_a_complex_cdf_and_names_largest_for_too_many_pieces():
+    solution = AggregationSolution("smooth20", 0.5)
+    with pytest.raises(TypeError, match="cumulative must return one real value"):
+        distances.w1_smooth(solution, lambda x: x + 0j, [-1.0, 1.0], 0.1)  # dropped the imaginary part before
+    with pytest.raises(ValueError, match="largest"):
+        distances.w1_smooth(solution, lambda x: x, [-1.0, 1.0], 1e-9)  # named `pieces`, never passed, before

@@ -316,3 +316,13 @@ def test_fuzz_measures_bad(values, number):
     safe_call(measures.excess_variation, values, values)
     safe_call(measures.shrink_rate_ratios, times, np.exp(-times), number, number, number)
     safe_call(measures.concentration_series, values, 0.5, number)
+
+
+def test_a_decreasing_user_cdf_is_refused_before_the_run():
+    # Its cell weights (2.14), the CDF's increments, are negative: the run had a total mass of -2.3 before.
+    from particle_methods.ltp import potential, simulate
+    from particle_methods.ltp.initial import InitialDensity
+
+    decreasing = InitialDensity("decreasing", lambda x: np.ones_like(x), lambda x: -x, -1.0, 1.0)
+    with pytest.raises(ValueError, match="CDF of decreasing decreases"):
+        simulate(decreasing, potential("quadratic"), 0.1, 0.01, 0.1)

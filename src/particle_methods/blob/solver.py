@@ -45,6 +45,9 @@ from .pair_sums import NEWTONIAN_2D_METHODS, pair_energy, pair_sums
 METHODS = {"blob": "K_delta = K * psi_delta, delta = h^q (Definition 2.2)", "particle": "K with grad K(0) := 0"}
 #: Relative tolerances scipy's DOP853 accepts without raising them (100 machine epsilons) up to 1.
 RTOL_RANGE = (100 * np.finfo(float).eps, 1.0)
+#: Absolute tolerances of the ODE solver: below 1e-20 a position near 0 would need steps far below the
+#: rounding of the others, and the solve runs into MAX_EVALUATIONS instead of refusing the tolerance.
+ATOL_RANGE = (1e-20, 1.0)
 
 
 class CollisionError(ValueError):
@@ -151,6 +154,8 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
     if not RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]:
         raise ValueError(f"rtol must lie in [{RTOL_RANGE[0]:.3g}, {RTOL_RANGE[1]:g}], got {rtol}")
     atol = positive("atol", atol)
+    if not ATOL_RANGE[0] <= atol <= ATOL_RANGE[1]:
+        raise ValueError(f"atol must lie in [{ATOL_RANGE[0]:.3g}, {ATOL_RANGE[1]:g}], got {atol}")
     h = None if h is None else positive("h", h)
     one_of("newtonian_2d", newtonian_2d, NEWTONIAN_2D_METHODS)
     if times[-1] == 0.0:

@@ -17,7 +17,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..norms import check_within_range, l1_to_step_function, tail_integrals
-from ..validation import ParameterTypeError, finite_array, finite_result, instance, integer_at_least, sorted_array
+from ..validation import ParameterTypeError, finite_array, finite_result, instance, sorted_array
 from .exact import AggregationSolution
 from .hull import HullSolution
 
@@ -26,6 +26,8 @@ SOLUTIONS = (AggregationSolution, HullSolution)
 
 #: Gauss-Legendre nodes per smooth piece of |F - F_h| (exact for polynomials of degree 19).
 GAUSS_NODES = 10
+#: Largest number of pieces of :func:`w1_smooth` (about 100 MB of samples).
+MAX_PIECES = 10**6
 #: Bisection steps locating a sign change of F - F_h inside a piece (2^-50 of its length).
 ROOT_STEPS = 50
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(GAUSS_NODES)
@@ -92,12 +94,19 @@ def w1_smooth(solution, cumulative: Callable, breaks, largest: float) -> float:
     largest = finite_result("largest", float(largest), "largest must be finite")
     if not largest > 0:
         raise ValueError(f"largest must be positive, got {largest}")
-    integer_at_least("pieces", int(np.ceil((breaks[-1] - breaks[0]) / largest)), 1, 10**7)
+    pieces = int(np.ceil((breaks[-1] - breaks[0]) / largest)) + breaks.size
+    if pieces > MAX_PIECES:
+        raise ValueError(f"largest = {largest:g} cuts [{breaks[0]:g}, {breaks[-1]:g}] into about {pieces} pieces, more "
+                         f"than MAX_PIECES = {MAX_PIECES} (each takes {GAUSS_NODES + 2} samples): raise largest")
     kinks = [k for k in solution.kinks if breaks[0] < k < breaks[-1]]
     grid = _pieces(np.union1d(breaks, kinks), largest)
 
     def difference(x):
-        return solution.cdf(x) - cumulative(x)
+        values = np.asarray(cumulative(x))
+        if np.iscomplexobj(values) or values.shape != x.shape:
+            raise ParameterTypeError(f"cumulative must return one real value per point, got {values.dtype} of shape "
+                                     f"{values.shape}")
+        return solution.cdf(x) - values
 
     a, b = grid[:-1], grid[1:]
     samples = np.concatenate([a[:, None], 0.5 * (a + b)[:, None] + 0.5 * (b - a)[:, None] * _NODES, b[:, None]],

@@ -34,7 +34,7 @@ import numpy as np
 
 from ..validation import finite_result, finite_values, in_interval, nonnegative
 from .hull import BUMP_DATA, BumpData, HullSolution
-from .profiles import MAX_ITERATIONS, Profile, monotone_root, profile
+from .profiles import MAX_ITERATIONS, Profile, limited, monotone_root, profile
 
 
 def _collapse_radius(shape: Profile, t: float) -> float:
@@ -115,7 +115,7 @@ class AggregationSolution:
 
     def cdf(self, x):
         """F(t, x) = int_{-inf}^x rho(t, .), right-continuous (the Dirac mass counts at x = 0)."""
-        x = finite_values("x", x)
+        x = limited("x", finite_values("x", x))
         flat = x.ravel()
         left, _ = self._left_state(-np.abs(flat))
         value = np.where(flat < 0.0, left, self.mass - left)
@@ -125,7 +125,7 @@ class AggregationSolution:
         """int_{-inf}^x F(t, .) = x F(t, x) - int_0^{F(t, x)} X_t, from one root per point: by the
         symmetry X_t(M - w) = -X_t(w), the quantile integral at F(t, x) = M - F(t, -x) for x >= 0
         equals the one at F(t, -x)."""
-        x = finite_values("x", x)
+        x = limited("x", finite_values("x", x))
         flat = x.ravel()
         left, integral = self._left_state(-np.abs(flat))
         with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported just below
@@ -139,7 +139,7 @@ class AggregationSolution:
 
     def quantile(self, w):
         """X_t(w) = inf{x : F(t, x) >= w} for 0 <= w <= M (0 on the levels of the Dirac mass)."""
-        w = in_interval("w", w, 0.0, self.mass)
+        w = limited("w", in_interval("w", w, 0.0, self.mass))
         lower, moving = self._left_levels(w)
         value = np.zeros_like(w)
         a = self.profile.level_position(lower[moving])
@@ -149,7 +149,7 @@ class AggregationSolution:
 
     def quantile_integral(self, w):
         """int_0^w X_t(s) ds for 0 <= w <= M."""
-        w = in_interval("w", w, 0.0, self.mass)
+        w = limited("w", in_interval("w", w, 0.0, self.mass))
         lower, _ = self._left_levels(w)
         level = np.minimum(lower, self.level)
         value = np.zeros_like(w)

@@ -46,7 +46,7 @@ from ..validation import (
     one_of,
     positive,
 )
-from .profiles import monotone_root
+from .profiles import limited, monotone_root
 
 #: Iterations of Brent's method allowed for an aggregate's position (it converges to rounding in about 10).
 POSITION_STEPS = 80
@@ -132,12 +132,12 @@ class BumpData:
         return max(b.height for b in self.bumps)
 
     def density(self, x):
-        x = finite_values("x", x)
+        x = limited("x", finite_values("x", x))
         return sum(b.density(x) for b in self.bumps)
 
     def cdf(self, x):
         """F_0(x) = int_{-inf}^x rho0, exact: the bumps' masses before x plus the part of the bump holding x."""
-        x = finite_values("x", x)
+        x = limited("x", finite_values("x", x))
         value = np.zeros(x.shape)
         for index, bump in enumerate(self.bumps):
             value = np.where(x >= bump.centre - bump.radius, self._before[index] + bump.mass_left(x), value)
@@ -289,13 +289,13 @@ class HullSolution:
 
     def antiderivative(self, x):
         """int_{-inf}^x F(t, .) = max_w (x w - Psi_t(w))."""
-        x = finite_values("x", x)
+        x = limited("x", finite_values("x", x))
         value, _ = self._best(x.ravel(), self._pieces)
         return finite_result("int F(t, .)", value.reshape(x.shape), "x is too large: x F(t, x) overflows")
 
     def cdf(self, x):
         """F(t, x), right-continuous: the largest maximiser of x w - Psi_t(w)."""
-        x = finite_values("x", x)
+        x = limited("x", finite_values("x", x))
         _, level = self._best(x.ravel(), self._pieces)
         return np.clip(level, 0.0, self.mass).reshape(x.shape)
 
@@ -323,7 +323,7 @@ class HullSolution:
 
     def quantile(self, w):
         """X_t(w) = inf{x : F(t, x) >= w}: the aggregate's position on its levels, the free flight elsewhere."""
-        w = in_interval("w", w, 0.0, self.mass)
+        w = limited("w", in_interval("w", w, 0.0, self.mass))
         flat = w.ravel()
         value, _ = self._free_quantile(flat)
         positions, masses, lowers = self.aggregates
@@ -333,7 +333,7 @@ class HullSolution:
 
     def quantile_integral(self, w):
         """int_0^w X_t = the convex minorant of Psi_t at w: Psi_t off the aggregates, linear across each."""
-        w = in_interval("w", w, 0.0, self.mass)
+        w = limited("w", in_interval("w", w, 0.0, self.mass))
         flat = w.ravel()
         _, value = self._free_quantile(flat)
         positions, masses, lowers = self.aggregates

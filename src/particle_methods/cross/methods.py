@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..blob.checks import MAX_PARTICLES
 from ..blob.kernels import kernel_1d
 from ..blob.mollifiers import mollifier
 from ..blob.pair_sums import pair_sums
@@ -46,6 +47,19 @@ from .profiles import Profile, profile
 
 #: The attractive Newtonian kernel |x|/2 of the blob package.
 KERNEL = "newtonian_attractive"
+#: Largest n of :func:`spd_equal`: its quantiles take one Newton iteration per particle (2^22 in about 10 s).
+MAX_EQUAL_MASSES = 2**22
+#: Latest time of the SPDs: their velocities carry rounding errors of about 1e-16 (a cluster at rest moves at
+#: that speed), which t multiplies; up to 1e6 they move positions of order 1 by at most about 1e-10.
+MAX_TIME = 1e6
+
+
+def _spd_time(t) -> float:
+    t = nonnegative("t", t)
+    if t > MAX_TIME:
+        raise ValueError(f"t = {t:g} is beyond MAX_TIME = {MAX_TIME:g}: the rounding of the velocities, times t, "
+                         "would move the particles by more than their positions' accuracy")
+    return t
 
 
 def aggregation_flux(mass: float):
@@ -126,6 +140,9 @@ def particle_velocities(x, masses) -> np.ndarray:
     x = finite_array("x", x)
     masses = finite_array("masses", masses)
     same_length(x=x, masses=masses)
+    if x.size > MAX_PARTICLES:
+        raise ValueError(f"x has {x.size} points, more than MAX_PARTICLES = {MAX_PARTICLES} (a limit on the O(n^2) "
+                         "work of the pair sums)")
     velocity, _ = pair_sums(x[:, None], masses, *kernel_1d(KERNEL).arrays())
     return velocity[:, 0]
 
@@ -133,8 +150,8 @@ def particle_velocities(x, masses) -> np.ndarray:
 def spd_equal(data, n: int, t: float):
     """(positions, masses) of the SPD with n equal masses at the median quantiles (2.1), at time t."""
     initial = solution(data, 0.0)
-    n = integer_at_least("n", n, 1)
-    t = nonnegative("t", t)
+    n = integer_at_least("n", n, 1, MAX_EQUAL_MASSES)
+    t = _spd_time(t)
     x = initial.quantile((np.arange(n) + 0.5) * (initial.mass / n))
     masses = np.full(n, initial.mass / n)
     return spd_positions(x, weighted_velocities(masses), t), masses
@@ -143,7 +160,7 @@ def spd_equal(data, n: int, t: float):
 def spd_grid(data, h: float, t: float):
     """(positions, masses) of the weighted SPD from the grid particles of :func:`grid_particles`."""
     x, _, masses = grid_particles(data, h)
-    return spd_positions(x, weighted_velocities(masses), nonnegative("t", t), masses=masses), masses
+    return spd_positions(x, weighted_velocities(masses), _spd_time(t), masses=masses), masses
 
 
 def particle_method(data, h: float, t: float, *, rtol: float = 1e-12, atol: float = 1e-14):

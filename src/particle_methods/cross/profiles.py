@@ -23,6 +23,17 @@ from ..validation import ParameterTypeError, instance, one_of, positive
 MAX_ITERATIONS = 200
 
 
+#: Largest number of points or levels one call of an exact solution takes (each needs a root and a few arrays).
+MAX_POINTS = 10**7
+
+
+def limited(name: str, values: np.ndarray) -> np.ndarray:
+    """The checked array ``values`` itself, refused beyond :data:`MAX_POINTS` values."""
+    if values.size > MAX_POINTS:
+        raise ValueError(f"{name} has {values.size} values, more than MAX_POINTS = {MAX_POINTS} in one call")
+    return values
+
+
 def monotone_root(function: Callable, derivative: Callable, target, low, high):
     """The x in [low, high] with function(x) = target, for a non-decreasing ``function``, element-wise.
 

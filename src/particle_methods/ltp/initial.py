@@ -157,8 +157,16 @@ def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str
     if values.shape != centres.shape:
         raise ValueError(f"the CDF of {density.name} must return one value per point, got shape {values.shape}")
     finite_result("the weights", values, f"the CDF of {density.name} is not finite")
+    if weights == "cell" and values.size and values.min() < -WEIGHT_ROUNDING * np.abs(values).max():
+        raise ValueError(f"the CDF of {density.name} decreases: the cell weights (2.14) are its increments, "
+                         f"and one is {values.min():.3g}")
     keep = values != 0.0
     return centres[keep], values[keep]
+
+
+#: Cell weights (2.14) below -WEIGHT_ROUNDING times the largest one are refused: the CDF decreases. (Rounding in the
+#: flat tails of a CDF leaves increments of a few ulps of either sign.)
+WEIGHT_ROUNDING = 1e-12
 
 
 def _cell_weights(cdf, centres, h, shape):
