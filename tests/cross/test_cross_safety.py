@@ -237,3 +237,11 @@ def test_w1_smooth_refuses_a_complex_cdf_and_names_largest_for_too_many_pieces()
         distances.w1_smooth(solution, lambda x: x + 0j, [-1.0, 1.0], 0.1)  # dropped the imaginary part before
     with pytest.raises(ValueError, match="largest"):
         distances.w1_smooth(solution, lambda x: x, [-1.0, 1.0], 1e-9)  # named `pieces`, never passed, before
+
+
+def test_the_fuzz_of_the_newest_entry_points_finds_only_named_refusals_and_finite_answers():
+    # tests/fuzz_counts.py (issue 30): every value of the shared harness, one parameter at a time.
+    import fuzz_counts
+
+    counts = fuzz_counts.run()
+    assert {key for key, value in counts.items() if value} <= {"refused, named", "answered"}, counts

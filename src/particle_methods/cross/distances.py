@@ -17,7 +17,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..norms import check_within_range, l1_to_step_function, tail_integrals
-from ..validation import ParameterTypeError, finite_array, finite_result, instance, sorted_array
+from ..validation import ParameterTypeError, finite_array, finite_result, instance, positive, sorted_array
 from .exact import AggregationSolution
 from .hull import HullSolution
 
@@ -91,13 +91,13 @@ def w1_smooth(solution, cumulative: Callable, breaks, largest: float) -> float:
     breaks = sorted_array("breaks", breaks)
     if breaks.size < 2:
         raise ValueError("breaks must contain at least two points")
-    largest = finite_result("largest", float(largest), "largest must be finite")
-    if not largest > 0:
-        raise ValueError(f"largest must be positive, got {largest}")
-    pieces = int(np.ceil((breaks[-1] - breaks[0]) / largest)) + breaks.size
-    if pieces > MAX_PIECES:
-        raise ValueError(f"largest = {largest:g} cuts [{breaks[0]:g}, {breaks[-1]:g}] into about {pieces} pieces, more "
-                         f"than MAX_PIECES = {MAX_PIECES} (each takes {GAUSS_NODES + 2} samples): raise largest")
+    largest = positive("largest", largest)
+    with np.errstate(over="ignore"):
+        pieces = float(np.ceil((breaks[-1] - breaks[0]) / largest)) + breaks.size
+    if not pieces <= MAX_PIECES:
+        raise ValueError(f"largest = {largest:g} cuts [{breaks[0]:g}, {breaks[-1]:g}] into about {pieces:.3g} "
+                         f"pieces, more than MAX_PIECES = {MAX_PIECES} (each takes {GAUSS_NODES + 2} samples): raise "
+                         "largest")
     kinks = [k for k in solution.kinks if breaks[0] < k < breaks[-1]]
     grid = _pieces(np.union1d(breaks, kinks), largest)
 

@@ -50,6 +50,8 @@ from .profiles import limited, monotone_root
 
 #: Iterations of Brent's method allowed for an aggregate's position (it converges to rounding in about 10).
 POSITION_STEPS = 80
+#: Latest time: the positions are found to the rounding of a bracket of width about t M (1e-10 at t = 1e6).
+MAX_TIME = 1e6
 #: A jump of F smaller than this share of the mass is no aggregate (two pieces that meet continuously).
 JUMP_SHARE = 1e-13
 
@@ -191,8 +193,9 @@ class HullSolution:
     def __init__(self, data, t: float):
         self.data = bump_data(data)
         self.t = nonnegative("t", t)
-        if not math.isfinite(self.t * self.data.mass):
-            raise ValueError(f"t = {t} is too large")
+        if self.t > MAX_TIME:
+            raise ValueError(f"t = {t:g} is beyond MAX_TIME = {MAX_TIME:g}: the aggregates' positions are found in a "
+                             "bracket of width about t M, to its rounding")
         self.mass = self.data.mass
         self._pieces = self._increasing_pieces()
         self.aggregates = self._find_aggregates()
@@ -358,11 +361,13 @@ def merger_time(data, low: float, high: float) -> float:
     ``high`` must bracket one such drop (more aggregates at ``low`` than at ``high``)."""
     low, high = nonnegative("low", low), nonnegative("high", high)
     if not low < high:
-        raise ValueError(f"need low < high, got {low} and {high}")
+        raise ValueError(f"need low < high, got low = {low} and high = {high}")
+    if high > MAX_TIME:
+        raise ValueError(f"high = {high:g} is beyond MAX_TIME = {MAX_TIME:g}")
     count = lambda t: HullSolution(data, t).aggregates[0].size  # noqa: E731
     before, after = count(low), count(high)
     if not before > after:
-        raise ValueError(f"[{low}, {high}] brackets no merger: {before} aggregates, then {after}")
+        raise ValueError(f"low = {low} and high = {high} bracket no merger: {before} aggregates, then {after}")
     while True:
         middle = 0.5 * (low + high)
         if middle in (low, high):

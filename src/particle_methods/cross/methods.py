@@ -49,6 +49,8 @@ from .profiles import Profile, profile
 KERNEL = "newtonian_attractive"
 #: Largest n of :func:`spd_equal`: its quantiles take one Newton iteration per particle (2^22 in about 10 s).
 MAX_EQUAL_MASSES = 2**22
+#: Most cells of :func:`godunov_mass` (its arrays and the time steps grow with them; 8192 in the study).
+MAX_CELLS = 10**7
 #: Latest time of the SPDs: their velocities carry rounding errors of about 1e-16 (a cluster at rest moves at
 #: that speed), which t multiplies; up to 1e6 they move positions of order 1 by at most about 1e-10.
 MAX_TIME = 1e6
@@ -98,6 +100,8 @@ def grid_particles(data, h: float):
     between measures of different masses is infinite; for (4.3)-(4.5) the sum is exact to rounding."""
     density_of = _grid_density(data)
     h = positive("h", h)
+    if not 1.0 / h <= MAX_POSITIONS:  # (1/h overflows to inf for the smallest h)
+        raise ValueError(f"h = {h} gives more than MAX_POSITIONS = {MAX_POSITIONS} grid points")
     k = round(1.0 / h)
     if not (k >= 1 and abs(k * h - 1.0) <= 1e-9):
         raise ValueError(f"1/h must be a whole number, got h = {h}")
@@ -182,7 +186,10 @@ def blob_paths(data, h: float, times, *, order: int, q: float, rtol: float = 1e-
     the mollifier of ``order`` and delta = h^q, from one integration."""
     x, density, masses = grid_particles(data, h)
     h = positive("h", h)
-    kernel = kernel_1d(KERNEL, mollifier(order, 1), h ** positive("q", q))
+    delta = h ** positive("q", q)
+    if not delta > 0:
+        raise ValueError(f"q = {q} makes delta = h^q = {h}^{q} underflow to 0")
+    kernel = kernel_1d(KERNEL, mollifier(order, 1), delta)
     run = integrate_particles(x[:, None], density, masses, kernel, times, with_density=False, rtol=rtol, atol=atol,
                               h=h)
     return run.positions[:, :, 0], masses
@@ -228,7 +235,7 @@ def godunov_mass(data, cells: int, t: float, *, cfl: float = 0.9):
     """(edges, F values) of Godunov's scheme for F on ``cells`` cells of [-1, 1] at time t, started
     from the exact cell averages of F0 (ghost states 0 and M)."""
     _grid_density(data)  # supported in [-1, 1]
-    cells = integer_at_least("cells", cells, 1)
+    cells = integer_at_least("cells", cells, 1, MAX_CELLS)
     t = nonnegative("t", t)
     edges = np.linspace(-1.0, 1.0, cells + 1)
     initial = solution(data, 0.0)

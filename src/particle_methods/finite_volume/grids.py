@@ -54,13 +54,16 @@ def checked_time_and_cfl(t, cfl) -> tuple[float, float]:
 
 
 def check_cell_steps(t: float, dt: float, cells: int, limit: int) -> None:
-    """Refuse a run of ceil(t / dt) steps over ``cells`` cells beyond ``limit`` cell updates."""
+    """Refuse a run of ceil(t / dt) steps over ``cells`` cells beyond ``limit`` cell updates (and a time step that
+    underflows to 0, from a cfl near the smallest double)."""
+    if t > 0 and not dt > 0:
+        raise ValueError(f"the time step cfl dx / speed underflows to {dt}: raise cfl")
     with np.errstate(divide="ignore", over="ignore"):
-        steps = np.ceil(t / dt)
+        steps = np.ceil(np.float64(t) / np.float64(dt)) if t > 0 else 0.0
     if steps * cells > limit:
         raise ValueError(
             f"t={t} on x_edges with {cells} cells needs {steps:.3g} time steps, more than "
-            f"{limit:.0e} cell updates: reduce t or use fewer cells"
+            f"{limit:.0e} cell updates: reduce t, use fewer cells or raise cfl"
         )
 
 

@@ -280,7 +280,8 @@ _NOT_FINITE_SPEEDS = ("the averaged speeds are not finite: system.speed_primitiv
 def _too_much_work(t: float, cells: int, needed) -> ValueError:
     return ValueError(f"t={t} on x_edges with {cells} cells needs about {needed:.3g} time steps at "
                       f"the current speeds, more than MAX_UPWIND_STEPS = {MAX_UPWIND_STEPS:.0e} or "
-                      f"MAX_UPWIND_WORK = {MAX_UPWIND_WORK:.0e} type-cell updates: reduce t or use fewer cells")
+                      f"MAX_UPWIND_WORK = {MAX_UPWIND_WORK:.0e} type-cell updates: reduce t, use fewer cells or "
+                      "raise cfl")
 
 
 def _upwind_python(system, padded, low, high, dx, t, cfl) -> int:
