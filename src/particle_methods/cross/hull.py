@@ -69,11 +69,14 @@ class Bump:
         positive("height", self.height)
         finite_number("centre", self.centre)
         positive("radius", self.radius)
-        object.__setattr__(self, "unit", Data1D("unit bump", self.power))
+        unit = Data1D("unit bump", self.power)
+        object.__setattr__(self, "unit", unit)
+        # The unit bump's mass, once: every level of a root iteration needs it.
+        object.__setattr__(self, "_unit_mass", unit.mass)
 
     @property
     def mass(self) -> float:
-        return self.height * self.radius * self.unit.mass
+        return self.height * self.radius * self._unit_mass
 
     def scaled(self, a):
         return (np.asarray(a, dtype=np.float64) - self.centre) / self.radius
@@ -81,16 +84,13 @@ class Bump:
     def density(self, a):
         return self.height * self.unit(self.scaled(a))
 
-    def mass_left(self, a):
-        """int_{-inf}^a of the bump: c r (M_1/2 + m_1(s)), s = (a - centre)/radius."""
-        return self.height * self.radius * (0.5 * self.unit.mass + self.unit.mass_from_origin(np.clip(self.scaled(a),
-                                                                                                         -1.0, 1.0)))
-
-    def moment_left(self, a):
-        """int_{-inf}^a x times the bump: c r (centre (M_1/2 + m_1(s)) + r int_{-1}^s u (1 - u^2)^p du)."""
+    def left_integrals(self, a):
+        """(int_{-inf}^a of the bump, int_{-inf}^a x times the bump), with s = (a - centre)/radius:
+        c r (M_1/2 + m_1(s)) and c r (centre (M_1/2 + m_1(s)) + r int_{-1}^s u (1 - u^2)^p du)."""
         s = np.clip(self.scaled(a), -1.0, 1.0)
-        return self.height * self.radius * (self.centre * (0.5 * self.unit.mass + self.unit.mass_from_origin(s))
-                                            + self.radius * self.unit.moment_from_left(s))
+        left = 0.5 * self._unit_mass + self.unit.mass_from_origin(s)
+        scale = self.height * self.radius
+        return scale * left, scale * (self.centre * left + self.radius * self.unit.moment_from_left(s))
 
     def dense_interval(self, t: float):
         """The a where t rho0(a) > 1, as (low, high), or None:
@@ -119,7 +119,7 @@ class BumpData:
         masses = np.array([b.mass for b in self.bumps])
         object.__setattr__(self, "_before", np.concatenate(([0.0], np.cumsum(masses)[:-1])))
         object.__setattr__(self, "_moments_before", np.concatenate(
-            ([0.0], np.cumsum([b.moment_left(b.centre + b.radius) for b in self.bumps])[:-1])))
+            ([0.0], np.cumsum([b.left_integrals(b.centre + b.radius)[1] for b in self.bumps])[:-1])))
 
     @property
     def mass(self) -> float:
@@ -142,13 +142,13 @@ class BumpData:
         x = limited("x", finite_values("x", x))
         value = np.zeros(x.shape)
         for index, bump in enumerate(self.bumps):
-            value = np.where(x >= bump.centre - bump.radius, self._before[index] + bump.mass_left(x), value)
+            value = np.where(x >= bump.centre - bump.radius, self._before[index] + bump.left_integrals(x)[0], value)
         return value
 
     def in_bump(self, index: int, a):
         """(F_0(a), int_{-inf}^a s rho0(s) ds) for a in the support of bump ``index``."""
-        bump = self.bumps[index]
-        return self._before[index] + bump.mass_left(a), self._moments_before[index] + bump.moment_left(a)
+        mass, moment = self.bumps[index].left_integrals(a)
+        return self._before[index] + mass, self._moments_before[index] + moment
 
 
 TWO_BUMPS = BumpData("two bumps 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2",
