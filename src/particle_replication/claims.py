@@ -187,11 +187,14 @@ def window_dependent(claims) -> list[Claim]:
 
 def farthest_from_centre(values, band) -> float:
     """The value farthest from the middle of ``band`` (lower, upper): the one that decides whether all lie in
-    it; NaN for no value (a claim on nothing fails)."""
-    values = np.asarray(values, dtype=float)
-    if values.size == 0:
+    it, itself (a fitted :class:`~particle_replication.rates.Slope` keeps its windows, so that the claim shows on
+    how many windows its verdict holds); NaN for no value (a claim on nothing fails)."""
+    values = list(values)
+    if not values:
         return math.nan
-    return float(values[np.argmax(np.abs(values - 0.5 * (band[0] + band[1])))])
+    distances = np.abs(np.asarray(values, dtype=float) - 0.5 * (band[0] + band[1]))
+    chosen = values[int(np.argmax(distances))]
+    return chosen if isinstance(chosen, float) and not isinstance(chosen, bool) else float(chosen)
 
 
 class Catalogue:
