@@ -610,3 +610,12 @@ def test_hll_takes_data_at_the_ends_of_the_volume_range():
         u, v = hll_psystem(system, np.full(10, level), np.zeros(10), edges, 0.1)
         np.testing.assert_array_equal(u, level)
         np.testing.assert_array_equal(v, 0.0)
+
+
+def test_hll_refuses_a_negative_specific_volume():
+    # v jumping from 5 to -5: a rarefaction that the scheme took to u = -88 on 1000 cells, returned silently before.
+    system = PSystem(nu=1.0, kappa=1.0)
+    edges = np.linspace(-1.0, 1.0, 1001)
+    v0 = np.where(edges[:-1] < 0.0, 5.0, -5.0)
+    with pytest.raises(ValueError, match="negative specific volume"):
+        hll_psystem(system, np.full(1000, 0.3), v0, edges, 0.5)

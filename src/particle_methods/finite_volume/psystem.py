@@ -176,6 +176,10 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9) -> tuple[
                              "invariant region of the data and broke the CFL condition; reduce cfl")
     u, v = u_all[1:-1], v_all[1:-1]
     finite_result("the HLL solution", np.concatenate([u, v]), "the scheme overflowed")
+    if u.min() < -VOLUME_TOLERANCE * system.nu:
+        raise ValueError(f"the HLL solution has a negative specific volume, u = {u.min():.6g}: the data (u0, v0) hold "
+                         "a rarefaction the scheme does not resolve inside u >= 0 (nothing in it keeps u there: module "
+                         "docstring); reduce the jump in v0")
     return u, v
 
 
