@@ -28,7 +28,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
-from fuzzing import BAD_ARRAYS, BAD_SCALARS
+from fuzzing import BAD_ARRAYS, BAD_SCALARS, all_finite
 
 from particle_methods.cross import distances, exact, hull, methods
 from particle_methods.finite_volume.psystem import hll_psystem, invariants_from_conservative, upwind_diagonal
@@ -99,18 +99,6 @@ CLASSES = ("refused, named", "refused, unclear", "refused, plain ValueError", "a
            "other exception", "hang")
 
 
-def _finite(value) -> bool:
-    if isinstance(value, np.ndarray):
-        return value.dtype.kind not in "fc" or bool(np.all(np.isfinite(value)))
-    if isinstance(value, float):
-        return bool(np.isfinite(value))
-    if isinstance(value, (tuple, list)):
-        return all(_finite(item) for item in value)
-    if hasattr(value, "centres"):
-        return _finite(value.centres) and _finite(value.widths)
-    return True
-
-
 class _Hang(Exception):
     pass
 
@@ -135,7 +123,7 @@ def classify(function, arguments, parameter, value) -> str:
         return "other exception"
     finally:
         signal.alarm(0)
-    return "answered" if _finite(result) else "silent non-finite"
+    return "answered" if all_finite(result) else "silent non-finite"
 
 
 def run(verbose: bool = False) -> collections.Counter:

@@ -46,13 +46,16 @@ def watchdog(seconds: float = CALL_SECONDS):
         faulthandler.cancel_dump_traceback_later()
 
 
-def _all_finite(value) -> bool:
+def all_finite(value) -> bool:
+    """No NaN or inf in a result: arrays, floats, tuples and lists of them, particles (their centres and widths)."""
     if isinstance(value, np.ndarray):
         return value.dtype.kind not in "fc" or bool(np.all(np.isfinite(value)))
     if isinstance(value, float):
         return bool(np.isfinite(value))
     if isinstance(value, (tuple, list)):
-        return all(_all_finite(item) for item in value)
+        return all(all_finite(item) for item in value)
+    if hasattr(value, "centres") and hasattr(value, "widths"):
+        return all_finite(value.centres) and all_finite(value.widths)
     return True
 
 
@@ -67,7 +70,7 @@ def safe_call(function, *args, **kwargs):
         except (ValueError, TypeError) as error:
             assert str(error), f"{function.__name__} raised {type(error).__name__} without a message"
             return None
-    assert _all_finite(result), f"{function.__name__}{args} returned non-finite values silently"
+    assert all_finite(result), f"{function.__name__}{args} returned non-finite values silently"
     return result
 
 

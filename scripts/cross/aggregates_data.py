@@ -14,7 +14,7 @@ import numpy as np
 
 from particle_methods.cross import HullSolution, merger_time
 from particle_methods.cross import methods as m
-from particle_methods.cross.distances import w1_atoms, w1_cells, w1_smooth
+from particle_methods.cross.distances import w1_atoms, w1_cells, w1_particles
 from particle_methods.sticky.spd import spd_positions
 from particle_replication.workflow import logged, progress, save_results
 
@@ -26,14 +26,19 @@ def grid_times(p):
     return np.union1d(np.linspace(0.0, p["t_end"], p["steps"] + 1), p["fixed_times"])
 
 
-def w1_particles(solution, particles):
-    """W1 of LTP or SP particles: F_h is a polynomial between the breaks of every particle's shape."""
-    breaks = np.unique(particles.centres[:, None] + particles.widths[:, None] * particles.shape.breaks[None, :])
-    return w1_smooth(solution, particles.cumulative_mass, breaks, particles.widths.min())
+#: Heavy clusters of the smallest SPD kept per time for the figure (two aggregates at most, and room to spare).
+CLUSTER_SLOTS = 4
+
+
+def padded(values, slots):
+    """``values`` as floats, padded with NaN to ``slots`` entries (times with fewer aggregates than others)."""
+    values = np.asarray(values, dtype=float)
+    return np.pad(values, (0, slots - values.size), constant_values=np.nan)
 
 
 def aggregate_centres(solution, positions, masses):
-    """(centre, spread) of the particles whose levels lie in each exact aggregate, padded to `slots` with NaN."""
+    """(centre, spread) of the particles whose levels lie in each exact aggregate (NaN for an aggregate without
+    particles in its levels)."""
     order = np.argsort(positions, kind="stable")
     x, w = positions[order], masses[order]
     levels = np.cumsum(w) - 0.5 * w
@@ -72,16 +77,15 @@ def run(p, output):
     times = grid_times(p)
     solutions = [HullSolution(DATA, float(t)) for t in times]
     slots = max(s.aggregates[0].size for s in solutions)
-    pad = lambda values: np.pad(np.asarray(values, float), (0, slots - len(values)), constant_values=np.nan)  # noqa: E731
+    pad = lambda values: padded(values, slots)  # noqa: E731
     exact_positions = np.array([pad(s.aggregates[0]) for s in solutions])
     exact_masses = np.array([pad(s.aggregates[1]) for s in solutions])
     # The paths for the figure, on a finer grid: the exact aggregates and the heavy clusters of the smallest SPD.
     path_times = np.linspace(0.0, p["t_end"], p["path_steps"] + 1)
     paths = [HullSolution(DATA, float(t)).aggregates for t in path_times]
     path_slots = max(path[0].size for path in paths)
-    padded = lambda values: np.pad(values, (0, path_slots - values.size), constant_values=np.nan)  # noqa: E731
-    path_positions = np.array([padded(path[0]) for path in paths])
-    path_masses = np.array([padded(path[1]) for path in paths])
+    path_positions = np.array([padded(path[0], path_slots) for path in paths])
+    path_masses = np.array([padded(path[1], path_slots) for path in paths])
     x0, masses0 = m.spd_equal(DATA, p["spd_n"][0], 0.0)
     velocities0 = m.weighted_velocities(masses0)
     cluster_rows = []
@@ -90,7 +94,7 @@ def run(p, output):
         values, index = np.unique(x, return_inverse=True)
         totals = np.bincount(index, weights=masses0)
         heavy = values[totals >= p["cluster_share"] * masses0.sum()]
-        cluster_rows.append(np.pad(heavy, (0, 4 - min(heavy.size, 4)), constant_values=np.nan)[:4])
+        cluster_rows.append(padded(heavy[:CLUSTER_SLOTS], CLUSTER_SLOTS))
     merger = merger_time(DATA, *p["merger_bracket"])
     progress(f"exact: merger at t = {merger!r}; blow-ups at 1/peak of each bump")
     blob = p["blob"]

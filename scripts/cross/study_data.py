@@ -51,11 +51,6 @@ def method_table(p):
     spd_times = [0.0, *p["times"]]  # at t = 0 too, for the contraction claim
     atoms = distances.w1_atoms
 
-    def w1_particles(solution, particles):
-        # F_h is a polynomial between the breaks of every particle's shape.
-        breaks = np.unique(particles.centres[:, None] + particles.widths[:, None] * particles.shape.breaks[None, :])
-        return distances.w1_smooth(solution, particles.cumulative_mass, breaks, particles.widths.min())
-
     table = {
         "SPD, equal masses": (spd_times, p["spd_n"], lambda d, n, t: methods.spd_equal(d, n, t),
                               lambda s, out: atoms(s, *out)),
@@ -73,12 +68,12 @@ def method_table(p):
             lambda d, k, t, order=order: methods.blob_method(d, 1.0 / k, t, order=order, q=blob["q"]),
             lambda s, out: atoms(s, *out))
     table["LTP"] = (ltp["times"], ltp["inverse_h"],
-                    lambda d, k, t: methods.ltp_method(d, 1.0 / k, ltp["dt_over_h"] / k, t), w1_particles)
+                    lambda d, k, t: methods.ltp_method(d, 1.0 / k, ltp["dt_over_h"] / k, t), distances.w1_particles)
     # After the blow-up SP costs about twice as much per run (more steps): its sizes stop earlier.
     sp_sizes = {t: ltp["inverse_h"] if t < 1.0 else ltp["sp_after_inverse_h"] for t in ltp["sp_times"]}
     table["SP"] = (ltp["sp_times"], sp_sizes,
                    lambda d, k, t: methods.ltp_method(d, 1.0 / k, ltp["dt_over_h"] / k, t, method="sp",
-                                                      eps=ltp["sp_eps_over_h"] / k), w1_particles)
+                                                      eps=ltp["sp_eps_over_h"] / k), distances.w1_particles)
     return table
 
 

@@ -231,6 +231,7 @@ def test_w1_smooth_of_ltp_particles_equals_a_dense_quad(method, eps, t):
     expected += sum(tail_integrals(solution, knots[0], knots[-1]))
     assert measured == pytest.approx(expected, rel=1e-11)
     assert 0.0 < measured < 0.05
+    assert distances.w1_particles(solution, particles) == measured  # the scripts' helper: the same knots
     # With the support ends only as breaks (as scripts/cross/study_data.py passes them) the Gauss rule crosses
     # the interior knots, where F_h is only C^3: still within 1e-7 relative.
     ends = np.union1d(particles.centres - 2.0 * particles.widths, particles.centres + 2.0 * particles.widths)

@@ -127,3 +127,11 @@ def w1_smooth(solution, cumulative: Callable, breaks, largest: float) -> float:
     total = float(np.sum(np.abs(integrals)))
     total += sum(tail_integrals(solution, breaks[0], breaks[-1]))  # F_h is 0, then M, outside
     return finite_result("W1", total, "the measure's values overflow")
+
+
+def w1_particles(solution, particles) -> float:
+    """W1 between the exact solution and LTP or SP particles (a :class:`~particle_methods.ltp.solver.Particles`):
+    :func:`w1_smooth` with the breaks of every particle's shape, where F_h is a polynomial between them, and pieces
+    at most the smallest particle width."""
+    breaks = np.unique(particles.centres[:, None] + particles.widths[:, None] * particles.shape.breaks[None, :])
+    return w1_smooth(solution, particles.cumulative_mass, breaks, particles.widths.min())
