@@ -41,8 +41,11 @@ def progress(message: str) -> None:
     print(message, file=sys.stdout, flush=True)
 
 
-#: Runs longer than this many seconds are timed once: a repeat would only cost budget.
-REPEAT_BELOW = 0.2
+#: Runs longer than this many seconds are timed once: a repeat would only cost budget. Below it the
+#: timer's resolution, an interrupt or a cache left cold by the previous run is a visible share of a run
+#: (0.2 s until 2026-12-02: the repeats of runs from 0.05 to 0.2 s were a third of the cross study's
+#: timed job and changed no verdict; config/changes.yaml).
+REPEAT_BELOW = 0.05
 
 
 def timed(function, repeats: int):
