@@ -3,7 +3,16 @@
 import matplotlib.pyplot as plt
 import pytest
 
-from particle_replication.plotting import PRINTED_FONTS, PRINTED_WIDTH, mathtext, new_figure, save_figure
+from particle_replication.plotting import (
+    PRINTED_FONTS,
+    PRINTED_WIDTH,
+    mathtext,
+    new_figure,
+    save_figure,
+    suptitle,
+    unicode_power,
+    wrapped,
+)
 
 
 @pytest.mark.parametrize(("text", "expected"), [
@@ -32,3 +41,38 @@ def test_fonts_are_scaled_to_the_printed_width_and_labels_converted_on_saving(tm
     assert ax.xaxis.get_label().get_text() == "$h_{min}$"
     assert ax.get_legend().get_texts()[0].get_text() == r"$\rho _{h}$"
     assert (tmp_path / "f.png").exists()
+
+
+@pytest.mark.parametrize(("label", "expected"), [
+    (r"$\mathdefault{10^{-3}}$", "10⁻³"),
+    (r"$\mathdefault{2\times10^{-12}}$", "2×10⁻¹²"),
+    (r"$\mathdefault{10^{0}}$", "10⁰"),
+    ("$\\mathdefault{10^{\N{MINUS SIGN}4}}$", "10⁻⁴"),
+    (r"$\mathdefault{0.5}$", r"$\mathdefault{0.5}$"),   # not a power: left to mathtext
+    ("", ""),
+])
+def test_log_tick_labels_are_written_with_unicode_superscripts(label, expected):
+    assert unicode_power(label) == expected
+
+
+def test_saved_log_axes_label_their_ticks_without_mathtext(tmp_path):
+    fig, ax = new_figure(1, 1)
+    ax.loglog([1e-3, 1e2], [1e-5, 3e-5])
+    save_figure(fig, tmp_path / "f.pdf")
+    labels = [text.get_text() for text in ax.xaxis.get_majorticklabels() + ax.yaxis.get_minorticklabels()]
+    assert "10⁻³" in labels and "2×10⁻⁵" in labels
+    assert not any("$" in label for label in labels)
+
+
+def test_titles_break_between_words_outside_formulas_within_the_width():
+    text = "one two $a = b + c$ three four"
+    assert wrapped(text, 9) == "one two\n$a = b + c$\nthree\nfour"   # the formula counts 9 visible characters
+    assert wrapped(text, 100) == text
+    assert wrapped("averyveryverylongword x", 5) == "averyveryverylongword\nx"
+
+
+def test_a_long_title_is_wrapped_to_the_figure(tmp_path):
+    fig, _ = new_figure(1, 1, width=PRINTED_WIDTH)
+    title = suptitle(fig, "K = |x|/2: " + "a long title of many words " * 8)
+    assert len(title.get_text().split("\n")) >= 3
+    assert title.get_window_extent(fig.canvas.get_renderer()).width <= fig.bbox.width

@@ -42,15 +42,16 @@ def new_figure(rows: int = 1, columns: int = 1, width: float = 10.0, height: flo
 TITLE_CHARACTER_WIDTH = 0.56
 
 
-def suptitle(fig, text: str) -> None:
+def suptitle(fig, text: str):
     """The figure's title, its formulas in mathtext (:func:`mathtext`), wrapped to the figure's width (a title
     wider than the figure would widen the saved image and print every panel smaller). Lines are broken
     between words outside formulas, by an estimate of their width (:data:`TITLE_CHARACTER_WIDTH`):
     matplotlib's own wrapping measures every prefix of the title, a mathtext parse each, which took about
-    a sixth of a plot job's time."""
+    a sixth of a plot job's time. Returns the title's Text."""
     title = fig.suptitle(mathtext(text))
     columns = fig.get_figwidth() * 72 / (title.get_fontsize() * TITLE_CHARACTER_WIDTH)
     title.set_text(wrapped(title.get_text(), int(columns)))
+    return title
 
 
 def wrapped(text: str, columns: int) -> str:
