@@ -10,11 +10,14 @@ test process with a traceback (compiled loops cannot be interrupted any other wa
 from __future__ import annotations
 
 import faulthandler
+import os
 from contextlib import contextmanager
 
 import numpy as np
 from hypothesis import HealthCheck, settings
 from hypothesis import strategies as st
+
+from particle_methods.validation import ParameterTypeError
 
 CALL_SECONDS = 20.0
 
@@ -69,9 +72,24 @@ def safe_call(function, *args, **kwargs):
             result = function(*args, **kwargs)
         except (ValueError, TypeError) as error:
             assert str(error), f"{function.__name__} raised {type(error).__name__} without a message"
+            _count_type_refusal(function, [*args, *kwargs.values()], error)
             return None
     assert all_finite(result), f"{function.__name__}{args} returned non-finite values silently"
     return result
+
+
+#: With the environment variable FUZZ_TYPE_CENSUS set to a file, every refusal of a call given None or bytes is
+#: appended to it: the function, and whether the error was a ParameterTypeError (the README's promise for values
+#: of the wrong kind) or a plain ValueError/TypeError (issue 30's census).
+TYPE_CENSUS = os.environ.get("FUZZ_TYPE_CENSUS")
+
+
+def _count_type_refusal(function, values, error) -> None:
+    if TYPE_CENSUS and any(value is None or isinstance(value, bytes) for value in values):
+        kind = "ParameterTypeError" if isinstance(error, ParameterTypeError) else type(error).__name__
+        with open(TYPE_CENSUS, "a") as census:
+            census.write(f"{getattr(function, '__module__', '?')}.{getattr(function, '__name__', repr(function))}\t"
+                         f"{kind}\t{str(error)[:120]!r}\n")
 
 
 def naming(function, *names):

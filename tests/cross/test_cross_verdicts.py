@@ -17,6 +17,8 @@ import pytest
 import yaml
 
 from particle_methods.cross.exact import AggregationSolution
+from particle_methods.cross.methods import SHAPE
+from particle_methods.ltp.shapes import shape_named
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import cross as v
 from particle_replication.workflow import load_results, save_results
@@ -58,6 +60,10 @@ SPECS = {
 }
 
 
+#: int |s| phi(s) ds of the SP particles' shape: the W1 of a unit Dirac mass spread over one particle of width 1.
+SPREAD = shape_named(SHAPE).absolute_moment
+
+
 def default_order(method, t):
     """The order each method should show (the middle of its band)."""
     if method.startswith("SPD"):
@@ -91,6 +97,9 @@ def study(change=None, change_case=None):
                     continue
                 for size in sizes_at(sizes, t):
                     error = coefficient * size ** -default_order(method, t)
+                    if method == "SP" and t > 1.0:
+                        # the Dirac mass spread over one particle of width eps = sp_eps_over_h h (order 1)
+                        error = solution.dirac_mass * SPREAD * LTP["sp_eps_over_h"] / size
                     if method.startswith("SPD"):
                         # contraction: below the initial error; exact once all the mass is in the Dirac mass
                         error = 0.0 if collapsed(data, t) else error * (1.0 if t == 0.0 else 0.5)
@@ -202,8 +211,8 @@ def test_study_claims_all_pass_on_the_expected_outcome(passing_study):
     assert not failing(claims)
     assert {claim.id for claim in claims} == {f"cross.{name}" for name in (
         "exact.dirac_share", "order.spd", "spd.contraction", "spd.collapse_exact", "order.blob_before",
-        "order.blob_after", "order.ltp", "order.sp_before", "order.sp_after", "order.godunov",
-        "identity.particle_spd", "blob.no_dirac", "fastest")}
+        "order.blob_after", "order.ltp", "order.sp_before", "order.sp_after", "sp_after.dirac_spread",
+        "order.godunov", "identity.particle_spd", "blob.no_dirac", "fastest")}
     assert all(claim.kind in ("derived", "check") and claim.source for claim in claims)
 
 
@@ -285,6 +294,23 @@ def test_orders_off_their_bands_fail(method, when, order, claim):
     claims = run_study(study(off))
     assert status(claims, claim) == "fail"
     assert all(c.status == "pass" for c in claims if c.id.startswith("cross.order") and c.id != f"cross.{claim}")
+
+
+@pytest.mark.parametrize("factor", [
+    1.2,   # the Dirac mass smeared wider than one particle (a collapse still under way, centres apart)
+    0.8,   # narrower than one particle: not the shape the method carries
+])
+def test_sp_after_the_blowup_off_the_predicted_dirac_spread_fails(factor):
+    def off(row):
+        if row["method"] == "SP" and row["t"] in AFTER:
+            row["error"] *= factor
+
+    only_failing(run_study(study(off)), "sp_after.dirac_spread")
+
+
+def test_the_b3_particle_spreads_a_dirac_mass_over_7_15_of_its_width():
+    assert SPREAD == pytest.approx(7.0 / 15.0, rel=1e-15)
+    assert shape_named("hat").absolute_moment == pytest.approx(1.0 / 3.0, rel=1e-15)
 
 
 @pytest.mark.parametrize("width", [2.0, math.nan])

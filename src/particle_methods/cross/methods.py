@@ -47,6 +47,8 @@ from .profiles import Profile, profile
 
 #: The attractive Newtonian kernel |x|/2 of the blob package.
 KERNEL = "newtonian_attractive"
+#: Shape of the LTP and SP particles: the cubic B-spline (2.13) of the LTP paper's runs.
+SHAPE = "b3"
 #: Largest n of :func:`spd_equal`: its quantiles take one Newton iteration per particle (2^22 in about 10 s).
 MAX_EQUAL_MASSES = 2**22
 #: Most cells of :func:`godunov_mass` (its arrays and the time steps grow with them; 8192 in the study).
@@ -213,7 +215,8 @@ def ltp_method(data, h: float, dt: float, t: float, *, method: str = "ltp", eps:
     """The LTP (or SP, with width ``eps``) particles at t for W = |x|/2: a
     :class:`~particle_methods.ltp.solver.Particles` with ``cumulative_mass``."""
     t = positive("t", t)  # checked here so that the error names this function's parameter, not simulate's t_final
-    return simulate(initial_density(data), potential("newtonian"), h, dt, t, method=method, eps=eps).at(-1)
+    return simulate(initial_density(data), potential("newtonian"), h, dt, t, shape=SHAPE, method=method,
+                    eps=eps).at(-1)
 
 
 def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: float | None = None):
@@ -226,8 +229,8 @@ def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: flo
     steps = np.rint(times / dt).astype(np.int64)
     if np.any(np.abs(steps * dt - times) > 1e-9 * np.maximum(times, dt)):
         raise ValueError(f"every time must be a whole number of steps dt = {dt}, got {times}")
-    run = simulate(initial_density(data), potential("newtonian"), h, dt, float(times[-1]), method=method, eps=eps,
-                   record_every=1)
+    run = simulate(initial_density(data), potential("newtonian"), h, dt, float(times[-1]), shape=SHAPE, method=method,
+                   eps=eps, record_every=1)
     return [run.at(int(np.searchsorted(run.steps, step))) for step in steps]
 
 
