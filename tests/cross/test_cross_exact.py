@@ -18,6 +18,7 @@ from particle_methods.blob.initial import DATA_1D
 from particle_methods.cross import distances, methods
 from particle_methods.cross.exact import AggregationSolution, exact_mass_function
 from particle_methods.cross.methods import aggregation_flux
+from particle_methods.cross.profiles import monotone_root
 from particle_methods.sticky import ConcaveLaplaceSolution
 
 POLYNOMIAL = ("smooth20", "indicator", "smooth10")
@@ -271,3 +272,37 @@ def test_exact_mass_function_is_the_cdf(data):
 def test_bad_inputs_are_refused_naming_the_parameter(call, name, error):
     with pytest.raises(error, match=rf"\b{name}\b"):
         call()
+
+
+def _counted(function):
+    calls = []
+
+    def counted(x):
+        calls.append(np.size(x))
+        return function(x)
+
+    return counted, calls
+
+
+@pytest.mark.parametrize(("target", "low", "high"), [
+    (0.0, -1.0, 0.0),     # the root is the bracket's end (the level of the Dirac mass at x = 0)
+    (0.3, -1.0, 1.0),     # an interior root
+])
+def test_monotone_root_reaches_a_root_at_the_bracket_end_in_a_few_newton_steps(target, low, high):
+    """A root at an end of the bracket used to be approached by bisection, one halving per iteration towards
+    the denormals, for all MAX_ITERATIONS iterations."""
+    function, calls = _counted(lambda x: 2.0 * x + x**3)
+    root = monotone_root(function, lambda x: 2.0 + 3.0 * x**2, np.array([target]), np.array([low]), np.array([high]))
+    assert 2.0 * root[0] + root[0] ** 3 == pytest.approx(target, abs=1e-15)
+    assert len(calls) <= 8
+
+
+def test_monotone_root_bisects_where_newton_crawls():
+    """f(x) = (1 + x)^21 near its flat end (the mass of (4.3) at the support's edge): plain Newton shrinks the
+    distance by 20/21 a step (72 evaluations without the halving rule); with it, bisection takes over where
+    Newton crawls and 19 evaluations reach the root."""
+    function, calls = _counted(lambda x: (1.0 + x) ** 21)
+    target = np.array([1e-30])
+    root = monotone_root(function, lambda x: 21.0 * (1.0 + x) ** 20, target, np.array([-1.0]), np.array([0.0]))
+    assert root[0] == pytest.approx(-1.0 + 1e-30 ** (1.0 / 21.0), rel=1e-14)
+    assert len(calls) <= 30

@@ -37,10 +37,14 @@ def limited(name: str, values: np.ndarray) -> np.ndarray:
 def monotone_root(function: Callable, derivative: Callable, target, low, high):
     """The x in [low, high] with function(x) = target, for a non-decreasing ``function``, element-wise.
 
-    Newton steps that leave the bracket, or meet a zero derivative, are replaced by bisection,
-    and the bracket shrinks at every step, so the iteration converges for any monotone function;
-    it stops when every step moves by less than two ulps. ``low`` and ``high`` must bracket the
-    root (function(low) <= target <= function(high)); the caller guarantees it.
+    Newton steps that leave the bracket, meet a zero derivative, or move by more than half the step
+    before the last one are replaced by bisection (Numerical Recipes' rtsafe): the bracket shrinks at
+    every step and at least halves every other step, so the iteration converges for any monotone
+    function, and quadratically near a simple root; it stops when every step moves by less than two
+    ulps. A Newton step may land on an end of the bracket: a root at 0 = high (the level of the Dirac
+    mass) was otherwise approached by bisection, one halving per iteration towards the denormals, for
+    all MAX_ITERATIONS (200) iterations of every call. ``low`` and ``high`` must bracket the root
+    (function(low) <= target <= function(high)); the caller guarantees it.
     """
     target = np.asarray(target, dtype=np.float64)
     shape = target.shape
@@ -48,6 +52,8 @@ def monotone_root(function: Callable, derivative: Callable, target, low, high):
     low = np.broadcast_to(np.asarray(low, dtype=np.float64), shape).ravel().copy()
     high = np.broadcast_to(np.asarray(high, dtype=np.float64), shape).ravel().copy()
     x = 0.5 * low + 0.5 * high  # not 0.5 (low + high): the sum of two large brackets overflows
+    before_last = 0.5 * high - 0.5 * low  # rtsafe's "dxold": the size of the step before the last one
+    last = high - low
     active = np.arange(x.size)  # the points still moving: converged ones leave the iteration
     for _ in range(MAX_ITERATIONS):
         if active.size == 0:
@@ -59,9 +65,12 @@ def monotone_root(function: Callable, derivative: Callable, target, low, high):
         slope = derivative(xa)
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # such steps leave the bracket
             step = np.where(slope > 0.0, xa - value / slope, np.nan)
-        step = np.where((step > lo) & (step < hi), step, 0.5 * lo + 0.5 * hi)
+        newton = (step >= lo) & (step <= hi) & (np.abs(step - xa) <= 0.5 * before_last[active])
+        step = np.where(newton, step, 0.5 * lo + 0.5 * hi)
         step = np.where(value == 0.0, xa, step)
         moving = np.abs(step - xa) > 2.0 * np.spacing(np.maximum(np.abs(step), 1e-300))
+        before_last[active] = last[active]
+        last[active] = np.abs(step - xa)
         x[active], low[active], high[active] = step, lo, hi
         active = active[moving]
     return x.reshape(shape)
