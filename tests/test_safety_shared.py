@@ -319,3 +319,27 @@ def test_issue_30_silent_garbage_is_refused():
     with pytest.raises((ValueError, TypeError), match="levels"):
         law.speed_primitive(0, None)
     np.testing.assert_allclose(law.speed_primitive(0, np.array([[0.1], [0.3]])), [0.005, 0.045])
+
+
+@pytest.mark.parametrize("value", [None, b"b3", 3, ("b3",)])
+@pytest.mark.parametrize("lookup", ["shape", "data_1d", "kernel_1d", "potential", "psystem_case", "method"])
+def test_names_of_the_wrong_type_are_parameter_type_errors(lookup, value):
+    """Issue 30: a name looked up in a table (validation.one_of) and given as None, bytes or a number raised a plain
+    ValueError ("unknown shape None"); the README promises a ParameterTypeError for a value of the wrong kind. A
+    string that is not a key stays a ValueError."""
+    from particle_methods.blob.initial import data_1d
+    from particle_methods.blob.kernels import kernel_1d
+    from particle_methods.ltp.initial import density_named
+    from particle_methods.ltp.potentials import potential
+    from particle_methods.ltp.shapes import shape_named
+    from particle_methods.ltp.solver import simulate
+    from particle_methods.sticky.cases import psystem_initial_measures
+
+    calls = {"shape": shape_named, "data_1d": data_1d, "kernel_1d": kernel_1d, "potential": potential,
+             "psystem_case": lambda name: psystem_initial_measures(name, 0.1),
+             "method": lambda name: simulate(density_named("rho1"), potential("quadratic"), 0.1, 0.1, 0.2, method=name)}
+    with pytest.raises(ParameterTypeError):
+        calls[lookup](value)
+    with pytest.raises(ValueError, match="unknown") as refused:
+        calls[lookup]("no such name")
+    assert not isinstance(refused.value, ParameterTypeError)

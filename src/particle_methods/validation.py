@@ -153,7 +153,11 @@ def in_interval(name: str, values, low: float, high: float) -> np.ndarray:
 
 
 def one_of(what: str, name, table: dict):
-    """``table[name]``, or a ValueError "unknown <what> <name>: expected one of ..."."""
+    """``table[name]``; a ParameterTypeError when ``name`` is not of the keys' type (None or bytes for a
+    string key), else a ValueError "unknown <what> <name>: expected one of ..."."""
+    key_types = {type(key) for key in table}
+    if key_types and not isinstance(name, tuple(key_types)):
+        raise ParameterTypeError(f"{what} must be one of {sorted(table)}, got {name!r} of type {type(name).__name__}")
     try:
         return table[name]
     except (KeyError, TypeError):

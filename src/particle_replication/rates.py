@@ -21,7 +21,14 @@ from pathlib import Path
 
 import numpy as np
 
-from particle_methods.validation import ParameterTypeError, finite_array, finite_number, finite_result, integer_at_least
+from particle_methods.validation import (
+    ParameterTypeError,
+    finite_array,
+    finite_number,
+    finite_result,
+    instance,
+    integer_at_least,
+)
 
 MAX_POINTS = 100
 """Most resolutions one fit accepts: :func:`window_slopes` fits all n^2/2 windows, a second for 100."""
@@ -65,15 +72,18 @@ class RateFit:
     def __post_init__(self):
         for name in ("claim", "quantity", "resolution", "label"):
             _text(name, getattr(self, name))
-        if not isinstance(self.values, tuple) or not 2 <= len(self.values) <= MAX_POINTS:
+        instance("values", self.values, tuple)
+        if not 2 <= len(self.values) <= MAX_POINTS:
             raise ValueError(f"values must be a tuple of 2 to {MAX_POINTS} resolutions, got {self.values!r}")
         for value in self.values:
             finite_number("values", value)
         count = len(self.values)
-        if isinstance(self.window, bool) or not isinstance(self.window, int) or not 2 <= self.window <= count:
+        instance("window", self.window, int)
+        if isinstance(self.window, bool) or not 2 <= self.window <= count:
             raise ValueError(f"window must be an integer from 2 to {count} (the number of values), got "
                              f"{self.window!r}")
-        if not (isinstance(self.slopes, tuple) and len(self.slopes) == count
+        instance("slopes", self.slopes, tuple)
+        if not (len(self.slopes) == count
                 and all(isinstance(row, tuple) and len(row) == count for row in self.slopes)):
             raise ValueError(f"slopes must be a {count} x {count} tuple of tuples (one row per first point)")
         for i, row in enumerate(self.slopes):

@@ -165,7 +165,8 @@ class Simulation:
 
 def _method(method) -> str:
     """'ltp' or 'sp'."""
-    if not isinstance(method, str) or method not in METHODS:
+    instance("method", method, str)
+    if method not in METHODS:
         raise ValueError(f"unknown method {method!r}: expected 'ltp' or 'sp'")
     return method
 

@@ -10,7 +10,7 @@ import numpy as np
 from ..finite_volume.fluxes import burgers_flux, concave_flux
 from ..finite_volume.grids import l1_between_cell_functions, l1_distance_to_step_cdf
 from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
-from ..validation import finite_array, finite_number, integer_at_least, sorted_array
+from ..validation import finite_array, finite_number, instance, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution
 from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
 from .spd import spd_positions, velocities_from_flux
@@ -64,6 +64,7 @@ def psystem_initial_measures(case: str, x0: float) -> tuple[QuantileMeasure, Qua
     ``shocks``: m^-(dx) = exp(-|x - x0|)/2 and w_0^+ = 1{x >= 0} (Figures 6, 7).
     """
     x0 = finite_number("x0", x0)
+    instance("case", case, str)
     if case == "rarefaction":
         return Laplace(x0), Laplace(-x0)
     if case == "shocks":
