@@ -619,3 +619,17 @@ def test_hll_refuses_a_negative_specific_volume():
     v0 = np.where(edges[:-1] < 0.0, 5.0, -5.0)
     with pytest.raises(ValueError, match="negative specific volume"):
         hll_psystem(system, np.full(1000, 0.3), v0, edges, 0.5)
+
+
+def test_grids_beyond_max_cells_are_refused_before_any_work():
+    """Issue 30: 1e8 cells ended in a MemoryError after minutes; every finite-volume grid is now checked
+    against MAX_CELLS (grids.checked_edges), the exact cell averages included."""
+    from particle_methods.finite_volume.grids import MAX_CELLS
+
+    edges = np.linspace(-1.0, 1.0, MAX_CELLS + 2)
+    exact = PSystemRiemann(SYSTEM, *next(iter(RIEMANN.values())))
+    with pytest.raises(ValueError, match="MAX_CELLS"):
+        exact.cell_averages(edges, 0.5)
+    with pytest.raises(ValueError, match="MAX_CELLS"):
+        godunov(BURGERS, np.zeros(MAX_CELLS + 1), edges, 0.1)
+    assert exact.cell_averages(edges[:: 1000], 0.5)[0].size == (MAX_CELLS + 1) // 1000

@@ -1,7 +1,7 @@
 """Section 5.1.1 and 5.2.1: the cost of the compiled kernels against the problem size.
 
 Each size runs once untimed, then is timed ``repeats`` times and the best time kept (the least
-disturbed by the machine) when a run is shorter than REPEAT_BELOW (0.05 s), else once; the rule runs
+disturbed by the machine) when a run is shorter than REPEAT_BELOW (0.2 s), else once; the rule runs
 alone on the cores it asks for. The kernels are called directly, past the input
 checks of the public functions, so that the time measured is the algorithm's.
 

@@ -34,6 +34,7 @@ from ..blob.mollifiers import mollifier
 from ..blob.pair_sums import pair_sums
 from ..blob.solver import integrate_particles
 from ..finite_volume.fluxes import CONCAVE
+from ..finite_volume.grids import MAX_CELLS
 from ..finite_volume.scalar import godunov
 from ..ltp.initial import InitialDensity
 from ..ltp.potentials import potential
@@ -51,8 +52,6 @@ KERNEL = "newtonian_attractive"
 SHAPE = "b3"
 #: Largest n of :func:`spd_equal`: its quantiles take one Newton iteration per particle (2^22 in about 10 s).
 MAX_EQUAL_MASSES = 2**22
-#: Most cells of :func:`godunov_mass` (its arrays and the time steps grow with them; 8192 in the study).
-MAX_CELLS = 10**7
 #: Latest time of the SPDs: their velocities carry rounding errors of about 1e-16 (a cluster at rest moves at
 #: that speed), which t multiplies; up to 1e6 they move positions of order 1 by at most about 1e-10.
 MAX_TIME = 1e6

@@ -14,12 +14,19 @@ import numpy as np
 
 from ..validation import finite_array, finite_number, finite_result, positive, sorted_array
 
+#: Most cells of one grid: every scheme and exact average keeps several arrays of this length (and the schemes
+#: take more steps on more cells); 1e8 cells ended in a MemoryError after minutes (issue 30). The pipeline's
+#: finest grid has 128,000 cells.
+MAX_CELLS = 10**7
+
 
 def checked_edges(x_edges, name: str = "x_edges") -> np.ndarray:
-    """Strictly increasing cell edges, at least two."""
+    """Strictly increasing cell edges, at least two, at most :data:`MAX_CELLS` cells."""
     edges = sorted_array(name, x_edges)
     if edges.size < 2:
         raise ValueError(f"{name} must contain at least 2 edges, got {edges.size}")
+    if edges.size - 1 > MAX_CELLS:
+        raise ValueError(f"{name} holds {edges.size - 1} cells, more than MAX_CELLS = {MAX_CELLS:.0e}")
     if np.any(np.diff(edges) <= 0):
         raise ValueError(f"{name} must be strictly increasing")
     if not np.isfinite(edges[-1] - edges[0]):
