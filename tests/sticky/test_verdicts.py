@@ -391,7 +391,7 @@ def runs(errors, work, seconds, *extra):
 
 def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_slowdown=1.0, events_exponent=2.0,
            rarefaction_plateau=False, shock_gap=0.05, reference_gap=1e-3, hll_gap=2e-4, time_power=1.0,
-           laplace_log=True, plus_shift=0.1):
+           laplace_log=True, plus_shift=0.1, spd_time_power=1.0):
     """Study results shaped as the theory predicts, with one knob per claim to make it wrong. Errors are
     (1 + log n)/n where the prediction carries a log factor; every method's three largest runs last
     more than the time floor."""
@@ -405,7 +405,7 @@ def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_sl
     cells = np.array([250.0, 500.0, 1000.0, 2000.0, 4000.0])
     for name in v.SCALAR_NAMES:
         d[f"{name}_spd_n"], d[f"{name}_cells"] = sizes, cells
-        d[f"{name}_spd"] = runs(1.0 / sizes, sizes ** spd_exponent, 1e-5 * sizes ** spd_exponent)
+        d[f"{name}_spd"] = runs(1.0 / sizes, sizes ** spd_exponent, 1e-5 * sizes ** (spd_exponent * spd_time_power))
         work = (cells / 10.0) ** godunov_exponent
         d[f"{name}_godunov"] = runs(10.0 / cells, work, 1e-6 * work ** time_power)
     for case in ("rarefaction", "shocks"):
@@ -428,6 +428,15 @@ def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_sl
 
 def beyond_status(d, name):
     return status(v.beyond_claims(d, quiet(), BEYOND), f"beyond.{name}")
+
+
+def test_the_spds_memory_bound_time_exponent_does_not_decide_the_wall_time_check():
+    """The SPD's largest runs cross from the cache to memory (time per particle 7.1, 9.4, 10.5 ns at n = 1.6e6,
+    3.3e6, 6.6e6): an exponent of 1.3 against its operations is reported, not decisive; the other methods' still
+    are (time_power above)."""
+    claims = v.beyond_claims(beyond(spd_time_power=1.3), quiet(), BEYOND)
+    check = next(claim for claim in claims if claim.id == "sticky.beyond.cost.wall_time")
+    assert check.status == "pass" and "spd_concave_laplace 1.30" in check.claim
 
 
 def test_beyond_claims_pass_on_the_predicted_shapes():

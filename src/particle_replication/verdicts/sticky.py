@@ -631,11 +631,17 @@ def beyond_claims(d, rates: Recorder, p):
                       published="displaced"),
             ]
     band = p["time_band"]
-    listed = ", ".join(f"{key} {value:.2f}" for key, value in slopes.items())
+    # The SPD's timed runs (0.01 to 0.07 s, n from 1.6e6 to 6.6e6) cross from the cache to memory: its time per
+    # particle rises by half over them, so its exponent measures the memory hierarchy, not the operations
+    # (config/changes.yaml); its O(n) is measured on sizes within one memory regime by sticky.cost.hull.
+    deciding = {key: value for key, value in slopes.items() if not key.startswith("spd_")}
+    listed = ", ".join(f"{key} {value:.2f}" for key, value in deciding.items())
+    memory = ", ".join(f"{key} {value:.2f}" for key, value in slopes.items() if key not in deciding)
     out.append(claim(c.between, "beyond.cost.wall_time", "check", "our timing", "all cost fits",
                      f"the counted operations are the cost: exponent of the best wall time against them over the (at "
                      f"most {window}) largest runs lasting at least {p['time_floor']:g} s, farthest from 1 of: "
-                     f"{listed}", *band, c.farthest_from_centre(list(slopes.values()), band)))
+                     f"{listed} (the SPD's, {memory}, are reported: its largest runs cross from the cache to memory)",
+                     *band, c.farthest_from_centre(list(deciding.values()), band)))
     return out
 
 
