@@ -1,13 +1,14 @@
 """Aggregates that move and merge: the asymmetric data two_bumps (particle_methods.cross.hull) by the SPD (equal
-masses and grid weights), the blob method, Godunov, LTP (before the first blow-up) and SP, against the exact
-solution by the continuous hull.
+masses and grid weights), the particle method and LTP (before the first blow-up), the blob method, Godunov and SP,
+against the exact solution by the continuous hull.
 
 - exact: the aggregates (positions, masses) at every time of the grid, the blow-up times 1/peak of each bump, the
   merger time (bisection on the number of aggregates);
 - every method and size: W1 to the exact solution at every time of the grid (its largest value is the error
   uniformly in time), and, at every time, the centre of mass and the spread of the particles whose levels lie
   in each exact aggregate (the levels k - 1/2 of the cumulative masses; NaN for Godunov, which has no particles);
-- the SPD: its merger time, when its two heaviest clusters (particles at one position) become one.
+- the SPD: its merger time, when its two heaviest clusters (particles at one position) become one;
+- the particle method: its largest distance to the grid SPD of the same particles (NaN for the other methods).
 """
 
 import numpy as np
@@ -109,18 +110,23 @@ def run(p, output):
     # LTP (refused as the left bump blows up: only the times before it) and SP (eps = h), one run per size.
     ltp = p["ltp"]
     before = times[times < min(1.0 / b.height for b in solutions[0].data.bumps)]
+    # The particle method, defined up to its first collision (the left bump's blow-up): the times before it.
+    runs += [("particle method", k, lambda k, t: m.particle_method(DATA, 1.0 / k, t) if t in before else None)
+             for k in p["particle_inverse_h"]]
     ltp_runs = {("LTP", k): dict(zip(before, m.ltp_paths(DATA, 1.0 / k, ltp["dt_over_h"] / k, before)))
                 for k in ltp["inverse_h"]}
     ltp_runs |= {("SP", k): dict(zip(times, m.ltp_paths(DATA, 1.0 / k, ltp["dt_over_h"] / k, times, method="sp",
                                                         eps=ltp["sp_eps_over_h"] / k)))
                  for k in ltp["sp_inverse_h"]}
     runs += [(name, k, lambda k, t, name=name: ltp_runs[name, k].get(t)) for name, k in ltp_runs]
-    names, sizes, errors, centres, spreads, mergers = [], [], [], [], [], []
+    names, sizes, errors, centres, spreads, mergers, differences = [], [], [], [], [], [], []
     for name, size, method in runs:
-        row, centre_row, spread_row = [], [], []
+        row, centre_row, spread_row, difference = [], [], [], np.nan
         for t, solution in zip(times, solutions):
             out = method(size, float(t))
-            if out is None:  # LTP after the first blow-up
+            if out is not None and name == "particle method":
+                difference = np.nanmax([difference, np.max(np.abs(out[0] - m.spd_grid(DATA, 1.0 / size, t)[0]))])
+            if out is None:  # LTP and the particle method after the first blow-up
                 row.append(np.nan)
                 centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
             elif name in ("LTP", "SP"):
@@ -147,6 +153,7 @@ def run(p, output):
         centres.append(centre_row)
         spreads.append(spread_row)
         mergers.append(merged)
+        differences.append(difference)
         progress(f"{name:18} size {size:6d}: largest W1 over t {np.nanmax(row):.4g} (t = 0: {row[0]:.4g}); "
                  f"merger {merged!r}")
     save_results(output, times=times, fixed_times=np.array(p["fixed_times"], float), exact_positions=exact_positions,
@@ -154,7 +161,7 @@ def run(p, output):
                  path_masses=path_masses, spd_clusters=np.array(cluster_rows),
                  blowups=np.array([1.0 / b.height for b in HullSolution(DATA, 0.0).data.bumps]),
                  methods=np.array(names), size=np.array(sizes), error=np.array(errors), centre=np.array(centres),
-                 spread=np.array(spreads), method_merger=np.array(mergers))
+                 spread=np.array(spreads), method_merger=np.array(mergers), spd_difference=np.array(differences))
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821

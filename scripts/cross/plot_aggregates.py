@@ -1,6 +1,6 @@
 """two_bumps, whose aggregates move and merge: (a) the exact aggregates' paths (line width growing with the mass)
-and the smallest equal-mass SPD's heavy clusters; (b) W1 against t at each method's largest size (LTP only before
-the first blow-up); (c) the largest W1 over t against the size."""
+and the smallest equal-mass SPD's heavy clusters; (b) W1 against t at each method's largest size (LTP and the
+particle method only before the first blow-up); (c) the largest W1 over t against the size."""
 
 import numpy as np
 
@@ -8,7 +8,7 @@ from particle_replication.plotting import label_panel, new_figure, save_figure, 
 from particle_replication.workflow import load_results, logged
 
 STYLES = {"SPD, equal masses": ("C0", "o"), "SPD, grid weights": ("C1", "s"), "Godunov for F": ("C3", "D"),
-          "LTP": ("C6", ">"), "SP": ("C7", "p")}
+          "LTP": ("C6", ">"), "SP": ("C7", "p"), "particle method": ("C2", "^")}
 BLOB = ("C4", "v")
 
 
@@ -51,7 +51,7 @@ def run(d, p, output):
     axes[2].set(xscale="log", yscale="log", xlabel="particles, 1/h or cells", ylabel="largest W1 over t")
     # One legend for (b) and (c), below the panels (inside, it would hide lines of one or the other).
     handles, labels = axes[2].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize="small")
+    fig.legend(handles, labels, loc="outside lower center", ncol=(len(labels) + 1) // 2, fontsize="small")
     label_panel(axes[2], "(c) W1 uniformly in time")
     suptitle(fig, "K = |x|/2 from two bumps: aggregates that move and merge, against the exact solution by the hull")
     save_figure(fig, output.pdf, output.png)

@@ -505,14 +505,16 @@ MERGER = 0.9 / (0.9066666666666667 / 2)
 
 
 def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, blob_order=4.0, ltp_order=2.0,
-               sp_order=1.0, **changes):
+               sp_order=1.0, particle_difference=2e-16, **changes):
     """A two_bumps result as aggregates_data.py saves it: W1 falling in time from c/size^spd_order at t = 0 (times
     (1 + growth t) if growth), merger errors 1e-1/n^merger_order, the blob's centres 1/(1/h)^blob_order off; LTP's
-    W1 c/size^ltp_order before the first blow-up (NaN after), SP's c/size^sp_order."""
+    W1 c/size^ltp_order before the first blow-up (NaN after), SP's c/size^sp_order; the particle method (NaN after
+    the first blow-up) particle_difference from the grid SPD."""
     blob = f"blob, m = {AGG['blob']['order']}"
     runs = [("SPD, equal masses", n) for n in AGG["spd_n"]] + [("SPD, grid weights", k) for k in AGG["grid_inverse_h"]]
     runs += [(blob, k) for k in AGG["blob"]["inverse_h"]] + [("Godunov for F", k) for k in AGG["godunov_cells"]]
     runs += [("LTP", k) for k in AGG["ltp"]["inverse_h"]] + [("SP", k) for k in AGG["ltp"]["sp_inverse_h"]]
+    runs += [("particle method", k) for k in AGG["particle_inverse_h"]]
     exact = np.full((AGG_TIMES.size, 2), np.nan)
     exact[(AGG_TIMES > 0.5) & (AGG_TIMES < 1.0), 0] = -0.3
     exact[(AGG_TIMES > 1.0) & (AGG_TIMES < MERGER)] = [-0.2, 0.02]
@@ -521,6 +523,8 @@ def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, b
     for name, size in runs:
         if name == "LTP":
             errors.append(np.where(AGG_TIMES < 0.5, 0.3 * size ** -ltp_order, np.nan))
+        elif name == "particle method":
+            errors.append(np.where(AGG_TIMES < 0.5, 0.3 / size, np.nan))
         elif name == "SP":
             errors.append(np.full(AGG_TIMES.size, 0.3 * size ** -sp_order))
         else:
@@ -535,7 +539,9 @@ def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, b
               "spd_clusters": np.full((AGG_TIMES.size, 4), np.nan), "blowups": np.array([0.5, 1.0]),
               "methods": np.array([name for name, _ in runs]), "size": np.array([size for _, size in runs]),
               "error": np.array(errors), "centre": np.array(centres), "spread": np.zeros_like(np.array(centres)),
-              "method_merger": np.array(mergers)}
+              "method_merger": np.array(mergers),
+              "spd_difference": np.array([particle_difference if name == "particle method" else np.nan
+                                          for name, _ in runs])}
     return result | changes
 
 
@@ -568,6 +574,11 @@ def test_an_spd_merging_at_a_time_that_does_not_converge_fails():
 
 def test_a_grid_spd_merging_1e_6_late_fails():
     only_failing(run_aggregates(aggregates(grid_merger=1e-6)), "aggregate.spd_merger.grid_weights")
+
+
+def test_a_particle_method_apart_from_the_grid_spd_before_its_first_collision_fails():
+    """A particle 1e-6 off the SPD: the method would not move the grid particles at (mass right - mass left)/2."""
+    only_failing(run_aggregates(aggregates(particle_difference=1e-6)), "two_bumps.particle_spd")
 
 
 def test_blob_aggregates_off_by_a_fixed_offset_fail():

@@ -67,13 +67,15 @@ RESULTS = (
             "centre",
             "spread",
             "method_merger",
+            "spd_difference",
             "path_times",
             "path_positions",
             "path_masses",
             "spd_clusters",
         ),
         Job(
-            "two_bumps: the SPDs, the blob method and Godunov against the exact aggregates on a time grid",
+            "two_bumps: the SPDs, the particle and blob methods, Godunov, LTP and SP against the exact aggregates on a "
+            "time grid",
             lambda s: {"cfg": s["aggregates"]},
         ),
     ),
@@ -130,8 +132,9 @@ PAPER = Paper(
                     lambda s: (
                         "K = |x|/2 from the asymmetric two_bumps: (a) the exact aggregates (lines, width growing with "
                         "their mass) and the equal-mass SPD's heavy clusters (dots), blow-ups at t = 1/2 and 1 and the "
-                        "merger at 1.985; (b) W1 to the exact solution against t at each method's largest size; (c) "
-                        "its largest value over t against the size."
+                        "merger at 1.985; (b) W1 to the exact solution against t at each method's largest size (LTP "
+                        "and the particle method up to the first blow-up); (c) its largest value over t against the "
+                        "size."
                     ),
                     ours=True,
                 ),

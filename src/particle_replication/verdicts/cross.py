@@ -546,6 +546,13 @@ def aggregate_claims(a, rates: Recorder, p):
             f"{method}, two_bumps: order in 1/h of the largest W1 over the times "
             f"{'before' if key == 'ltp_order' else 'after'} the first blow-up (t = {first_blowup:g}): {why} "
             f"(largest W1: {', '.join(f'{e:.3g}' for e in largest)}; the symmetric study's band)", *band, slope))
+    rows = _method_rows(a, "particle method")
+    out.append(claim(
+        c.at_most, "two_bumps.particle_spd", "derived", SOURCE_IDENTITY, "aggregates",
+        f"the particle method (DOP853, rtol 1e-12) on two_bumps equals the grid SPD of the same particles at every "
+        f"time of the grid before its first collision (t < {first_blowup:g}), the left bump's blow-up: largest "
+        f"|x_particle - x_SPD| over 1/h = {', '.join(str(int(k)) for k in a['size'][rows])}",
+        c.ROUNDING * LENGTH, float(np.max(a["spd_difference"][rows])) if rows.size else math.nan))
     blob = f"blob, m = {q['blob']['order']}"
     rows = _method_rows(a, blob)
     fixed = [int(np.argmin(np.abs(a["times"] - t))) for t in a["fixed_times"]]
