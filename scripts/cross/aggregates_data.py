@@ -7,7 +7,9 @@ against the exact solution by the continuous hull.
 - every method and size: W1 to the exact solution at every time of the grid (its largest value is the error
   uniformly in time), and, at every time, the centre of mass and the spread of the particles whose levels lie
   in each exact aggregate (the levels k - 1/2 of the cumulative masses; NaN for Godunov, which has no particles);
-- the SPD: its merger time, when its two heaviest clusters (particles at one position) become one;
+- the SPD: its merger time, when its two heaviest clusters (particles at one position) become one; the blob method:
+  the first time of a fine grid over the merger bracket at which the centres of the particles in the two exact
+  aggregates' levels come within delta of each other (any fixed multiple of delta gives the same order in h);
 - the particle method: its largest distance to the grid SPD of the same particles (NaN for the other methods).
 """
 
@@ -74,6 +76,22 @@ def spd_merger(x0, velocities, masses, low, high, share):
         low, high = (middle, high) if count(middle) >= 2 else (low, middle)
 
 
+def blob_merger(positions, masses, delta, path_times, start):
+    """First of ``path_times`` >= ``start`` at which the centres of mass of the blob particles in the levels of the two
+    exact aggregates at ``start`` are within ``delta`` (NaN if never, or if there are not two aggregates then). The
+    particles keep their order (the ODE's field is Lipschitz), so their levels are those of the data."""
+    _, aggregate_masses, lowers = HullSolution(DATA, start).aggregates
+    if aggregate_masses.size != 2:
+        return np.nan
+    levels = np.cumsum(masses) - 0.5 * masses
+    centres = []
+    for mass, lower in zip(aggregate_masses, lowers):
+        group = (levels > lower) & (levels < lower + mass)
+        centres.append(positions[:, group] @ masses[group] / masses[group].sum())
+    close = np.flatnonzero((path_times >= start) & (np.abs(centres[1] - centres[0]) <= delta))
+    return float(path_times[close[0]]) if close.size else np.nan
+
+
 def run(p, output):
     times = grid_times(p)
     solutions = [HullSolution(DATA, float(t)) for t in times]
@@ -101,10 +119,11 @@ def run(p, output):
     blob = p["blob"]
     runs = [("SPD, equal masses", n, lambda n, t: m.spd_equal(DATA, n, t)) for n in p["spd_n"]]
     runs += [("SPD, grid weights", k, lambda k, t: m.spd_grid(DATA, 1.0 / k, t)) for k in p["grid_inverse_h"]]
-    # The blob method: one integration per size, through every time of the grid.
-    paths = {k: m.blob_paths(DATA, 1.0 / k, times, order=blob["order"], q=blob["q"]) for k in blob["inverse_h"]}
-    runs += [(f"blob, m = {blob['order']}", k, lambda k, t: (paths[k][0][int(np.searchsorted(times, t))], paths[k][1]))
-             for k in blob["inverse_h"]]
+    # The blob method: one integration per size, through every time of the grid and a fine grid over the merger bracket.
+    blob_times = np.union1d(times, np.linspace(*p["merger_bracket"], p["merger_samples"] + 1))
+    paths = {k: m.blob_paths(DATA, 1.0 / k, blob_times, order=blob["order"], q=blob["q"]) for k in blob["inverse_h"]}
+    runs += [(f"blob, m = {blob['order']}", k,
+              lambda k, t: (paths[k][0][int(np.searchsorted(blob_times, t))], paths[k][1])) for k in blob["inverse_h"]]
     runs += [("Godunov for F", cells, lambda n, t: m.godunov_mass(DATA, n, t, cfl=p["cfl"]))
              for cells in p["godunov_cells"]]
     # LTP (refused as the left bump blows up: only the times before it) and SP (eps = h), one run per size.
@@ -147,6 +166,9 @@ def run(p, output):
             else:
                 x0, _, masses = m.grid_particles(DATA, 1.0 / size)
             merged = spd_merger(x0, m.weighted_velocities(masses), masses, *p["merger_bracket"], p["cluster_share"])
+        elif name.startswith("blob"):
+            merged = blob_merger(paths[size][0], paths[size][1], (1.0 / size) ** blob["q"], blob_times,
+                                 p["merger_bracket"][0])
         names.append(name)
         sizes.append(size)
         errors.append(row)

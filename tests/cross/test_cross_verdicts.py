@@ -505,7 +505,7 @@ MERGER = 0.9 / (0.9066666666666667 / 2)
 
 
 def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, blob_order=4.0, ltp_order=2.0,
-               sp_order=1.0, particle_difference=2e-16, **changes):
+               sp_order=1.0, particle_difference=2e-16, blob_merger_order=0.9, **changes):
     """A two_bumps result as aggregates_data.py saves it: W1 falling in time from c/size^spd_order at t = 0 (times
     (1 + growth t) if growth), merger errors 1e-1/n^merger_order, the blob's centres 1/(1/h)^blob_order off; LTP's
     W1 c/size^ltp_order before the first blow-up (NaN after), SP's c/size^sp_order; the particle method (NaN after
@@ -530,8 +530,10 @@ def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, b
         else:
             errors.append(0.3 * size ** -spd_order * np.exp(-AGG_TIMES) * (1.0 + growth * AGG_TIMES))
         centres.append(exact + (size ** -blob_order if name == blob else 0.0))
-        mergers.append(MERGER + (0.1 * size ** -merger_order if name == "SPD, equal masses" else grid_merger)
-                       if name.startswith("SPD") else np.nan)
+        if name.startswith("SPD"):
+            mergers.append(MERGER + (0.1 * size ** -merger_order if name == "SPD, equal masses" else grid_merger))
+        else:
+            mergers.append(MERGER - 0.5 * size ** -blob_merger_order if name == blob else np.nan)
     result = {"times": AGG_TIMES, "fixed_times": np.array(AGG["fixed_times"], float), "exact_positions": exact,
               "exact_masses": np.where(np.isfinite(exact), 0.3, np.nan), "merger": MERGER,
               "path_times": AGG_TIMES, "path_positions": exact,
@@ -574,6 +576,12 @@ def test_an_spd_merging_at_a_time_that_does_not_converge_fails():
 
 def test_a_grid_spd_merging_1e_6_late_fails():
     only_failing(run_aggregates(aggregates(grid_merger=1e-6)), "aggregate.spd_merger.grid_weights")
+
+
+@pytest.mark.parametrize("merger_order", [0.0, 0.5])
+def test_a_blob_merger_not_converging_at_order_q_fails(merger_order):
+    """A merger a fixed time off (order 0), or off by sqrt(h) (the clusters' gap read at sqrt(delta))."""
+    only_failing(run_aggregates(aggregates(blob_merger_order=merger_order)), "aggregate.blob_merger")
 
 
 def test_a_particle_method_apart_from_the_grid_spd_before_its_first_collision_fails():

@@ -567,6 +567,16 @@ def aggregate_claims(a, rates: Recorder, p):
         f"its position, largest over the aggregates at t = "
         f"{', '.join(f'{float(t):g}' for t in a['times'][with_aggregates])}; order in 1/h (errors "
         f"{', '.join(f'{e:.3g}' for e in centre_error)})", rules["blob_centre_order_min"], centre_order))
+    merger_error = np.abs(a["method_merger"][rows] - float(a["merger"]))
+    merger_order = -rates.add(order(f"{PAPER}.aggregate.blob_merger", "size", a["size"][rows],
+                                    np.maximum(merger_error, 1e-300), window, blob))
+    out.append(claim(
+        c.at_least, "aggregate.blob_merger", "derived", SOURCE_AGGREGATES, "aggregates",
+        f"{blob}: the time its two groups (the particles in the levels of the exact aggregates before the merger) "
+        f"come within delta of each other, against the exact merger at {float(a['merger']):.10g}: they approach at "
+        f"the exact relative speed until their gap is a few delta, so the error is O(delta) = O(h^{q['blob']['q']:g}); "
+        f"order in 1/h (errors {', '.join(f'{e:.3g}' for e in merger_error)})", rules["blob_merger_order_min"],
+        merger_order))
     return out
 
 
