@@ -39,15 +39,21 @@ def padded(values, slots):
     return np.pad(values, (0, slots - values.size), constant_values=np.nan)
 
 
+def level_groups(solution, masses):
+    """For each exact aggregate of ``solution``, the mask of the particles (in position order, with ``masses``)
+    whose levels, k - 1/2 of the cumulative masses, lie in the aggregate's levels."""
+    levels = np.cumsum(masses) - 0.5 * masses
+    _, aggregate_masses, lowers = solution.aggregates
+    return [(levels > lower) & (levels < lower + mass) for mass, lower in zip(aggregate_masses, lowers)]
+
+
 def aggregate_centres(solution, positions, masses):
     """(centre, spread) of the particles whose levels lie in each exact aggregate (NaN for an aggregate without
     particles in its levels)."""
     order = np.argsort(positions, kind="stable")
     x, w = positions[order], masses[order]
-    levels = np.cumsum(w) - 0.5 * w
     centres, spreads = [], []
-    for position, mass, lower in zip(*solution.aggregates):
-        inside = (levels > lower) & (levels < lower + mass)
+    for position, inside in zip(solution.aggregates[0], level_groups(solution, w)):
         if not np.any(inside):
             centres.append(np.nan)
             spreads.append(np.nan)
@@ -80,14 +86,10 @@ def blob_merger(positions, masses, delta, path_times, start):
     """First of ``path_times`` >= ``start`` at which the centres of mass of the blob particles in the levels of the two
     exact aggregates at ``start`` are within ``delta`` (NaN if never, or if there are not two aggregates then). The
     particles keep their order (the ODE's field is Lipschitz), so their levels are those of the data."""
-    _, aggregate_masses, lowers = HullSolution(DATA, start).aggregates
-    if aggregate_masses.size != 2:
+    groups = level_groups(HullSolution(DATA, start), masses)
+    if len(groups) != 2:
         return np.nan
-    levels = np.cumsum(masses) - 0.5 * masses
-    centres = []
-    for mass, lower in zip(aggregate_masses, lowers):
-        group = (levels > lower) & (levels < lower + mass)
-        centres.append(positions[:, group] @ masses[group] / masses[group].sum())
+    centres = [positions[:, group] @ masses[group] / masses[group].sum() for group in groups]
     close = np.flatnonzero((path_times >= start) & (np.abs(centres[1] - centres[0]) <= delta))
     return float(path_times[close[0]]) if close.size else np.nan
 
