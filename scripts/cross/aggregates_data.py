@@ -5,17 +5,19 @@ against the exact solution by the continuous hull.
 - exact: the aggregates (positions, masses) at every time of the grid, the blow-up times 1/peak of each bump, the
   merger time (bisection on the number of aggregates);
 - every method and size: W1 to the exact solution at every time of the grid (its largest value is the error
-  uniformly in time), and, at every time, the centre of mass and the spread of the particles whose levels lie
-  in each exact aggregate (the levels k - 1/2 of the cumulative masses; NaN for Godunov, which has no particles);
-- the SPD: its merger time, when its two heaviest clusters (particles at one position) become one; the blob method:
-  the first time of a fine grid over the merger bracket at which the centres of the particles in the two exact
-  aggregates' levels come within delta of each other (any fixed multiple of delta gives the same order in h);
+  uniformly in time), and, at every time, the centre of each exact aggregate's levels in the method's output
+  (particle_methods.cross.aggregates: the mean of its quantile over those levels);
+- the merger time: the SPD's when its two heavy clusters become one; the blob's, SP's and Godunov's when the centres
+  of the two exact aggregates' levels come within delta, eps or one cell (the blob and SP on every sample of their
+  runs over the merger bracket, interpolated; Godunov by Brent's method); NaN for LTP and the particle method, which
+  stop at the first blow-up;
 - the particle method: its largest distance to the grid SPD of the same particles (NaN for the other methods).
 """
 
 import numpy as np
 
 from particle_methods.cross import HullSolution, merger_time
+from particle_methods.cross import aggregates as agg
 from particle_methods.cross import methods as m
 from particle_methods.cross.distances import w1_atoms, w1_cells, w1_particles
 from particle_methods.sticky.spd import spd_positions
@@ -39,59 +41,23 @@ def padded(values, slots):
     return np.pad(values, (0, slots - values.size), constant_values=np.nan)
 
 
-def level_groups(solution, masses):
-    """For each exact aggregate of ``solution``, the mask of the particles (in position order, with ``masses``)
-    whose levels, k - 1/2 of the cumulative masses, lie in the aggregate's levels."""
-    levels = np.cumsum(masses) - 0.5 * masses
-    _, aggregate_masses, lowers = solution.aggregates
-    return [(levels > lower) & (levels < lower + mass) for mass, lower in zip(aggregate_masses, lowers)]
+def atoms(name, out, mass):
+    """A method's output as (positions, masses) of point masses (see particle_methods.cross.aggregates)."""
+    if name.startswith("Godunov"):
+        return agg.cell_atoms(*out, mass)
+    if name in ("LTP", "SP"):
+        return out.centres, out.weights
+    return out
 
 
-def aggregate_centres(solution, positions, masses):
-    """(centre, spread) of the particles whose levels lie in each exact aggregate (NaN for an aggregate without
-    particles in its levels)."""
-    order = np.argsort(positions, kind="stable")
-    x, w = positions[order], masses[order]
-    centres, spreads = [], []
-    for position, inside in zip(solution.aggregates[0], level_groups(solution, w)):
-        if not np.any(inside):
-            centres.append(np.nan)
-            spreads.append(np.nan)
-            continue
-        centres.append(float(np.sum(w[inside] * x[inside]) / np.sum(w[inside])))
-        spreads.append(float(np.max(np.abs(x[inside] - position))))
-    return centres, spreads
-
-
-def clusters(positions, masses, share):
-    """Number of clusters (particles at one position) holding at least ``share`` of the mass."""
-    values, index = np.unique(positions, return_inverse=True)
-    totals = np.bincount(index, weights=masses)
-    return int(np.sum(totals >= share * masses.sum()))
-
-
-def spd_merger(x0, velocities, masses, low, high, share):
-    """Time at which the SPD's heavy clusters drop from two to one, by bisection (NaN if [low, high] holds none)."""
-    count = lambda t: clusters(spd_positions(x0, velocities, t, masses=masses), masses, share)  # noqa: E731
-    if not (count(low) >= 2 and count(high) == 1):
+def path_merger(times, positions, masses, low, length):
+    """Merger from a run sampled at ``times``: the first time from ``low`` on at which the centres of the two exact
+    aggregates' levels at ``low`` come within ``length`` (NaN if there are not two aggregates then)."""
+    ranges = agg.level_ranges(HullSolution(DATA, low))
+    if ranges.shape[0] != 2:
         return np.nan
-    while True:
-        middle = 0.5 * (low + high)
-        if middle in (low, high):
-            return high
-        low, high = (middle, high) if count(middle) >= 2 else (low, middle)
-
-
-def blob_merger(positions, masses, delta, path_times, start):
-    """First of ``path_times`` >= ``start`` at which the centres of mass of the blob particles in the levels of the two
-    exact aggregates at ``start`` are within ``delta`` (NaN if never, or if there are not two aggregates then). The
-    particles keep their order (the ODE's field is Lipschitz), so their levels are those of the data."""
-    groups = level_groups(HullSolution(DATA, start), masses)
-    if len(groups) != 2:
-        return np.nan
-    centres = [positions[:, group] @ masses[group] / masses[group].sum() for group in groups]
-    close = np.flatnonzero((path_times >= start) & (np.abs(centres[1] - centres[0]) <= delta))
-    return float(path_times[close[0]]) if close.size else np.nan
+    after = times >= low
+    return agg.first_within(times[after], agg.gap_path(positions[after], masses, ranges), length)
 
 
 def run(p, output):
@@ -111,10 +77,8 @@ def run(p, output):
     velocities0 = m.weighted_velocities(masses0)
     cluster_rows = []
     for t in path_times:
-        x = spd_positions(x0, velocities0, float(t), masses=masses0)
-        values, index = np.unique(x, return_inverse=True)
-        totals = np.bincount(index, weights=masses0)
-        heavy = values[totals >= p["cluster_share"] * masses0.sum()]
+        heavy = agg.heavy_clusters(spd_positions(x0, velocities0, float(t), masses=masses0), masses0,
+                                   p["cluster_share"])
         cluster_rows.append(padded(heavy[:CLUSTER_SLOTS], CLUSTER_SLOTS))
     merger = merger_time(DATA, *p["merger_bracket"])
     progress(f"exact: merger at t = {merger!r}; blow-ups at 1/peak of each bump")
@@ -136,46 +100,55 @@ def run(p, output):
              for k in p["particle_inverse_h"]]
     ltp_runs = {("LTP", k): dict(zip(before, m.ltp_paths(DATA, 1.0 / k, ltp["dt_over_h"] / k, before)))
                 for k in ltp["inverse_h"]}
-    ltp_runs |= {("SP", k): dict(zip(times, m.ltp_paths(DATA, 1.0 / k, ltp["dt_over_h"] / k, times, method="sp",
-                                                        eps=ltp["sp_eps_over_h"] / k)))
-                 for k in ltp["sp_inverse_h"]}
+    # SP through every time of the grid and every step over the merger bracket.
+    sp_times, sp_paths = {}, {}
+    for k in ltp["sp_inverse_h"]:
+        dt = ltp["dt_over_h"] / k
+        low, high = p["merger_bracket"]
+        steps = np.arange(np.ceil(low / dt - 1e-9), np.floor(high / dt + 1e-9) + 1)
+        sp_times[k] = np.union1d(times, np.round(steps * dt, 12))
+        sp_paths[k] = m.ltp_paths(DATA, 1.0 / k, dt, sp_times[k], method="sp", eps=ltp["sp_eps_over_h"] / k)
+        ltp_runs["SP", k] = dict(zip(sp_times[k], sp_paths[k]))
     runs += [(name, k, lambda k, t, name=name: ltp_runs[name, k].get(t)) for name, k in ltp_runs]
-    names, sizes, errors, centres, spreads, mergers, differences = [], [], [], [], [], [], []
+    low = p["merger_bracket"][0]
+    names, sizes, errors, centres, mergers, differences = [], [], [], [], [], []
     for name, size, method in runs:
-        row, centre_row, spread_row, difference = [], [], [], np.nan
+        row, centre_row, difference = [], [], np.nan
         for t, solution in zip(times, solutions):
             out = method(size, float(t))
+            ranges = agg.level_ranges(solution)
             if out is not None and name == "particle method":
                 difference = np.nanmax([difference, np.max(np.abs(out[0] - m.spd_grid(DATA, 1.0 / size, t)[0]))])
             if out is None:  # LTP and the particle method after the first blow-up
                 row.append(np.nan)
-                centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
-            elif name in ("LTP", "SP"):
+                centre_row.append(pad([np.nan] * ranges.shape[0]))
+                continue
+            if name in ("LTP", "SP"):
                 row.append(w1_particles(solution, out))
-                centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
             elif name.startswith("Godunov"):
                 row.append(w1_cells(solution, *out))
-                centre, spread = [np.nan] * solution.aggregates[0].size, [np.nan] * solution.aggregates[0].size
             else:
                 row.append(w1_atoms(solution, *out))
-                centre, spread = aggregate_centres(solution, *out)
-            centre_row.append(pad(centre))
-            spread_row.append(pad(spread))
+            centre_row.append(pad(agg.level_centres(*atoms(name, out, solution.mass), ranges) if ranges.size else []))
         merged = np.nan
         if name.startswith("SPD"):
             if name == "SPD, equal masses":
                 x0, masses = m.spd_equal(DATA, size, 0.0)
             else:
                 x0, _, masses = m.grid_particles(DATA, 1.0 / size)
-            merged = spd_merger(x0, m.weighted_velocities(masses), masses, *p["merger_bracket"], p["cluster_share"])
+            merged = agg.spd_merger(x0, m.weighted_velocities(masses), masses, *p["merger_bracket"],
+                                    p["cluster_share"])
         elif name.startswith("blob"):
-            merged = blob_merger(paths[size][0], paths[size][1], (1.0 / size) ** blob["q"], blob_times,
-                                 p["merger_bracket"][0])
+            merged = path_merger(blob_times, paths[size][0], paths[size][1], low, (1.0 / size) ** blob["q"])
+        elif name == "SP":
+            merged = path_merger(sp_times[size], np.array([out.centres for out in sp_paths[size]]),
+                                 sp_paths[size][0].weights, low, ltp["sp_eps_over_h"] / size)
+        elif name.startswith("Godunov"):
+            merged = agg.godunov_merger(DATA, size, *p["merger_bracket"], cfl=p["cfl"])
         names.append(name)
         sizes.append(size)
         errors.append(row)
         centres.append(centre_row)
-        spreads.append(spread_row)
         mergers.append(merged)
         differences.append(difference)
         progress(f"{name:18} size {size:6d}: largest W1 over t {np.nanmax(row):.4g} (t = 0: {row[0]:.4g}); "
@@ -185,7 +158,7 @@ def run(p, output):
                  path_masses=path_masses, spd_clusters=np.array(cluster_rows),
                  blowups=np.array([1.0 / b.height for b in HullSolution(DATA, 0.0).data.bumps]),
                  methods=np.array(names), size=np.array(sizes), error=np.array(errors), centre=np.array(centres),
-                 spread=np.array(spreads), method_merger=np.array(mergers), spd_difference=np.array(differences))
+                 method_merger=np.array(mergers), spd_difference=np.array(differences))
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821

@@ -56,10 +56,11 @@ def run(p, output):
     t_after = max(p["times"])
     predicted, measured = np.empty(len(data_names)), np.empty(len(data_names))
     stall_start, stall_before, stall_after, stall_reached = (np.empty(len(data_names)) for _ in range(4))
-    peak_position, peak_width, peak_edge = (np.empty(len(data_names)) for _ in range(3))
     # Not refused by t_final: an infinite refusal time (the claim then fails; NaN would not compare).
     b = p["behaviour"]
     refusal = np.full((len(data_names), len(b["ltp_inverse_h"])), np.inf)
+    # The densest LTP particle at each refusal (NaN where LTP was not refused).
+    peak_position, peak_width, peak_edge = (np.full(refusal.shape, np.nan) for _ in range(3))
     for i, data in enumerate(data_names):
         h = 1.0 / b["collision_inverse_h"]
         x, _, masses = methods.grid_particles(data, h)
@@ -81,17 +82,14 @@ def run(p, output):
                 methods.ltp_method(data, h, ltp["dt_over_h"] * h, b["ltp_t_final"])
             except StabilityError as error:
                 refusal[i, j] = error.time
+            if not np.isfinite(refusal[i, j]):
+                continue
+            peak_position[i, j], peak_width[i, j] = densest_particle(data, h, ltp["dt_over_h"] * h, refusal[i, j])
+            peak_edge[i, j] = AggregationSolution(data, refusal[i, j]).left_end
+            progress(f"{data}, 1/h = {k}: at t = {refusal[i, j]:g} the densest LTP particle sits at "
+                     f"{peak_position[i, j]:.6g} (support's ends +-{abs(peak_edge[i, j]):.6g}), width "
+                     f"{peak_width[i, j]:.4g} h (exact flow: {1.0 - refusal[i, j]:.4g} h at the peak of rho0)")
         progress(f"{data}: LTP refused at t = {refusal[i]} (dt = {[ltp['dt_over_h'] / k for k in b['ltp_inverse_h']]})")
-        h = 1.0 / b["ltp_inverse_h"][-1]
-        if not np.isfinite(refusal[i, -1]):
-            peak_position[i] = peak_width[i] = peak_edge[i] = np.nan
-            continue
-        peak_position[i], peak_width[i] = densest_particle(data, h, ltp["dt_over_h"] * h, refusal[i, -1])
-        solution = AggregationSolution(data, refusal[i, -1])
-        peak_edge[i] = solution.left_end
-        progress(f"{data}: at t = {refusal[i, -1]:g} the densest LTP particle sits at {peak_position[i]:.6g} "
-                 f"(support edge {solution.left_end:.6g}), width {peak_width[i]:.4g} h (exact flow: "
-                 f"{1.0 - refusal[i, -1]:.4g} h at the peak of rho0)")
 
     save_results(output[0], data=np.array(data_names),
                  collision_predicted=predicted, collision_measured=measured, stall_collision=stall_start,

@@ -65,7 +65,6 @@ RESULTS = (
             "size",
             "error",
             "centre",
-            "spread",
             "method_merger",
             "spd_difference",
             "path_times",

@@ -1,0 +1,167 @@
+"""A method's aggregates against the exact ones: where they sit and when they merge (data 'two_bumps', :mod:`.hull`).
+
+Every output of :mod:`.methods` is read as point masses on the line: the SPD, particle and blob methods' particles,
+the LTP and SP particles' centres and weights, and the jumps of a finite-volume F at the cell edges
+(:func:`cell_atoms`). An exact aggregate holds the levels [c, c + m] of the cumulative mass
+(``HullSolution.aggregates``: positions, masses, lower levels c); a method's version of it is the mean of its
+quantile X_h(w) over those levels,
+
+    centre = (1/m) int_c^{c+m} X_h(w) dw,
+
+which is the aggregate's position when the method holds it as one point mass, changes continuously with the
+method's masses (part of an atom counts for the part of its levels inside [c, c + m]) and needs no threshold. The
+merger of two aggregates is read the same way for every method: the first time the centres of the two exact
+aggregates' levels (taken before the merger) come within the method's own length, the width over which its
+clusters are smoothed (the blob's delta, SP's eps, a finite-volume cell); any fixed multiple of it gives the same
+order in h. The SPD's clusters are true point masses, so its merger is the time its two heavy clusters become one
+(:func:`spd_merger`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..sticky.spd import spd_positions
+from ..validation import finite_array, finite_values, instance, integer_at_least, nonnegative, positive, same_length
+from .hull import HullSolution
+
+#: A merger time from :func:`godunov_merger` to this absolute tolerance (merger errors are O(h), 1e-4 and more).
+MERGER_XTOL = 1e-10
+
+
+def level_ranges(solution: HullSolution) -> np.ndarray:
+    """The levels [c, c + m] of the exact aggregates of ``solution``: shape (aggregates, 2)."""
+    instance("solution", solution, HullSolution)
+    _, masses, lowers = solution.aggregates
+    return np.column_stack((lowers, lowers + masses)).reshape(-1, 2)
+
+
+def _ranges(ranges) -> np.ndarray:
+    ranges = finite_values("ranges", ranges)
+    if ranges.ndim != 2 or ranges.shape[1] != 2:
+        raise ValueError(f"ranges must be of shape (r, 2), got {ranges.shape}")
+    return ranges
+
+
+def _atoms(positions, masses):
+    x = finite_values("positions", positions)
+    m = finite_array("masses", masses)
+    if x.ndim not in (1, 2) or x.shape[-1] != m.size or m.ndim != 1 or m.size == 0:
+        raise ValueError(f"positions must be of shape (n,) or (times, n) with n = len(masses) > 0, got {x.shape} "
+                         f"and {m.shape}")
+    if np.any(m < 0):
+        raise ValueError("masses must be non-negative")
+    return x, m
+
+
+def level_centres(positions, masses, ranges) -> np.ndarray:
+    """Mean of the quantile of sum_k masses[k] delta_{positions[k]} over each level range [lo, hi] of ``ranges``
+    (shape (r, 2), 0 <= lo < hi): one value per range, or per time and range if ``positions`` holds one row per
+    time (shape (times, n)). A range beyond the atoms' total mass has no quantile there: ValueError."""
+    x, m = _atoms(positions, masses)
+    ranges = _ranges(ranges)
+    if np.any(ranges[:, 0] < 0) or np.any(ranges[:, 1] <= ranges[:, 0]):
+        raise ValueError(f"ranges must hold levels 0 <= lo < hi, got {ranges.tolist()}")
+    rows = np.atleast_2d(x)
+    order = np.argsort(rows, axis=1, kind="stable")
+    levels = np.concatenate((np.zeros((rows.shape[0], 1)), np.cumsum(m[order], axis=1)), axis=1)
+    if np.any(ranges[:, 1] > levels[:, -1:].min() * (1.0 + 1e-12)):
+        raise ValueError(f"ranges reach above the total mass {levels[0, -1]!r}: {ranges.tolist()}")
+    sorted_x = np.take_along_axis(rows, order, axis=1)
+    out = np.empty((rows.shape[0], ranges.shape[0]))
+    for j, (lo, hi) in enumerate(ranges):
+        overlap = np.clip(np.minimum(levels[:, 1:], hi) - np.maximum(levels[:, :-1], lo), 0.0, None)
+        out[:, j] = np.sum(overlap * sorted_x, axis=1) / (hi - lo)
+    return out if x.ndim == 2 else out[0]
+
+
+def cell_atoms(edges, values, mass: float):
+    """(positions, masses) of the point masses whose cumulative mass is the finite-volume F: values[i] on
+    [edges[i], edges[i+1]), 0 left of the grid and ``mass`` right of it, so a jump at every edge."""
+    edges = finite_array("edges", edges)
+    values = finite_array("values", values)
+    mass = positive("mass", mass)
+    if edges.size != values.size + 1 or values.size == 0:
+        raise ValueError(f"edges must hold one more value than values (at least one), got {edges.size} and "
+                         f"{values.size}")
+    jumps = np.diff(np.concatenate(([0.0], values, [mass])))
+    if np.any(jumps < -1e-12 * mass):
+        raise ValueError("values must be non-decreasing from 0 to mass (a cumulative mass)")
+    return edges, np.maximum(jumps, 0.0)
+
+
+def first_within(times, gaps, threshold: float) -> float:
+    """First time at which ``gaps`` (sampled at the increasing ``times``) falls to ``threshold``, linearly
+    interpolated between the two samples around it (NaN if it never does, or already did at the first sample)."""
+    t = finite_array("times", times)
+    g = finite_array("gaps", gaps)
+    same_length(times=t, gaps=g)
+    threshold = positive("threshold", threshold)
+    if t.size < 2 or np.any(np.diff(t) <= 0):
+        raise ValueError("times must be increasing, at least two")
+    below = np.flatnonzero(g <= threshold)
+    if below.size == 0 or below[0] == 0:
+        return np.nan
+    i = below[0]
+    return float(t[i - 1] + (t[i] - t[i - 1]) * (g[i - 1] - threshold) / (g[i - 1] - g[i]))
+
+
+def gap_path(positions, masses, ranges) -> np.ndarray:
+    """Distance between the centres (:func:`level_centres`) of the two level ranges at each row of ``positions``."""
+    ranges = _ranges(ranges)
+    if ranges.shape[0] != 2:
+        raise ValueError(f"a merger needs two level ranges, got {ranges.shape[0]}")
+    centres = level_centres(np.atleast_2d(positions), masses, ranges)
+    return np.abs(centres[:, 1] - centres[:, 0])
+
+
+def heavy_clusters(positions, masses, share: float) -> np.ndarray:
+    """Positions, increasing, of the clusters (particles at one position) holding at least ``share`` of the mass."""
+    x, m = _atoms(positions, masses)
+    if x.ndim != 1:
+        raise ValueError(f"positions must be one-dimensional, got shape {x.shape}")
+    share = positive("share", share)
+    values, index = np.unique(x, return_inverse=True)
+    totals = np.bincount(index.ravel(), weights=m)
+    return values[totals >= share * m.sum()]
+
+
+def spd_merger(x0, velocities, masses, low: float, high: float, share: float) -> float:
+    """Time at which the SPD's heavy clusters (:func:`heavy_clusters`) drop from two to one, by bisection to
+    rounding (NaN if [low, high] holds no such drop)."""
+    low, high = nonnegative("low", low), nonnegative("high", high)
+    if not low < high:
+        raise ValueError(f"need low < high, got {low} and {high}")
+    count = lambda t: heavy_clusters(spd_positions(x0, velocities, t, masses=masses), masses, share).size  # noqa: E731
+    if not (count(low) >= 2 and count(high) == 1):
+        return np.nan
+    while True:
+        middle = 0.5 * (low + high)
+        if middle in (low, high):
+            return high
+        low, high = (middle, high) if count(middle) >= 2 else (low, middle)
+
+
+def godunov_merger(data, cells: int, low: float, high: float, *, cfl: float = 0.9) -> float:
+    """Time in [low, high] at which the centres of the two exact aggregates' levels at ``low`` come within one
+    cell in Godunov's scheme for F (:func:`.methods.godunov_mass`), by Brent's method to MERGER_XTOL (NaN if the
+    gap does not cross one cell in [low, high])."""
+    from .methods import godunov_mass
+
+    cells = integer_at_least("cells", cells, 1)
+    low, high = nonnegative("low", low), nonnegative("high", high)
+    if not low < high:
+        raise ValueError(f"need low < high, got {low} and {high}")
+    solution = HullSolution(data, low)
+    ranges = level_ranges(solution)
+    if ranges.shape[0] != 2:
+        return np.nan
+
+    def excess(t):
+        edges, values = godunov_mass(data, cells, t, cfl=cfl)
+        return float(gap_path(*cell_atoms(edges, values, solution.mass), ranges)[0]) - (edges[1] - edges[0])
+
+    if not (excess(low) > 0 > excess(high)):
+        return np.nan
+    return float(brentq(excess, low, high, xtol=MERGER_XTOL))

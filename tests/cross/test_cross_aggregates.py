@@ -1,0 +1,85 @@
+"""A method's aggregates against the exact ones (particle_methods.cross.aggregates): the centre of a level range
+as the mean of the quantile, the atoms of a finite-volume F, the first crossing of a gap, and the mergers of the
+SPD and of Godunov's scheme on two_bumps against the exact merger."""
+
+import numpy as np
+import pytest
+
+from particle_methods.cross import HullSolution, merger_time, methods
+from particle_methods.cross import aggregates as agg
+
+MERGER = merger_time("two_bumps", 1.5, 2.5)
+
+
+def test_the_centre_of_a_level_range_counts_part_of_an_atom():
+    # Atoms 1 at x = 0 and 1 at x = 1: the levels [0.5, 1.5] hold half of each.
+    assert agg.level_centres([1.0, 0.0], [1.0, 1.0], [[0.5, 1.5]])[0] == pytest.approx(0.5)
+    assert agg.level_centres([1.0, 0.0], [1.0, 1.0], [[0.0, 1.0], [1.0, 2.0]]).tolist() == [0.0, 1.0]
+
+
+def test_centres_of_rows_of_positions_are_per_row():
+    rows = np.array([[0.0, 1.0], [0.0, 3.0]])
+    np.testing.assert_allclose(agg.level_centres(rows, [1.0, 1.0], [[0.5, 2.0]]), [[2 / 3], [2.0]])
+
+
+def test_the_exact_solution_as_atoms_has_its_aggregates_at_their_positions():
+    """The SPD of many particles at t = 1.5: its centres of the exact aggregates' levels are within O(1/n)."""
+    solution = HullSolution("two_bumps", 1.5)
+    x, masses = methods.spd_equal("two_bumps", 4000, 1.5)
+    centres = agg.level_centres(x, masses, agg.level_ranges(solution))
+    np.testing.assert_allclose(centres, solution.aggregates[0], atol=1e-4)
+
+
+def test_cell_atoms_put_the_jumps_of_f_at_the_edges():
+    positions, masses = agg.cell_atoms([0.0, 1.0, 2.0], [0.25, 0.75], 1.0)
+    assert positions.tolist() == [0.0, 1.0, 2.0] and masses.tolist() == [0.25, 0.5, 0.25]
+
+
+def test_first_within_interpolates_between_samples():
+    assert agg.first_within([0.0, 1.0, 2.0], [3.0, 2.0, 0.0], 1.0) == pytest.approx(1.5)
+    assert np.isnan(agg.first_within([0.0, 1.0], [3.0, 2.0], 1.0))   # never
+    assert np.isnan(agg.first_within([0.0, 1.0], [0.5, 0.2], 1.0))   # already at the start
+
+
+def test_heavy_clusters_leave_out_light_ones():
+    np.testing.assert_array_equal(agg.heavy_clusters([0.0, 0.0, 1.0, 2.0], [0.3, 0.3, 0.3, 0.1], 0.25), [0.0, 1.0])
+
+
+def test_spd_merger_of_many_particles_is_near_the_exact_one():
+    x0, masses = methods.spd_equal("two_bumps", 4000, 0.0)
+    merged = agg.spd_merger(x0, methods.weighted_velocities(masses), masses, 1.5, 2.5, 0.1)
+    assert merged == pytest.approx(MERGER, abs=1e-3)
+
+
+def test_godunov_merges_near_the_exact_time_and_closer_on_finer_cells():
+    coarse, fine = (abs(agg.godunov_merger("two_bumps", cells, 1.5, 2.5) - MERGER) for cells in (64, 256))
+    assert fine < coarse / 2 and fine < 0.05
+
+
+def test_a_bracket_without_a_merger_gives_nan():
+    assert np.isnan(agg.godunov_merger("two_bumps", 64, 1.5, 1.6))
+    x0, masses = methods.spd_equal("two_bumps", 1000, 0.0)
+    assert np.isnan(agg.spd_merger(x0, methods.weighted_velocities(masses), masses, 2.1, 2.5, 0.1))
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda: agg.level_centres([0.0], [1.0], [[0.5, 2.0]]), "total mass"),
+    (lambda: agg.level_centres([0.0], [1.0], [[0.5, 0.2]]), "lo < hi"),
+    (lambda: agg.level_centres([0.0], [1.0], [0.5, 0.7]), "shape"),
+    (lambda: agg.level_centres([0.0, 1.0], [1.0], [[0.0, 1.0]]), "len"),
+    (lambda: agg.level_centres([0.0], [-1.0], [[0.0, 1.0]]), "non-negative"),
+    (lambda: agg.cell_atoms([0.0, 1.0], [0.5, 0.7], 1.0), "one more"),
+    (lambda: agg.cell_atoms([0.0, 1.0, 2.0], [0.7, 0.5], 1.0), "non-decreasing"),
+    (lambda: agg.first_within([1.0, 0.0], [2.0, 0.0], 1.0), "increasing"),
+    (lambda: agg.first_within([0.0, 1.0], [2.0, 0.0], 0.0), "threshold"),
+    (lambda: agg.gap_path([0.0, 1.0], [1.0, 1.0], [[0.0, 1.0]]), "two level ranges"),
+    (lambda: agg.godunov_merger("two_bumps", 64, 2.0, 1.5), "low < high"),
+])
+def test_bad_inputs_are_refused(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()
+
+
+def test_a_wrong_solution_type_is_refused():
+    with pytest.raises(TypeError, match="solution"):
+        agg.level_ranges("two_bumps")
