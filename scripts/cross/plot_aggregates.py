@@ -1,6 +1,7 @@
-"""two_bumps, whose aggregates move and merge: (a) the exact aggregates' paths (line width growing with the mass)
-and the smallest equal-mass SPD's heavy clusters; (b) W1 against t at each method's largest size (LTP and the
-particle method only before the first blow-up); (c) the largest W1 over t against the size."""
+"""two_bumps, whose aggregates move and merge: (a) the exact aggregates' paths (line width growing with the mass),
+the smallest equal-mass SPD's heavy clusters and the blob's, SP's and Godunov's centres of the aggregates' levels;
+(b) W1 against t at each method's largest size (LTP and the particle method only before the first blow-up); (c) the
+largest W1 over t against the size."""
 
 import numpy as np
 
@@ -25,6 +26,15 @@ def run(d, p, output):
     ax.plot(np.repeat(times, d["spd_clusters"].shape[1]), d["spd_clusters"].ravel(), "o", color="C0", ms=2.5,
             mfc="none", label=f"SPD clusters, n = {p['spd_n'][0]}")
     ax.plot([], [], color="k", lw=2, label="exact aggregates")
+    # Each method's centres of the exact aggregates' levels at its largest size, on the time grid.
+    methods, sizes = d["methods"], d["size"]
+    for name in ("SP", "Godunov for F", next(str(n) for n in methods if str(n).startswith("blob"))):
+        rows = np.flatnonzero(methods == name)
+        largest = rows[np.argmax(sizes[rows])]
+        colour, marker = STYLES.get(name, BLOB)
+        for slot in range(d["centre"].shape[2]):
+            ax.plot(d["times"], d["centre"][largest][:, slot], marker, color=colour, ms=4, mfc="none", ls="none",
+                    label=f"{name} ({sizes[largest]}), centres" if slot == 0 else None)
     for t in d["blowups"]:
         ax.axvline(t, color="0.6", lw=0.6, ls=":")
     ax.axvline(float(d["merger"]), color="C3", lw=0.6, ls="--", label=f"exact merger, t = {float(d['merger']):.4f}")
@@ -34,7 +44,7 @@ def run(d, p, output):
            ylim=(low - 1.3 * (high - low), high + 0.05 * (high - low)))
     ax.legend(loc="lower right", fontsize="x-small")
     label_panel(ax, "(a) aggregates")
-    methods, sizes, errors = d["methods"], d["size"], d["error"]
+    errors = d["error"]
     floor = max(float(np.nanmin(errors[errors > 0])) / 3.0, 1e-16)
     for name in dict.fromkeys(map(str, methods)):
         rows = np.flatnonzero(methods == name)
