@@ -14,8 +14,13 @@ BLOB = ("C4", "v")
 
 
 def run(d, p, output):
-    fig, axes = new_figure(1, 3, width=11, height=3.6)
-    ax = axes[0]
+    fig, grid = new_figure(2, 2, width=11, height=7.0)
+    # (a) across the top, the space-time plot; (b) and (c) below it.
+    spec = grid[0, 0].get_gridspec()
+    for unused in grid[0]:
+        unused.remove()
+    ax = fig.add_subplot(spec[0, :])
+    axes = [ax, *grid[1]]
     times, positions, masses = d["path_times"], d["path_positions"], d["path_masses"]
     total = float(np.nanmax(masses))
     for slot in range(positions.shape[1]):
@@ -26,23 +31,24 @@ def run(d, p, output):
     ax.plot(np.repeat(times, d["spd_clusters"].shape[1]), d["spd_clusters"].ravel(), "o", color="C0", ms=2.5,
             mfc="none", label=f"SPD clusters, n = {p['spd_n'][0]}")
     ax.plot([], [], color="k", lw=2, label="exact aggregates")
-    # Each method's centres of the exact aggregates' levels at its largest size, on the time grid.
+    # Each method's centres of the exact aggregates' levels at its largest size, on the time grid: hollow markers of
+    # decreasing sizes, so that each stays visible where they coincide.
     methods, sizes = d["methods"], d["size"]
-    for name in ("SP", "Godunov for F", next(str(n) for n in methods if str(n).startswith("blob"))):
+    blob = next(str(n) for n in methods if str(n).startswith("blob"))
+    for name, size in (("Godunov for F", 9), ("SP", 6.5), (blob, 4)):
         rows = np.flatnonzero(methods == name)
         largest = rows[np.argmax(sizes[rows])]
         colour, marker = STYLES.get(name, BLOB)
         for slot in range(d["centre"].shape[2]):
-            ax.plot(d["times"], d["centre"][largest][:, slot], marker, color=colour, ms=4, mfc="none", ls="none",
-                    label=f"{name} ({sizes[largest]}), centres" if slot == 0 else None)
+            ax.plot(d["times"], d["centre"][largest][:, slot], marker, color=colour, ms=size, mfc="none", ls="none",
+                    zorder=3, label=f"{name} ({sizes[largest]}), centres" if slot == 0 else None)
     for t in d["blowups"]:
         ax.axvline(t, color="0.6", lw=0.6, ls=":")
     ax.axvline(float(d["merger"]), color="C3", lw=0.6, ls="--", label=f"exact merger, t = {float(d['merger']):.4f}")
     low, high = float(np.nanmin(positions)), float(np.nanmax(positions))
-    # Room below the paths for the legend.
-    ax.set(xlabel="t", ylabel="position x", xlim=(0, times[-1]),
-           ylim=(low - 1.3 * (high - low), high + 0.05 * (high - low)))
-    ax.legend(loc="lower right", fontsize="x-small")
+    ax.set(xlabel="t", ylabel="position x", xlim=(0, 1.02 * times[-1]),
+           ylim=(low - 0.1 * (high - low), high + 0.1 * (high - low)))
+    ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="small")
     label_panel(ax, "(a) aggregates")
     errors = d["error"]
     floor = max(float(np.nanmin(errors[errors > 0])) / 3.0, 1e-16)
