@@ -8,9 +8,9 @@ against the exact solution by the continuous hull.
   uniformly in time), and, at every time, the centre of each exact aggregate's levels in the method's output
   (particle_methods.cross.aggregates: the mean of its quantile over those levels);
 - the merger time: the SPD's when its two heavy clusters become one; the blob's, SP's and Godunov's when the centres
-  of the two exact aggregates' levels come within delta, eps or one cell (the blob and SP on every sample of their
-  runs over the merger bracket, interpolated; Godunov by Brent's method); NaN for LTP and the particle method, which
-  stop at the first blow-up;
+  of the two exact aggregates' levels come within delta, eps or one cell (on every sample of their runs over the
+  merger bracket, interpolated: the blob's fine grid, SP's and Godunov's steps); NaN for LTP and the particle
+  method, which stop at the first blow-up;
 - the particle method: its largest distance to the grid SPD of the same particles (NaN for the other methods).
 """
 
@@ -52,12 +52,19 @@ def atoms(name, out, mass):
 
 def path_merger(times, positions, masses, low, length):
     """Merger from a run sampled at ``times``: the first time from ``low`` on at which the centres of the two exact
-    aggregates' levels at ``low`` come within ``length`` (NaN if there are not two aggregates then)."""
-    ranges = agg.level_ranges(HullSolution(DATA, low))
-    if ranges.shape[0] != 2:
-        return np.nan
+    aggregates' levels at ``low`` come within ``length``."""
     after = times >= low
+    ranges = agg.level_ranges(HullSolution(DATA, low))
     return agg.first_within(times[after], agg.gap_path(positions[after], masses, ranges), length)
+
+
+def merger_or_nan(measure, *args, **kwargs):
+    """A method's merger time, NaN (logged) where it does not merge within the bracket: its claim then fails."""
+    try:
+        return measure(*args, **kwargs)
+    except ValueError as error:
+        progress(f"no merger: {error}")
+        return np.nan
 
 
 def run(p, output):
@@ -90,8 +97,10 @@ def run(p, output):
     paths = {k: m.blob_paths(DATA, 1.0 / k, blob_times, order=blob["order"], q=blob["q"]) for k in blob["inverse_h"]}
     runs += [(f"blob, m = {blob['order']}", k,
               lambda k, t: (paths[k][0][int(np.searchsorted(blob_times, t))], paths[k][1])) for k in blob["inverse_h"]]
-    runs += [("Godunov for F", cells, lambda n, t: m.godunov_mass(DATA, n, t, cfl=p["cfl"]))
-             for cells in p["godunov_cells"]]
+    # Godunov: one run per size through every time of the grid.
+    godunov = {cells: dict(zip(times, m.godunov_paths(DATA, cells, times, cfl=p["cfl"])))
+               for cells in p["godunov_cells"]}
+    runs += [("Godunov for F", cells, lambda n, t: godunov[n][t]) for cells in p["godunov_cells"]]
     # LTP (refused as the left bump blows up: only the times before it) and SP (eps = h), one run per size.
     ltp = p["ltp"]
     before = times[times < min(1.0 / b.height for b in solutions[0].data.bumps)]
@@ -136,15 +145,16 @@ def run(p, output):
                 x0, masses = m.spd_equal(DATA, size, 0.0)
             else:
                 x0, _, masses = m.grid_particles(DATA, 1.0 / size)
-            merged = agg.spd_merger(x0, m.weighted_velocities(masses), masses, *p["merger_bracket"],
-                                    p["cluster_share"])
+            merged = merger_or_nan(agg.spd_merger, x0, m.weighted_velocities(masses), masses, *p["merger_bracket"],
+                                   p["cluster_share"])
         elif name.startswith("blob"):
-            merged = path_merger(blob_times, paths[size][0], paths[size][1], low, (1.0 / size) ** blob["q"])
+            merged = merger_or_nan(path_merger, blob_times, paths[size][0], paths[size][1], low,
+                                   (1.0 / size) ** blob["q"])
         elif name == "SP":
-            merged = path_merger(sp_times[size], np.array([out.centres for out in sp_paths[size]]),
-                                 sp_paths[size][0].weights, low, ltp["sp_eps_over_h"] / size)
+            merged = merger_or_nan(path_merger, sp_times[size], np.array([out.centres for out in sp_paths[size]]),
+                                   sp_paths[size][0].weights, low, ltp["sp_eps_over_h"] / size)
         elif name.startswith("Godunov"):
-            merged = agg.godunov_merger(DATA, size, *p["merger_bracket"], cfl=p["cfl"])
+            merged = merger_or_nan(agg.godunov_merger, DATA, size, *p["merger_bracket"], cfl=p["cfl"])
         names.append(name)
         sizes.append(size)
         errors.append(row)

@@ -13,8 +13,8 @@ METHODS = {  # key in the results, label, colour, marker
     "spd": ("SPD", "C0", "o"),
     "godunov": ("Godunov", "C3", "D"),
     "tspd": ("iterated TSPD, L = n", "C1", "s"),
-    "exact": ("exact MSPD", "C0", "o"),
-    "upwind": ("upwind for (1.7)", "C3", "D"),
+    "exact": ("exact MSPD", "C4", "^"),
+    "upwind": ("upwind for (1.7)", "C2", "v"),
 }
 
 
@@ -30,7 +30,7 @@ def limits(d, p, output):
     for j, case in enumerate(map(str, d["cases"])):
         ax = axes[0, j]
         for gamma, name, style in ((MINUS, "w-", "-"), (PLUS, "w+", "--")):
-            ax.plot(centres, empirical_cdf(d[f"{case}_mspd"][gamma], centres), style, color="C0", lw=1.6,
+            ax.plot(centres, empirical_cdf(d[f"{case}_mspd"][gamma], centres), style, color="C4", lw=1.6,
                     label=f"{name} exact MSPD")
             ax.plot(centres, d[f"{case}_hll_w"][gamma], style, color="C3", lw=1.0, label=f"{name} HLL (conservative)")
             ax.plot(centres_up, d[f"{case}_upwind_w"][gamma], style, color="C2", lw=0.8,

@@ -37,8 +37,6 @@ def test_cell_atoms_put_the_jumps_of_f_at_the_edges():
 
 def test_first_within_interpolates_between_samples():
     assert agg.first_within([0.0, 1.0, 2.0], [3.0, 2.0, 0.0], 1.0) == pytest.approx(1.5)
-    assert np.isnan(agg.first_within([0.0, 1.0], [3.0, 2.0], 1.0))   # never
-    assert np.isnan(agg.first_within([0.0, 1.0], [0.5, 0.2], 1.0))   # already at the start
 
 
 def test_heavy_clusters_leave_out_light_ones():
@@ -56,10 +54,22 @@ def test_godunov_merges_near_the_exact_time_and_closer_on_finer_cells():
     assert fine < coarse / 2 and fine < 0.05
 
 
-def test_a_bracket_without_a_merger_gives_nan():
-    assert np.isnan(agg.godunov_merger("two_bumps", 64, 1.5, 1.6))
+def test_a_bracket_without_a_merger_is_refused():
+    with pytest.raises(ValueError, match="high"):
+        agg.godunov_merger("two_bumps", 64, 1.5, 1.6)
+    with pytest.raises(ValueError, match="two aggregates"):
+        agg.godunov_merger("two_bumps", 64, 0.7, 2.5)  # one aggregate at t = 0.7
     x0, masses = methods.spd_equal("two_bumps", 1000, 0.0)
-    assert np.isnan(agg.spd_merger(x0, methods.weighted_velocities(masses), masses, 2.1, 2.5, 0.1))
+    with pytest.raises(ValueError, match="bracket"):
+        agg.spd_merger(x0, methods.weighted_velocities(masses), masses, 2.1, 2.5, 0.1)
+
+
+def test_godunov_paths_run_once_through_the_times():
+    """One run through several times lands where separate runs do, up to the shortened steps at each time."""
+    together = methods.godunov_paths("smooth20", 128, [0.25, 0.5])
+    alone = methods.godunov_mass("smooth20", 128, 0.5)
+    np.testing.assert_allclose(together[-1][1], alone[1], atol=2e-3)
+    np.testing.assert_array_equal(methods.godunov_paths("smooth20", 128, [0.5])[0][1], alone[1])
 
 
 @pytest.mark.parametrize("call, match", [
@@ -72,6 +82,11 @@ def test_a_bracket_without_a_merger_gives_nan():
     (lambda: agg.cell_atoms([0.0, 1.0, 2.0], [0.7, 0.5], 1.0), "non-decreasing"),
     (lambda: agg.first_within([1.0, 0.0], [2.0, 0.0], 1.0), "increasing"),
     (lambda: agg.first_within([0.0, 1.0], [2.0, 0.0], 0.0), "threshold"),
+    (lambda: agg.first_within([0.0, 1.0], [3.0, 2.0], 1.0), "fall"),   # never
+    (lambda: agg.first_within([0.0, 1.0], [0.5, 0.2], 1.0), "fall"),   # already at the start
+    (lambda: methods.godunov_paths("smooth20", 16, [0.5, 0.25]), "times"),
+    (lambda: methods.godunov_advance(np.linspace(-1, 1, 3), [0.2, 0.5], 0.0, 0.1), "mass"),
+    (lambda: methods.godunov_time_step([0.0], 1.0), "edges"),
     (lambda: agg.gap_path([0.0, 1.0], [1.0, 1.0], [[0.0, 1.0]]), "two level ranges"),
     (lambda: agg.godunov_merger("two_bumps", 64, 2.0, 1.5), "low < high"),
 ])

@@ -13,7 +13,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from particle_methods.blob.initial import DATA_1D, Data1D
-from particle_methods.cross import distances
+from particle_methods.cross import aggregates, distances
 from particle_methods.cross.exact import AggregationSolution, exact_mass_function
 from particle_methods.cross.profiles import profile
 from particle_methods.norms import l1_to_step_function
@@ -138,6 +138,22 @@ def test_w1_cells(solution, edges, drawn):
     values = drawn.draw(st.one_of(step_values(solution, cells), bad_array))
     distance = safe_call(naming(distances.w1_cells, "solution", "edges", "values"), solution, edges, values)
     assert distance is None or distance >= -1e-12
+
+
+@FUZZ
+@given(positions=array([-0.5, 0.0, 0.5]), masses=array([0.2, 0.3, 0.5]),
+       ranges=st.one_of(st.just(np.array([[0.1, 0.4], [0.5, 0.9]])), bad_array, finite_lists.map(np.array)),
+       threshold=scalar(0.1), share=scalar(0.25))
+def test_aggregate_readings(positions, masses, ranges, threshold, share):
+    """The readings of :mod:`particle_methods.cross.aggregates` on drawn atoms, level ranges and gaps."""
+    centres = safe_call(naming(aggregates.level_centres, "positions", "masses", "ranges"), positions, masses, ranges)
+    if centres is not None:  # each centre lies within the atoms' span, up to rounding
+        slack = 1e-12 * np.max(np.abs(positions))
+        assert np.all(centres >= np.min(positions) - slack) and np.all(centres <= np.max(positions) + slack)
+    safe_call(naming(aggregates.gap_path, "positions", "masses", "ranges"), positions, masses, ranges)
+    safe_call(naming(aggregates.heavy_clusters, "positions", "masses", "share"), positions, masses, share)
+    safe_call(naming(aggregates.cell_atoms, "edges", "values", "mass"), positions, masses, threshold)
+    safe_call(naming(aggregates.first_within, "times", "gaps", "threshold"), positions, masses, threshold)
 
 
 # The cases the fuzzing found (each crashed, returned a wrong value or named no parameter before its fix)

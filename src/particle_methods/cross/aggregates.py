@@ -20,14 +20,20 @@ order in h. The SPD's clusters are true point masses, so its merger is the time 
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..sticky.spd import spd_positions
-from ..validation import finite_array, finite_values, instance, integer_at_least, nonnegative, positive, same_length
+from ..validation import (
+    finite_array,
+    finite_result,
+    finite_values,
+    instance,
+    integer_at_least,
+    nonnegative,
+    positive,
+    same_length,
+)
+from . import methods
 from .hull import HullSolution
-
-#: A merger time from :func:`godunov_merger` to this absolute tolerance (merger errors are O(h), 1e-4 and more).
-MERGER_XTOL = 1e-10
 
 
 def level_ranges(solution: HullSolution) -> np.ndarray:
@@ -70,9 +76,11 @@ def level_centres(positions, masses, ranges) -> np.ndarray:
         raise ValueError(f"ranges reach above the total mass {levels[0, -1]!r}: {ranges.tolist()}")
     sorted_x = np.take_along_axis(rows, order, axis=1)
     out = np.empty((rows.shape[0], ranges.shape[0]))
-    for j, (lo, hi) in enumerate(ranges):
-        overlap = np.clip(np.minimum(levels[:, 1:], hi) - np.maximum(levels[:, :-1], lo), 0.0, None)
-        out[:, j] = np.sum(overlap * sorted_x, axis=1) / (hi - lo)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow fails the check just below
+        for j, (lo, hi) in enumerate(ranges):
+            overlap = np.clip(np.minimum(levels[:, 1:], hi) - np.maximum(levels[:, :-1], lo), 0.0, None)
+            out[:, j] = np.sum(overlap * sorted_x, axis=1) / (hi - lo)
+    finite_result("the centres", out, "positions or masses too large: the quantile's integral overflows")
     return out if x.ndim == 2 else out[0]
 
 
@@ -93,7 +101,8 @@ def cell_atoms(edges, values, mass: float):
 
 def first_within(times, gaps, threshold: float) -> float:
     """First time at which ``gaps`` (sampled at the increasing ``times``) falls to ``threshold``, linearly
-    interpolated between the two samples around it (NaN if it never does, or already did at the first sample)."""
+    interpolated between the two samples around it. ValueError if it never does, or already did at the first
+    sample (no crossing to locate)."""
     t = finite_array("times", times)
     g = finite_array("gaps", gaps)
     same_length(times=t, gaps=g)
@@ -102,9 +111,13 @@ def first_within(times, gaps, threshold: float) -> float:
         raise ValueError("times must be increasing, at least two")
     below = np.flatnonzero(g <= threshold)
     if below.size == 0 or below[0] == 0:
-        return np.nan
+        raise ValueError(f"gaps must fall to the threshold {threshold!r} after the first sample, got {g[[0, -1]]} "
+                         "at the first and last")
     i = below[0]
-    return float(t[i - 1] + (t[i] - t[i - 1]) * (g[i - 1] - threshold) / (g[i - 1] - g[i]))
+    with np.errstate(over="ignore", invalid="ignore"):  # a non-finite share fails the check just below
+        share = (g[i - 1] - threshold) / (g[i - 1] - g[i])  # in [0, 1): the gap falls by more than its excess
+        crossing = (1.0 - share) * t[i - 1] + share * t[i]
+    return finite_result("the crossing time", float(crossing), "gaps too large: their differences overflow")
 
 
 def gap_path(positions, masses, ranges) -> np.ndarray:
@@ -112,7 +125,8 @@ def gap_path(positions, masses, ranges) -> np.ndarray:
     ranges = _ranges(ranges)
     if ranges.shape[0] != 2:
         raise ValueError(f"a merger needs two level ranges, got {ranges.shape[0]}")
-    centres = level_centres(np.atleast_2d(positions), masses, ranges)
+    x, m = _atoms(positions, masses)
+    centres = level_centres(np.atleast_2d(x), m, ranges)
     return np.abs(centres[:, 1] - centres[:, 0])
 
 
@@ -129,13 +143,13 @@ def heavy_clusters(positions, masses, share: float) -> np.ndarray:
 
 def spd_merger(x0, velocities, masses, low: float, high: float, share: float) -> float:
     """Time at which the SPD's heavy clusters (:func:`heavy_clusters`) drop from two to one, by bisection to
-    rounding (NaN if [low, high] holds no such drop)."""
+    rounding; ValueError if [low, high] holds no such drop."""
     low, high = nonnegative("low", low), nonnegative("high", high)
     if not low < high:
         raise ValueError(f"need low < high, got {low} and {high}")
     count = lambda t: heavy_clusters(spd_positions(x0, velocities, t, masses=masses), masses, share).size  # noqa: E731
     if not (count(low) >= 2 and count(high) == 1):
-        return np.nan
+        raise ValueError(f"low = {low} and high = {high} must bracket a drop from two heavy clusters to one")
     while True:
         middle = 0.5 * (low + high)
         if middle in (low, high):
@@ -143,25 +157,39 @@ def spd_merger(x0, velocities, masses, low: float, high: float, share: float) ->
         low, high = (middle, high) if count(middle) >= 2 else (low, middle)
 
 
-def godunov_merger(data, cells: int, low: float, high: float, *, cfl: float = 0.9) -> float:
+def godunov_merger(data, cells: int, low: float, high: float, *, cfl: float = 0.9, chunk: int = 16) -> float:
     """Time in [low, high] at which the centres of the two exact aggregates' levels at ``low`` come within one
-    cell in Godunov's scheme for F (:func:`.methods.godunov_mass`), by Brent's method to MERGER_XTOL (NaN if the
-    gap does not cross one cell in [low, high])."""
-    from .methods import godunov_mass
-
+    cell in Godunov's scheme for F (:mod:`.methods`), on the scheme's own steps: the gap is read every ``chunk``
+    steps, then at every step of the chunk in which it fell to one cell (from that chunk's saved state), and the
+    crossing interpolated between two steps (:func:`first_within`). ValueError if low and high do not bracket such
+    a time (two exact aggregates at low, more than a cell apart; within a cell by high)."""
     cells = integer_at_least("cells", cells, 1)
+    chunk = integer_at_least("chunk", chunk, 1)
     low, high = nonnegative("low", low), nonnegative("high", high)
     if not low < high:
         raise ValueError(f"need low < high, got {low} and {high}")
     solution = HullSolution(data, low)
     ranges = level_ranges(solution)
     if ranges.shape[0] != 2:
-        return np.nan
-
-    def excess(t):
-        edges, values = godunov_mass(data, cells, t, cfl=cfl)
-        return float(gap_path(*cell_atoms(edges, values, solution.mass), ranges)[0]) - (edges[1] - edges[0])
-
-    if not (excess(low) > 0 > excess(high)):
-        return np.nan
-    return float(brentq(excess, low, high, xtol=MERGER_XTOL))
+        raise ValueError(f"low = {low} must be a time with two aggregates, got {ranges.shape[0]}")
+    edges, values = methods.godunov_mass(data, cells, low, cfl=cfl)
+    mass, width = solution.mass, edges[1] - edges[0]
+    step = methods.godunov_time_step(edges, mass, cfl)
+    gap = lambda f: float(gap_path(*cell_atoms(edges, f, mass), ranges)[0])  # noqa: E731
+    t, last = low, gap(values)
+    if last <= width:
+        raise ValueError(f"at low = {low} the aggregates are already within a cell")
+    while t < high:
+        following = methods.godunov_advance(edges, values, mass, chunk * step, cfl=cfl)
+        if gap(following) <= width:
+            times, gaps, state = [t], [last], values
+            for k in range(1, chunk + 1):
+                state = methods.godunov_advance(edges, state, mass, step, cfl=cfl)
+                times.append(t + k * step)
+                gaps.append(gap(state))
+            crossing = first_within(np.array(times), np.array(gaps), width)
+            if crossing > high:
+                break
+            return crossing
+        t, values, last = t + chunk * step, following, gap(following)
+    raise ValueError(f"the aggregates do not come within a cell by high = {high}")

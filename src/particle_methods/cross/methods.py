@@ -16,7 +16,8 @@ Each function returns the method's own output at time t, the object W1 is measur
 - :func:`ltp_method`: LTP (and SP) of Campos Pinto et al. with W = |x|/2 (:func:`ltp_paths`: at several
   times from one run).
 - :func:`godunov_mass`: Godunov for F; with u = F/M and tau = M t the law is (5.3),
-  u_tau + (u(1 - u)/2)_x = 0, solved by :func:`particle_methods.finite_volume.godunov`.
+  u_tau + (u(1 - u)/2)_x = 0, solved by :func:`particle_methods.finite_volume.godunov` (:func:`godunov_paths`: at
+  several times from one run; :func:`godunov_advance`: from any state).
 
 The grid particles sit at jh on [-1, 1] with masses rho0(jh) h, except the two ends, whose masses
 are halved (the trapezoid rule): the blob paper puts mass h at +-1 for the indicator (4.4), so its
@@ -236,12 +237,41 @@ def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: flo
 def godunov_mass(data, cells: int, t: float, *, cfl: float = 0.9):
     """(edges, F values) of Godunov's scheme for F on ``cells`` cells of [-1, 1] at time t, started
     from the exact cell averages of F0 (ghost states 0 and M)."""
+    return godunov_paths(data, cells, [nonnegative("t", t)], cfl=cfl)[0]
+
+
+def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
+    """(edges, F values) of :func:`godunov_mass` at each of the increasing ``times``, from one run (each stretch
+    ends with a step shortened to land on its time)."""
     _grid_density(data)  # supported in [-1, 1]
     cells = integer_at_least("cells", cells, 1, MAX_CELLS)
-    t = nonnegative("t", t)
+    times = finite_array("times", times)
+    if times.size == 0 or times[0] < 0 or np.any(np.diff(times) < 0):
+        raise ValueError(f"times must be non-negative and non-decreasing, at least one, got {times}")
     edges = np.linspace(-1.0, 1.0, cells + 1)
     initial = solution(data, 0.0)
-    integrals = np.diff(cdf_antiderivative(initial, edges))
-    u0 = integrals / (np.diff(edges) * initial.mass)
-    u = godunov(CONCAVE, u0, edges, initial.mass * t, cfl=cfl, left=0.0, right=1.0)
-    return edges, initial.mass * u
+    values = np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges)  # the exact cell averages of F0
+    out, now = [], 0.0
+    for t in times:
+        values = godunov_advance(edges, values, initial.mass, float(t) - now, cfl=cfl)
+        out.append((edges, values))
+        now = float(t)
+    return out
+
+
+def godunov_advance(edges, values, mass: float, t: float, *, cfl: float = 0.9) -> np.ndarray:
+    """F after a time t of Godunov's scheme from the cell values ``values`` of F on ``edges`` (ghost states 0 and
+    ``mass``): with u = F/M and tau = M t, :func:`particle_methods.finite_volume.godunov` for (5.3)."""
+    mass = positive("mass", mass)
+    values = finite_array("values", values)
+    u = godunov(CONCAVE, values / mass, edges, mass * nonnegative("t", t), cfl=cfl, left=0.0, right=1.0)
+    return mass * u
+
+
+def godunov_time_step(edges, mass: float, cfl: float = 0.9) -> float:
+    """The time step (in t) of :func:`godunov_advance` on ``edges``: cfl dx / (M max|f'|), the flux's largest
+    speed over the states from 0 to 1 (ghost states included) in tau = M t."""
+    edges = finite_array("edges", edges)
+    if edges.size < 2:
+        raise ValueError(f"edges must hold at least two values, got {edges.size}")
+    return float(positive("cfl", cfl) * (edges[1] - edges[0]) / (positive("mass", mass) * CONCAVE.max_speed(0.0, 1.0)))
