@@ -43,15 +43,19 @@ def run(d, p, figure, output):
                 drawn.extend(errors[~exact])
                 ax.plot(x[~exact], errors[~exact], line + marker, color=colour, lw=1, ms=size, label=method,
                         zorder=order)
+                # On the bottom edge (axes coordinates in y): left out of the layout, which would otherwise
+                # measure them before the axis limits are set.
                 ax.plot(x[exact], np.zeros(exact.sum()), marker, color=colour, ms=size + 1, ls="none", mfc="none",
-                        zorder=order, clip_on=False, transform=ax.get_xaxis_transform())
+                        zorder=order, clip_on=False, transform=ax.get_xaxis_transform())[0].set_in_layout(False)
             ax.axhline(p["target_error"], color="k", lw=0.6, ls=":")
             # Axes fitted to the panel's data (no empty decades).
             ax.set(xscale="log", yscale="log", ylim=(min(drawn) / 3, max(drawn) * 3),
                    xlabel="particles or cells" if figure == "error_size" else "wall time (s), after JIT warm-up",
                    ylabel="W1 error")
             label_panel(ax, f"({'abcd'[i * len(times) + j]}) {TITLES.get(name, name)}, t = {t:g}")
-    axes[0, 0].legend(loc="lower left", fontsize="small", ncol=2)
+    # One legend below the panels (inside one, it would hide lines).
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncol=4, fontsize="small")
     suptitle(fig, "K = |x|/2: W1 distance to the exact solution "
                  + ("against size" if figure == "error_size" else "against wall time")
                  + f" (dotted: {p['target_error']:g}; open markers on the bottom edge: exact to rounding, "
