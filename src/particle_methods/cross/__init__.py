@@ -10,6 +10,8 @@ solution, known exactly (:mod:`.exact`). Public entry points:
   ('two_bumps', :mod:`.hull`);
 - :mod:`.methods`: every method's output at time t;
 - :mod:`.distances`: W1 distances computed on each output;
+- :mod:`.aggregates`: a method's aggregates read on its output (the mean of its quantile over an exact
+  aggregate's levels) and its merger time, against the exact ones of :class:`HullSolution`;
 - the claims of the comparison are measured in :mod:`particle_replication.verdicts.cross`.
 """
 
