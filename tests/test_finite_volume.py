@@ -17,6 +17,7 @@ from particle_methods.finite_volume import (
     godunov_flux,
     l1_distance_to_step_cdf,
 )
+from particle_methods.finite_volume.scalar import cfl_time_step
 
 FLUXES = [(BURGERS, (-2.0, 2.0)), (CONCAVE, (-1.0, 2.0))]
 
@@ -287,3 +288,15 @@ def test_the_package_resolves_its_names_lazily():
             "print('particle_methods.finite_volume.psystem' in sys.modules or 'scipy.optimize' in sys.modules)")
     loaded = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert loaded.strip() == "False"
+
+
+def test_cfl_time_step_is_the_step_godunov_takes():
+    """Three of its steps land on 3 dt in three steps; a flux that moves no state in the range has no step."""
+    edges = np.linspace(-1.0, 1.0, 33)
+    u0 = np.clip(np.linspace(-0.2, 1.2, 32), 0.0, 1.0)
+    dt = cfl_time_step(CONCAVE, 0.0, 1.0, edges[1] - edges[0], 0.9)
+    assert godunov(CONCAVE, u0, edges, 3 * dt, cfl=0.9, left=0.0, right=1.0, return_steps=True)[1] == 3
+    with pytest.raises(ValueError, match="no time step"):
+        cfl_time_step(CONCAVE, 0.5, 0.5, 0.1)
+    with pytest.raises(ValueError, match="dx"):
+        cfl_time_step(CONCAVE, 0.0, 1.0, -0.1)

@@ -40,7 +40,7 @@ def level_ranges(solution: HullSolution) -> np.ndarray:
     """The levels [c, c + m] of the exact aggregates of ``solution``: shape (aggregates, 2)."""
     instance("solution", solution, HullSolution)
     _, masses, lowers = solution.aggregates
-    return np.column_stack((lowers, lowers + masses)).reshape(-1, 2)
+    return np.column_stack((lowers, lowers + masses))
 
 
 def _ranges(ranges) -> np.ndarray:

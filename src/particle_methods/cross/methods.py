@@ -36,7 +36,7 @@ from ..blob.pair_sums import pair_sums
 from ..blob.solver import integrate_particles
 from ..finite_volume.fluxes import CONCAVE
 from ..finite_volume.grids import MAX_CELLS
-from ..finite_volume.scalar import godunov
+from ..finite_volume.scalar import cfl_time_step, godunov
 from ..ltp.initial import InitialDensity
 from ..ltp.potentials import potential
 from ..ltp.solver import simulate
@@ -274,4 +274,4 @@ def godunov_time_step(edges, mass: float, cfl: float = 0.9) -> float:
     edges = finite_array("edges", edges)
     if edges.size < 2:
         raise ValueError(f"edges must hold at least two values, got {edges.size}")
-    return float(positive("cfl", cfl) * (edges[1] - edges[0]) / (positive("mass", mass) * CONCAVE.max_speed(0.0, 1.0)))
+    return cfl_time_step(CONCAVE, 0.0, 1.0, edges[1] - edges[0], positive("cfl", cfl)) / positive("mass", mass)

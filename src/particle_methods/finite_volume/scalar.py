@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..jit import njit
-from ..validation import finite_array, finite_number, instance
+from ..validation import finite_array, finite_number, instance, positive
 from .fluxes import COMPILED_FLUXES, ScalarFlux, checked_flux, face_flux_kernel
 from .grids import check_cell_steps, check_cells_match, checked_edges, checked_time_and_cfl, uniform_width
 
@@ -53,6 +53,16 @@ def _evolve(u, dx, dt, t, flux_id, convex, extremum, left, right):
 
 
 
+def cfl_time_step(flux: ScalarFlux, low: float, high: float, dx: float, cfl: float = 0.9) -> float:
+    """The time step of :func:`godunov` on cells of width ``dx`` for states (ghost states included) in
+    [low, high]: cfl dx / max|f'| there. ValueError if the flux moves none of these states."""
+    flux = checked_flux(flux)
+    speed = flux.max_speed(finite_number("low", low), finite_number("high", high))
+    if speed == 0:
+        raise ValueError(f"the flux moves no state in [low, high] = [{low}, {high}]: no time step")
+    return float(np.float64(cfl) * positive("dx", dx) / speed)
+
+
 def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right=None, return_steps: bool = False):
     """Cell averages at time t of the Godunov scheme started from the cell averages ``u0``.
 
@@ -79,7 +89,7 @@ def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right
     if t == 0 or speed == 0:
         # No time to evolve, or every state sits at u*, where nothing moves.
         return (u, 0) if return_steps else u
-    dt = np.float64(cfl) * dx / speed
+    dt = cfl_time_step(flux, states.min(), states.max(), dx, cfl)
     check_cell_steps(t, dt, u.size, MAX_CELL_STEPS)
     taken = _evolve(u, dx, float(dt), t, COMPILED_FLUXES.index(flux), flux.shape == "convex", flux.extremum, left,
                     right)
