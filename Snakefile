@@ -3,7 +3,8 @@
 snakemake --cores 2                                     # full resolution
 snakemake --cores 2 sticky                              # one part: sticky, ltp, blob or cross
 snakemake --cores 2 --configfile config/quick.yaml      # coarse, for tests and CI (in runs/quick)
-snakemake verify                                        # fails when a claim fails
+snakemake verify                                        # fails when a verdict differs from the expected one
+snakemake --cores 2 robustness                          # the claims under variants of threads, kernels, data, load
 
 A configuration file given with --configfile is laid over config/config.yaml (Snakemake merges it
 mapping by mapping; a list replaces the whole list), so it holds only what differs, as
@@ -32,6 +33,7 @@ include: "rules/blob.smk"
 include: "rules/cross.smk"
 include: "rules/registry.smk"
 include: "rules/report.smk"
+include: "rules/robustness.smk"
 
 
 rule all:
@@ -47,6 +49,7 @@ rule all:
         NOTEBOOKS,
         "results/versions.md",
         MANUSCRIPT,
+        "results/verdicts.txt",
 
 
 rule sticky:

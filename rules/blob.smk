@@ -42,6 +42,7 @@ rule blob_fig5_case:
         cfg=FIG5_RUN,
         index=lambda wildcards: int(wildcards.index),
         inverse_h=lambda wildcards: FIG5_GROUPS[wildcards.group],
+        nudge=config["nudge"],
     script:
         "../scripts/blob/fig5_data.py"
 

@@ -52,6 +52,7 @@ for paper in registry.PAPERS.values():
             threads: workflow.cores if entry.job.threads == "all" else entry.job.threads
             params:
                 **entry.job.params(config[paper.id]),
+                nudge=config["nudge"],
                 script=f"{paper.id}/{entry.writer}",
             script:
                 # Formatted when the job runs (a loop variable here would be the loop's last value then).

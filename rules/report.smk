@@ -4,13 +4,23 @@ the software versions and the LaTeX report."""
 import os
 import shutil
 
+from particle_replication.configuration import compared_run
 from particle_replication.environment import commit
 
 PAPERS = list(registry.PAPERS)
 CLAIM_SOURCES = expand("results/{paper}/claims.csv", paper=PAPERS)
 RATE_SOURCES = expand("results/{paper}/rates.json", paper=PAPERS)
 VERDICTS = source(ROOT / config["verdicts"])
+SPREADS = source(ROOT / config["robustness"]["spreads"])
+MARGIN_MIN = config["robustness"]["margin_min"]
 COMMIT = commit()
+# The repository's run whose expected verdicts and spreads apply (None for a configuration of the user's own,
+# with the keys in which it differs from the run its verdicts_run names).
+COMPARED, DIFFERS = compared_run(config)
+# How verify and the verdicts rule are told which verdicts to compare (none for a user's own configuration).
+COMPARISON = (
+    f"--run {COMPARED}" if COMPARED else "--differs " + " ".join(DIFFERS)
+) + f" --margin-min {MARGIN_MIN}"
 
 
 rule claims_table:
@@ -20,6 +30,7 @@ rule claims_table:
         sources=CLAIM_SOURCES,
         rates=RATE_SOURCES,
         expected=VERDICTS,
+        spreads=SPREADS,
         code=[source(REPLICATION / "claims.py"), source(REPLICATION / "rates.py")],
     output:
         csv="results/claims.csv",
@@ -34,10 +45,14 @@ rule claims_table:
     threads: 1
     params:
         run=config["verdicts_run"],
+        # The spreads were measured on the repository's own runs: none apply to another configuration.
+        spreads=f"--spreads {SPREADS}" if COMPARED else "",
+        margin=MARGIN_MIN,
     shell:
         "python -m particle_replication.claims merge {input.sources} --rates {input.rates} "
         "--csv {output.csv} --markdown {output.markdown} --rates-output {output.rates} "
-        "--expected {input.expected} --run {params.run} > {log} 2>&1"
+        "--expected {input.expected} --run {params.run} {params.spreads} --margin-min {params.margin} "
+        "> {log} 2>&1"
 
 
 rule verify:
@@ -53,10 +68,10 @@ rule verify:
         ENVIRONMENT
     threads: 1
     params:
-        run=config["verdicts_run"],
+        comparison=COMPARISON,
     shell:
         "python -m particle_replication.claims verify {input.claims} --expected {input.expected} "
-        "--run {params.run} 2>&1 "
+        "{params.comparison} 2>&1 "
         "| tee {log}; exit ${{PIPESTATUS[0]}}"
 
 
@@ -189,3 +204,36 @@ rule manuscript:
         "cp {input.source} paper/build/ms.tex && cd paper/build && "
         "latexmk -pdf -interaction=nonstopmode -halt-on-error ms.tex > ../../{log} 2>&1 && "
         "cp ms.pdf ../ms.pdf"
+
+
+rule verdicts:
+    """The end of every default run: the verdict summary printed and written to results/verdicts.txt, after
+    everything else is built. Fails, loudly and on every later run until it is resolved, when a verdict differs
+    from config/verdicts.yaml (as `snakemake verify` does); a configuration of the user's own gets the summary
+    and the statement that nothing was compared."""
+    input:
+        claims="results/claims.csv",
+        expected=VERDICTS,
+        built=[
+            STICKY_FIGURES,
+            LTP_FIGURES,
+            BLOB_FIGURES,
+            CROSS_FIGURES,
+            "results/claims.md",
+            NOTEBOOKS,
+            "results/versions.md",
+            MANUSCRIPT,
+        ],
+    output:
+        "results/verdicts.txt",
+    log:
+        "logs/verdicts.log",
+    conda:
+        ENVIRONMENT
+    threads: 1
+    params:
+        comparison=COMPARISON,
+    shell:
+        "python -m particle_replication.claims verify {input.claims} --expected {input.expected} "
+        "{params.comparison} --report {output} 2>&1 | tee {log}; exit ${{PIPESTATUS[0]}}"
+

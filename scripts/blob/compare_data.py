@@ -58,5 +58,5 @@ def run(p, output):
                  **results)
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821

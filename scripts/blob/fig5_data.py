@@ -36,5 +36,5 @@ def run(p, index, inverse_h, output):
                  **{key: np.array(column) for key, column in zip(KEYS, zip(*rows))})
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.params.index, snakemake.params.inverse_h, snakemake.output[0])  # noqa: F821

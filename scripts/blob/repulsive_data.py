@@ -78,5 +78,5 @@ def run(p, fig4_path, output):
     save_results(output, **results)
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.input.fig4, snakemake.output[0])  # noqa: F821

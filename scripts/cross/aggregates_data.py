@@ -171,5 +171,5 @@ def run(p, output):
                  method_merger=np.array(mergers), spd_difference=np.array(differences))
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821

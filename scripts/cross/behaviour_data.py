@@ -100,5 +100,5 @@ def run(p, output):
                  stall_window=b["stall_window"])
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.output)  # noqa: F821

@@ -142,7 +142,7 @@ def times(p, errors_path, output):
     save_results(output, **results, seconds=np.array(seconds))
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     if snakemake.params.part == "errors":  # noqa: F821
         errors(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
     else:

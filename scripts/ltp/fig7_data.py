@@ -25,5 +25,5 @@ def run(p, concentration, output):
                  weights=sim.weights, label=np.array(w.name), h=p["h"], dt=dt, steps=p["steps"])
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.params.concentration, snakemake.output[0])  # noqa: F821

@@ -113,5 +113,5 @@ def run(p, output):
                  centre_drift=np.array(drifts), centre_label=np.array(w_centre.name))
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821

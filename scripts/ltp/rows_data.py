@@ -72,5 +72,5 @@ def run(p, concentration, output):
     save_results(output, grid=grid, x_potential=x_potential, h=p["h"], steps=p["steps"], **results)
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.params.concentration, snakemake.output[0])  # noqa: F821

@@ -65,5 +65,5 @@ def run(system_params, cases, p, output):
                  **{f"{case}_{key}": np.asarray(value) for case, r in results.items() for key, value in r.items()})
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

@@ -78,5 +78,5 @@ def run(p, output):
                  steps_values=np.asarray(p["steps_values"]), steps_times=np.array(steps), steps_n=p["steps_n"])
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821

@@ -58,5 +58,5 @@ def run(case, system_params, p, output):
                  max_time=max(p["max_steps"], p["steps"]) * p["delta"])
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.case, snakemake.params.system, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

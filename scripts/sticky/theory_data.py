@@ -147,5 +147,5 @@ def run(system_params, cases, p, output):
                  **step_study(system, cases, p["steps"]), **random_study(system, cases, p["random"]))
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

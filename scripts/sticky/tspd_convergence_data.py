@@ -70,5 +70,5 @@ def run(system_params, cases, p, output):
                  reference_n=p["reference_n"], n_errors=n_errors, bounds=bounds, n_reference_gap=n_reference_gap)
 
 
-with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

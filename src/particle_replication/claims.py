@@ -37,7 +37,10 @@ from .rates import Recorder, merge_rates
 from .workflow import load_results
 
 COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status", "value",
-           "windows")
+           "windows", "distance", "margin")
+#: ``status`` of a claim: decided (pass, fail), or a wall-time check that did not decide because the machine was
+#: loaded (:func:`abstain`), which ``verify`` reports but never counts as a difference.
+STATUSES = ("pass", "fail", "abstain")
 KINDS = ("paper", "derived", "check")
 KIND_NAMES = {"paper": "paper claims", "derived": "derived claims", "check": "checks"}
 #: Why an expected failure fails. A failure decided by our own instrument (a coarse reference, a grid,
@@ -78,10 +81,18 @@ class Claim:
     #: For a claim decided on a fitted slope: on how many windows of consecutive resolutions (of the deciding
     #: window's length) the same rule gives the same verdict, "k of K" (:func:`claim`); empty otherwise.
     windows: str = ""
+    #: The signed distance of the measured value from the threshold (``repr``): positive on the passing side,
+    #: negative on the failing side, -inf for a value not measured (:func:`signed_distance`).
+    distance: str = ""
+    #: The distance in units of the spread the robustness run measured for this claim (:func:`margin_text`),
+    #: filled in when the papers' tables are merged; empty in a paper's own table.
+    margin: str = ""
 
     def __post_init__(self):
-        if self.status not in ("pass", "fail"):
-            raise ValueError(f"status must be 'pass' or 'fail', got {self.status!r}")
+        if self.status not in STATUSES:
+            raise ValueError(f"status must be one of {', '.join(STATUSES)}, got {self.status!r}")
+        if self.status == "abstain" and self.kind != "check":
+            raise ValueError(f"only a check may abstain: {self.id!r} is a {self.kind} claim")
         if self.kind not in KINDS:
             raise ValueError(f"kind of {self.id!r} must be one of {', '.join(KINDS)}, got {self.kind!r}")
         if not self.source.strip():
@@ -95,38 +106,52 @@ def _number(value: float) -> str:
     return f"{value:.6g}"
 
 
-def _verdict(ok: bool, measured: float) -> str:
-    return "pass" if ok and math.isfinite(measured) else "fail"
+def _measured_text(measured: float) -> str:
+    """The measured value as the tables print it: a number, or "not measured" for a non-finite value (a run
+    that never settles, a fit on too few points), which fails its claim."""
+    return _number(measured) if math.isfinite(measured) else "not measured"
+
+
+def signed_distance(room: float, measured: float) -> float:
+    """The distance of a measured value from its threshold, ``room`` (positive: on the passing side), or -inf
+    for a value not measured (non-finite)."""
+    return float(room) if math.isfinite(measured) and not math.isnan(room) else -math.inf
+
+
+def _decided(id, paper, kind, source, figure, claim, published: str, measured: float, tolerance: str,
+             room: float) -> Claim:
+    """A claim decided by the sign of ``room``, its signed distance from the threshold (pass when >= 0)."""
+    distance = signed_distance(room, measured)
+    return Claim(id, paper, kind, source, figure, claim, published, _measured_text(measured), tolerance,
+                 "pass" if distance >= 0 else "fail", repr(float(measured)), distance=repr(distance))
 
 
 def close_to(id, paper, figure, claim, published: float, measured: float, tolerance: float, *, kind: str,
              source: str) -> Claim:
     """Pass when |measured - published| <= tolerance."""
-    ok = abs(measured - published) <= tolerance
-    return Claim(id, paper, kind, source, figure, claim, _number(published), _number(measured),
-                 f"+-{_number(tolerance)}", _verdict(ok, measured), repr(float(measured)))
+    return _decided(id, paper, kind, source, figure, claim, _number(published), measured, f"+-{_number(tolerance)}",
+                    tolerance - abs(measured - published))
 
 
 def relatively_close_to(id, paper, figure, claim, published: float, measured: float, tolerance: float, *,
                         kind: str, source: str) -> Claim:
     """Pass when |measured - published| <= tolerance * |published|."""
-    ok = abs(measured - published) <= tolerance * abs(published)
-    return Claim(id, paper, kind, source, figure, claim, _number(published), _number(measured),
-                 f"rel {_number(tolerance)}", _verdict(ok, measured), repr(float(measured)))
+    return _decided(id, paper, kind, source, figure, claim, _number(published), measured, f"rel {_number(tolerance)}",
+                    tolerance * abs(published) - abs(measured - published))
 
 
 def at_most(id, paper, figure, claim, bound: float, measured: float, published: str | None = None, *, kind: str,
             source: str) -> Claim:
     """Pass when measured <= bound."""
-    return Claim(id, paper, kind, source, figure, claim, published or f"<= {_number(bound)}", _number(measured),
-                 f"<= {_number(bound)}", _verdict(measured <= bound, measured), repr(float(measured)))
+    return _decided(id, paper, kind, source, figure, claim, published or f"<= {_number(bound)}", measured,
+                    f"<= {_number(bound)}", bound - measured)
 
 
 def at_least(id, paper, figure, claim, bound: float, measured: float, published: str | None = None, *, kind: str,
              source: str) -> Claim:
     """Pass when measured >= bound."""
-    return Claim(id, paper, kind, source, figure, claim, published or f">= {_number(bound)}", _number(measured),
-                 f">= {_number(bound)}", _verdict(measured >= bound, measured), repr(float(measured)))
+    return _decided(id, paper, kind, source, figure, claim, published or f">= {_number(bound)}", measured,
+                    f">= {_number(bound)}", measured - bound)
 
 
 def between(id, paper, figure, claim, lower: float, upper: float, measured: float, published: str | None = None, *,
@@ -135,8 +160,14 @@ def between(id, paper, figure, claim, lower: float, upper: float, measured: floa
     if not lower <= upper:
         raise ValueError(f"between: lower {lower} must not exceed upper {upper}")
     band = f"[{_number(lower)}, {_number(upper)}]"
-    return Claim(id, paper, kind, source, figure, claim, published or f"in {band}", _number(measured),
-                 f"in {band}", _verdict(lower <= measured <= upper, measured), repr(float(measured)))
+    return _decided(id, paper, kind, source, figure, claim, published or f"in {band}", measured, f"in {band}",
+                    min(measured - lower, upper - measured))
+
+
+def abstain(made: Claim, why: str) -> Claim:
+    """``made``, a check decided on wall time, turned into an abstention: the machine was loaded while it was
+    timed, so its value says nothing (``why`` is appended to the claim's text)."""
+    return dataclasses.replace(made, status="abstain", claim=f"{made.claim}; abstains: {why}")
 
 
 COMPARISONS = (close_to, relatively_close_to, at_most, at_least, between)
@@ -262,21 +293,80 @@ def read_claims(path) -> list[Claim]:
 
 
 def counts(claims) -> dict[str, tuple[int, int]]:
-    """kind -> (passing, total), for every kind present."""
+    """kind -> (passing, decided), for every kind present (a check that abstained is not decided)."""
     out = {}
     for kind in KINDS:
-        rows = [claim for claim in claims if claim.kind == kind]
-        if rows:
+        rows = [claim for claim in claims if claim.kind == kind and claim.status != "abstain"]
+        if rows or any(claim.kind == kind for claim in claims):
             out[kind] = (sum(claim.status == "pass" for claim in rows), len(rows))
     return out
 
 
 def summary_line(claims) -> str:
-    """'Paper claims reproduced: p of q. Derived claims: ...; checks: ...' (each kind counted apart)."""
+    """'Paper claims reproduced: p of q. Derived claims: ...; checks: ...' (each kind counted apart; abstentions
+    named)."""
     tally = counts(claims)
     passed, total = tally.get("paper", (0, 0))
     others = "; ".join(f"{KIND_NAMES[kind]} passing: {p} of {n}" for kind, (p, n) in tally.items() if kind != "paper")
-    return f"Paper claims reproduced: {passed} of {total}." + (f" Also {others}." if others else "")
+    abstained = sum(claim.status == "abstain" for claim in claims)
+    return (f"Paper claims reproduced: {passed} of {total}." + (f" Also {others}." if others else "")
+            + (f" {abstained} wall-time checks abstained (a loaded machine)." if abstained else ""))
+
+
+class Spread(NamedTuple):
+    """What the robustness run measured of a claim over its variants: the spread (largest minus smallest) of its
+    signed distance from the threshold and of its measured value (:mod:`particle_replication.robustness`)."""
+
+    distance: float
+    value: float
+
+
+def read_spreads(path, run: str) -> dict[str, Spread]:
+    """The spreads recorded for a run (``full``, ``quick``) in a spreads file (``config/spreads.yaml``, written
+    from a robustness run's ``results/robustness/spreads.yaml``): claim id -> :class:`Spread`; empty when the file
+    has no section for the run."""
+    data = yaml.safe_load(Path(path).read_text()) or {}
+    if not isinstance(data, dict):
+        raise ValueError(f"{path}: a spreads file maps runs to {{claim id: {{distance, value}}}}")
+    section = data.get(run) or {}
+    spreads = {}
+    for i, entry in section.items():
+        if not isinstance(entry, dict) or set(entry) != set(Spread._fields):
+            raise ValueError(f"{path} [{run}]: the spread of {i} needs exactly the keys {list(Spread._fields)}")
+        values = [float(entry[key]) for key in Spread._fields]
+        if any(math.isnan(v) or v < 0 for v in values):
+            raise ValueError(f"{path} [{run}]: the spreads of {i} must be non-negative numbers, got {entry}")
+        spreads[i] = Spread(*values)
+    return spreads
+
+
+def margin(claim: Claim, spread: Spread | None) -> float | None:
+    """The claim's distance from its threshold in units of its spread: inf where the spread is 0 (the verdict is
+    exact), 0 where a value was not measured or the spread is infinite, None without a recorded spread."""
+    if spread is None or not claim.distance:
+        return None
+    distance = abs(float(claim.distance))
+    if not math.isfinite(distance) or not math.isfinite(spread.distance):
+        return 0.0
+    return math.inf if spread.distance == 0 else distance / spread.distance
+
+
+def margin_text(value: float | None) -> str:
+    """How the tables print a margin: 'exact', a number of spreads, or '-' (no spread recorded)."""
+    if value is None:
+        return "-"
+    return "exact" if value == math.inf else f"{value:.3g}"
+
+
+def with_margins(claims, spreads) -> list[Claim]:
+    """The claims with their ``margin`` column filled in from the recorded spreads."""
+    return [dataclasses.replace(claim, margin=margin_text(margin(claim, spreads.get(claim.id)))) for claim in claims]
+
+
+def fragile(claims, margin_min: float) -> list[Claim]:
+    """The decided claims whose margin is below ``margin_min`` spreads (a margin not recorded is not listed)."""
+    return [claim for claim in claims if claim.status != "abstain" and claim.margin not in ("", "-", "exact")
+            and float(claim.margin) < margin_min]
 
 
 def markdown_table(claims, heading: bool = True) -> str:
@@ -284,28 +374,47 @@ def markdown_table(claims, heading: bool = True) -> str:
     per claim, paper claims first."""
     lines = ["# Checked claims", "", summary_line(claims), ""] if heading else []
     lines += [
-        "| id | kind | source | claim | published | measured | tolerance | status | same verdict on windows |",
-        "|---|---|---|---|---|---|---|---|---|",
+        "| id | kind | source | claim | published | measured | tolerance | status | margin (spreads) | "
+        "same verdict on windows |",
+        "|---|---|---|---|---|---|---|---|---|---|",
     ]
     for claim in sorted(claims, key=lambda claim: KINDS.index(claim.kind)):
-        status = "**fail**" if claim.status == "fail" else "pass"
+        status = {"fail": "**fail**", "abstain": "abstains"}.get(claim.status, claim.status)
         text = claim.claim.replace("|", "\\|")
         lines.append(f"| `{claim.id}` | {claim.kind} | {claim.source} | {text} | {claim.published} | "
-                     f"{claim.measured} | {claim.tolerance} | {status} | {claim.windows} |")
+                     f"{claim.measured} | {claim.tolerance} | {status} | {claim.margin} | {claim.windows} |")
     return "\n".join(lines) + "\n"
 
 
-def merge(sources, csv_path, markdown_path, expected_path=None, run: str = "full") -> list[Claim]:
+def merge(sources, csv_path, markdown_path, expected_path=None, run: str = "full", spreads_path=None,
+          margin_min: float = 10.0) -> list[Claim]:
     """Concatenate per-paper claim files into the repository table and its Markdown; with the expected
-    verdicts, the Markdown also lists the failures by cause."""
+    verdicts, the Markdown also lists the failures by cause; with the recorded spreads (``spreads_path``), every
+    claim gets its margin and the Markdown lists the fragile verdicts (margin below ``margin_min``)."""
     claims = [claim for source in sources for claim in read_claims(source)]
+    spreads = read_spreads(spreads_path, run) if spreads_path is not None else {}
+    claims = with_margins(claims, spreads)
     write_claims(csv_path, claims)
     markdown_path = Path(markdown_path)
     temporary = markdown_path.with_suffix(".tmp")
     causes = "" if expected_path is None else "\n" + failures_by_cause(claims, read_verdicts(expected_path, run))
-    temporary.write_text(markdown_table(claims) + causes)
+    temporary.write_text(markdown_table(claims) + causes + "\n" + fragile_section(claims, spreads, margin_min))
     temporary.replace(markdown_path)
     return claims
+
+
+def fragile_section(claims, spreads, margin_min: float) -> str:
+    """Markdown: the fragile verdicts (margin below ``margin_min`` spreads), or why there are none to list."""
+    if not spreads:
+        return ("## Fragile verdicts\n\nNo spreads are recorded for this run's configuration, so no margin is "
+                "known.\n")
+    rows = fragile(claims, margin_min)
+    lines = ["## Fragile verdicts", "", f"{len(rows)} verdicts lie within {margin_min:g} spreads of their threshold "
+             "(the spread: over the variants of the robustness run).", ""]
+    if rows:
+        lines += ["| id | kind | status | margin |", "|---|---|---|---|"]
+        lines += [f"| `{claim.id}` | {claim.kind} | {claim.status} | {claim.margin} |" for claim in rows]
+    return "\n".join(lines) + "\n"
 
 
 class Expected(NamedTuple):
@@ -405,21 +514,39 @@ def read_changes(path, known=None) -> list[Change]:
     return changes
 
 
-def verify(claims_path, verdicts_path, run: str = "full") -> int:
-    """Print the paper claims, then every difference from the expected verdicts; return the exit code.
+def verify(claims_path, verdicts_path, run: str | None = "full", margin_min: float = 10.0,
+           differing: tuple[str, ...] = (), write=print) -> int:
+    """Print (through ``write``) the paper claims, the fragile verdicts, then every difference from the expected
+    verdicts; return the exit code.
 
-    Non-zero when a verdict differs from the expected one, when an expected claim is missing, or
-    when a claim has no expected verdict.
+    Non-zero when a verdict differs from the expected one, when an expected claim is missing, or when
+    a claim has no expected verdict. A check that abstained (a loaded machine) is listed, never a difference.
+    ``run`` None: the configuration is none of the repository's runs (``differing``: the keys in which it
+    differs), so no verdict is expected of it: the summary is printed and nothing compared.
     """
     claims = read_claims(claims_path)
-    expected = read_verdicts(verdicts_path, run)
-    print(summary_line(claims))
+    write(summary_line(claims))
     for claim in claims:
         if claim.kind == "paper":
-            print(f"  {claim.status:4} {claim.id} ({claim.source}): published {claim.published}, "
-                  f"measured {claim.measured}")
+            write(f"  {claim.status:4} {claim.id} ({claim.source}): published {claim.published}, "
+                  f"measured {claim.measured}, margin {claim.margin or '-'}")
+    for claim in claims:
+        if claim.status == "abstain":
+            write(f"ABSTAINED {claim.id}: {claim.claim.rpartition('abstains: ')[2]}")
+    shaky = fragile(claims, margin_min)
+    for claim in shaky:
+        write(f"FRAGILE {claim.id} ({claim.kind}, {claim.status}): {claim.margin} spreads from its threshold")
+    if shaky:
+        write(f"{len(shaky)} fragile verdicts (within {margin_min:g} spreads of their threshold)")
+    if run is None:
+        write("Nothing compared: this configuration is none of the repository's runs (it differs in "
+              f"{', '.join(differing) or 'its settings'}), so no verdict is expected of it.")
+        return 0
+    expected = read_verdicts(verdicts_path, run)
     problems = []
     for claim in claims:
+        if claim.status == "abstain":
+            continue
         if claim.id not in expected:
             problems.append(f"NEW {claim.id}: {claim.status}, but no expected verdict in {verdicts_path}")
         elif expected[claim.id].status != claim.status:
@@ -431,8 +558,8 @@ def verify(claims_path, verdicts_path, run: str = "full") -> int:
     problems += [f"MISSING {i}: expected {verdict.status}, not in {claims_path}"
                  for i, verdict in expected.items() if i not in present]
     for problem in problems:
-        print(problem)
-    print(f"{len(problems)} differences from the expected verdicts (expected: {cause_line(expected)}; each with "
+        write(problem)
+    write(f"{len(problems)} differences from the expected verdicts (expected: {cause_line(expected)}; each with "
           f"its reason in {verdicts_path})")
     return 1 if problems else 0
 
@@ -530,10 +657,17 @@ def main(argv=None) -> int:
     merge_parser.add_argument("--rates-output", help="merged rate tables (JSON)")
     merge_parser.add_argument("--expected", help="YAML file of expected verdicts (for the failures by cause)")
     merge_parser.add_argument("--run", default="full", help="the run whose verdicts to use (full, or a section)")
+    merge_parser.add_argument("--spreads", help="YAML file of the spreads recorded by a robustness run (margins)")
+    merge_parser.add_argument("--margin-min", type=float, default=10.0, help="margins below this are fragile")
     verify_parser = sub.add_parser("verify", help="exit 1 when a verdict differs from the expected ones")
     verify_parser.add_argument("path")
     verify_parser.add_argument("--expected", required=True, help="YAML file of expected verdicts")
     verify_parser.add_argument("--run", default="full", help="the run whose verdicts to use (full, or a section)")
+    verify_parser.add_argument("--margin-min", type=float, default=10.0, help="margins below this are fragile")
+    verify_parser.add_argument("--differs", nargs="*", default=None,
+                               help="the configuration is none of the repository's runs: the keys in which it differs "
+                                    "(nothing is compared)")
+    verify_parser.add_argument("--report", help="also write what is printed to this file")
     values_parser = sub.add_parser("values", help="record a claims table's measured values as the reference")
     values_parser.add_argument("path")
     values_parser.add_argument("--reference", required=True, help="YAML file of reference values")
@@ -542,11 +676,21 @@ def main(argv=None) -> int:
         write_values(args.path, args.reference)
         return 0
     if args.command == "merge":
-        merge(args.sources, args.csv, args.markdown, args.expected, args.run)
+        merge(args.sources, args.csv, args.markdown, args.expected, args.run, args.spreads, args.margin_min)
         if args.rates_output:
             merge_rates(args.rates, args.rates_output)
         return 0
-    return verify(args.path, args.expected, args.run)
+    lines = []
+
+    def write(line):
+        print(line, flush=True)
+        lines.append(line)
+
+    run = None if args.differs is not None else args.run
+    code = verify(args.path, args.expected, run, args.margin_min, tuple(args.differs or ()), write)
+    if args.report:
+        Path(args.report).write_text("\n".join(lines) + "\n")
+    return code
 
 
 if __name__ == "__main__":

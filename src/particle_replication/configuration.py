@@ -223,3 +223,46 @@ def _check_times_within(config: dict) -> None:
             late = [t for t in times if _is_number(t) and t > t_max]
             if late:
                 raise ValueError(f"{times_path}: times {late} beyond {t_max_path} = {t_max}")
+
+
+#: Keys that do not change what a claim measures: where the run writes, which expected verdicts it reads, the
+#: robustness run's settings and its nudge of the initial data (whose verdicts must be those of the run nudged).
+NOT_MEASURED = frozenset({"output_root", "verdicts", "verdicts_run", "nudge", "robustness"})
+
+
+def differing_keys(config: dict, other: dict, prefix: str = "") -> list[str]:
+    """Dotted keys whose values differ between two configurations (a key present in one only included), but
+    for the top-level keys of :data:`NOT_MEASURED`."""
+    keys = sorted(set(config) | set(other))
+    out = []
+    for key in keys:
+        if not prefix and key in NOT_MEASURED:
+            continue
+        dotted = f"{prefix}{key}"
+        a, b = config.get(key), other.get(key)
+        if isinstance(a, dict) and isinstance(b, dict):
+            out += differing_keys(a, b, f"{dotted}.")
+        elif a != b or (key in config) != (key in other):
+            out.append(dotted)
+    return out
+
+
+def repository_configuration(run: str, root: Path = REPOSITORY) -> dict:
+    """The configuration of one of the repository's own runs: ``config/config.yaml`` for ``full``, with
+    ``config/<run>.yaml`` laid over it for another (``quick``)."""
+    base = yaml.safe_load((root / "config" / "config.yaml").read_text())
+    if run == "full":
+        return base
+    path = root / "config" / f"{run}.yaml"
+    if not path.is_file():
+        raise ValueError(f"verdicts_run {run!r} names no configuration of the repository ({path} does not exist)")
+    return overlay(base, yaml.safe_load(path.read_text()) or {})
+
+
+def compared_run(config: dict, root: Path = REPOSITORY) -> tuple[str | None, list[str]]:
+    """(run, differing keys): the run whose expected verdicts apply to ``config`` (its ``verdicts_run``, when
+    the configuration measures what that run of the repository measures, :data:`NOT_MEASURED` aside), or None
+    with the keys in which it differs (a user's own overlay: no verdicts are expected of it)."""
+    run = config["verdicts_run"]
+    differing = differing_keys(config, repository_configuration(run, root))
+    return (None, differing) if differing else (run, [])

@@ -13,22 +13,29 @@ from pathlib import Path
 
 import numpy as np
 
+from particle_methods import perturbation
 from particle_methods.threads import available, use_threads
 
 from .registry import result
 
 
 @contextlib.contextmanager
-def logged(log_path, threads: int = 1):
+def logged(log_path, threads: int = 1, nudge=None):
     """Send stdout and stderr to ``log_path``, run the compiled kernels and numerical libraries on
     the job's ``threads`` (:func:`particle_methods.threads.use_threads`, clamped to what the
-    process may use), and report the threads and the wall time."""
+    process may use), and report the threads and the wall time. A data job passes the configuration's
+    ``nudge`` ({ulps, seed}): its initial data are then moved by that many units in the last place
+    (:mod:`particle_methods.perturbation`; 0 ulps: unchanged), as the robustness run's nudged variants ask."""
     log_path = Path(log_path)
     log_path.parent.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
     used = use_threads(threads)
-    with log_path.open("w") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
+    ulps, seed = (0, 0) if nudge is None else (nudge["ulps"], nudge["seed"])
+    with log_path.open("w") as log, contextlib.redirect_stdout(log), contextlib.redirect_stderr(log), \
+            perturbation.nudge(ulps, seed):
         print(f"threads: {used} (the job's {threads}, at most {available()} in this process)", flush=True)
+        if ulps:
+            print(f"initial data nudged by up to {ulps} units in the last place (seed {seed})", flush=True)
         try:
             yield
         except BaseException:

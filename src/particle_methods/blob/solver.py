@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from ..perturbation import nudged
 from ..validation import (
     finite_array,
     finite_number,
@@ -210,12 +211,13 @@ def setup_1d(data, kernel: str, h: float, *, method: str = "blob", order: int = 
     data = as_data_1d(data)
     one_of("method", method, METHODS)
     psi, q = mollifier(order, 1), _exponent_q(q)
-    points = grid_1d(h)
+    points = nudged(grid_1d(h))
     rho0 = data(points[:, 0])
+    masses = nudged(rho0 * h)
     if method == "blob":
-        return points, rho0, rho0 * h, kernel_1d(kernel, psi, h**q), True
+        return points, rho0, masses, kernel_1d(kernel, psi, h**q), True
     # Delta K is a Dirac mass for the Newtonian kernels: no density.
-    return points, rho0, rho0 * h, kernel_1d(kernel), kernel == "cubic"
+    return points, rho0, masses, kernel_1d(kernel), kernel == "cubic"
 
 
 def run_1d(data, kernel: str, h: float, times, *, method: str = "blob", order: int = 4, q: float = 0.9,
@@ -243,18 +245,19 @@ def setup_2d(data, kernel: str, h: float, *, method: str = "blob", q: float = 0.
     data = as_data_2d(data)
     one_of("method", method, METHODS)
     q = _exponent_q(q)
-    points = grid_2d(h, data)
+    points = nudged(grid_2d(h, data))
     h = float(h)
     if delta is not None and positive("delta", delta) < MIN_DELTA_OVER_H * h:
         raise ValueError(f"delta = {delta} must be at least MIN_DELTA_OVER_H h = {MIN_DELTA_OVER_H * h:.4g}: smaller "
                          "blobs barely overlap and the densities blow up")
     rho0 = data(points)
+    masses = nudged(rho0 * h * h)
     tables = {"table_radius": table_radius, "table_points": table_points}
     if method == "blob":
         k = kernel_2d(kernel, mollifier(4, 2), h**q if delta is None else delta, **tables)
-        return points, rho0, rho0 * h * h, k, True
+        return points, rho0, masses, k, True
     # Delta K is a Dirac mass for the Newtonian kernel: no density.
-    return points, rho0, rho0 * h * h, kernel_2d(kernel, **tables), kernel != "newtonian"
+    return points, rho0, masses, kernel_2d(kernel, **tables), kernel != "newtonian"
 
 
 def run_2d(data, kernel: str, h: float, times, *, method: str = "blob", q: float = 0.9, delta: float | None = None,

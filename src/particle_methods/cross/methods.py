@@ -41,6 +41,7 @@ from ..ltp.initial import InitialDensity
 from ..ltp.potentials import potential
 from ..ltp.solver import simulate
 from ..norms import cdf_antiderivative
+from ..perturbation import nudged
 from ..sticky.spd import MAX_POSITIONS, spd_positions
 from ..validation import finite_array, integer_at_least, nonnegative, positive, same_length
 from .exact import solution
@@ -117,7 +118,7 @@ def grid_particles(data, h: float):
     masses = masses[keep]
     if _is_bumps(data):
         masses *= bump_data(data).mass / np.sum(masses)
-    return points[keep], density[keep], masses
+    return nudged(points[keep], keep_sorted=True), density[keep], nudged(masses)
 
 
 def _levels(masses):
@@ -158,8 +159,8 @@ def spd_equal(data, n: int, t: float):
     initial = solution(data, 0.0)
     n = integer_at_least("n", n, 1, MAX_EQUAL_MASSES)
     t = _spd_time(t)
-    x = initial.quantile((np.arange(n) + 0.5) * (initial.mass / n))
-    masses = np.full(n, initial.mass / n)
+    x = nudged(initial.quantile((np.arange(n) + 0.5) * (initial.mass / n)), keep_sorted=True)
+    masses = nudged(np.full(n, initial.mass / n))
     return spd_positions(x, weighted_velocities(masses), t), masses
 
 
@@ -250,7 +251,7 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
         raise ValueError(f"times must be non-negative and non-decreasing, at least one, got {times}")
     edges = np.linspace(-1.0, 1.0, cells + 1)
     initial = solution(data, 0.0)
-    values = np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges)  # the exact cell averages of F0
+    values = nudged(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges))  # the exact cell averages of F0
     out, now = [], 0.0
     for t in times:
         values = godunov_advance(edges, values, initial.mass, float(t) - now, cfl=cfl)

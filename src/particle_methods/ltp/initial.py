@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import integrate, special
 
+from ..perturbation import nudged
 from ..validation import (
     ParameterTypeError,
     finite_number,
@@ -161,7 +162,7 @@ def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str
         raise ValueError(f"the CDF of {density.name} decreases: the cell weights (2.14) are its increments, "
                          f"and one is {values.min():.3g}")
     keep = values != 0.0
-    return centres[keep], values[keep]
+    return nudged(centres[keep]), nudged(values[keep])
 
 
 #: Cell weights (2.14) below -WEIGHT_ROUNDING times the largest one are refused: the CDF decreases. (Rounding in the

@@ -10,6 +10,7 @@ import numpy as np
 from ..finite_volume.fluxes import burgers_flux, concave_flux
 from ..finite_volume.grids import l1_between_cell_functions, l1_distance_to_step_cdf
 from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
+from ..perturbation import nudged
 from ..validation import finite_array, finite_number, instance, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution
 from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
@@ -82,12 +83,13 @@ def psystem_initial_cells(case: str, x0: float, x_edges) -> np.ndarray:
     """Exact cell averages of (w_0^-, w_0^+) on the cells of ``x_edges``, shape (2, cells).
 
     Averages of a CDF lie in [0, 1]; the differences of its antiderivative can pass 1 by rounding
-    far in the tails, which the clip removes."""
+    far in the tails, which the clip removes. Initial data: moved by the active nudge of
+    :mod:`particle_methods.perturbation`, if any."""
     edges = sorted_array("x_edges", x_edges)
     if edges.size < 2 or np.any(np.diff(edges) <= 0):
         raise ValueError("x_edges must hold at least 2 strictly increasing edges")
-    return np.clip([np.diff(cdf_antiderivative(m, edges)) / np.diff(edges)
-                     for m in psystem_initial_measures(case, x0)], 0.0, 1.0)
+    return np.clip(nudged([np.diff(cdf_antiderivative(m, edges)) / np.diff(edges)
+                            for m in psystem_initial_measures(case, x0)]), 0.0, 1.0)
 
 
 def distance_to_cells(configuration, w, x_edges) -> float:

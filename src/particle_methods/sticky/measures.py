@@ -15,6 +15,7 @@ from abc import ABC, abstractmethod
 import numpy as np
 from scipy import special
 
+from ..perturbation import nudged
 from ..validation import (
     ParameterTypeError,
     finite_array,
@@ -276,16 +277,18 @@ class Weibull(QuantileMeasure):
 
 
 def median_quantiles(measure: QuantileMeasure, n: int) -> np.ndarray:
-    """Discretisation (2.1): x_k = F^{-1}((2k - 1)/(2n)), k = 1..n, the W1-optimal choice."""
+    """Discretisation (2.1): x_k = F^{-1}((2k - 1)/(2n)), k = 1..n, the W1-optimal choice (initial positions:
+    moved by the active nudge of :mod:`particle_methods.perturbation`, if any)."""
     measure = checked_measure("measure", measure)
     n = integer_at_least("n", n, 1, MAX_POSITIONS)
-    return measure.quantile((2.0 * np.arange(1, n + 1) - 1.0) / (2.0 * n))
+    return nudged(measure.quantile((2.0 * np.arange(1, n + 1) - 1.0) / (2.0 * n)), keep_sorted=True)
 
 
 def averaged_quantiles(measure: QuantileMeasure, n: int) -> np.ndarray:
-    """Discretisation (1.9): x_k = (n+1) int_{(2k-1)/(2(n+1))}^{(2k+1)/(2(n+1))} F^{-1}(w) dw."""
+    """Discretisation (1.9): x_k = (n+1) int_{(2k-1)/(2(n+1))}^{(2k+1)/(2(n+1))} F^{-1}(w) dw (initial
+    positions: moved by the active nudge of :mod:`particle_methods.perturbation`, if any)."""
     measure = checked_measure("measure", measure)
     n = integer_at_least("n", n, 1, MAX_POSITIONS)
     edges = (2.0 * np.arange(n + 1) + 1.0) / (2.0 * (n + 1))
-    return finite_result("a position (1.9)", (n + 1) * np.diff(measure.quantile_integral(edges)),
-                         "the quantile integral is too large: its differences overflow")
+    return nudged(finite_result("a position (1.9)", (n + 1) * np.diff(measure.quantile_integral(edges)),
+                                "the quantile integral is too large: its differences overflow"), keep_sorted=True)

@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..jit import njit
+from ..perturbation import nudged
 from ..validation import (
     ParameterTypeError,
     finite_array,
@@ -254,7 +255,8 @@ def velocities_from_flux(flux, n: int) -> np.ndarray:
     """Initial velocities of section 1.1.3: n int_{(k-1)/n}^{k/n} lambda(w) dw, lambda = flux'.
 
     The integral of lambda = Lambda' is a difference of the flux itself, so the
-    velocities are exact: n (Lambda(k/n) - Lambda((k-1)/n)).
+    velocities are exact: n (Lambda(k/n) - Lambda((k-1)/n)). Initial data: moved by the active nudge of
+    :mod:`particle_methods.perturbation`, if any.
     """
     if not callable(flux):
         raise ParameterTypeError(f"flux must be callable (the flux Lambda of (1.1)), got {flux!r}")
@@ -262,8 +264,8 @@ def velocities_from_flux(flux, n: int) -> np.ndarray:
     values = finite_array("flux values", flux(np.arange(n + 1) / n))
     if values.size != n + 1:
         raise ValueError(f"flux must return one value per level k/n, k = 0..n ({n + 1}), got {values.size}")
-    return finite_result("a velocity n (flux(k/n) - flux((k-1)/n))", n * np.diff(values),
-                         "the flux values are too large: their differences overflow")
+    return nudged(finite_result("a velocity n (flux(k/n) - flux((k-1)/n))", n * np.diff(values),
+                                "the flux values are too large: their differences overflow"))
 
 
 def velocities_from_levels(flux, levels) -> np.ndarray:
