@@ -235,5 +235,5 @@ rule verdicts:
         comparison=COMPARISON,
     shell:
         "python -m particle_replication.claims verify {input.claims} --expected {input.expected} "
-        "{params.comparison} --report {output} 2>&1 | tee {log}; exit ${{PIPESTATUS[0]}}"
+        "{params.comparison} --brief --report {output} 2>&1 | tee {log}; exit ${{PIPESTATUS[0]}}"
 

@@ -6,15 +6,17 @@ For each data and time of the config, every method runs at each of its sizes. Tw
   (:mod:`particle_methods.cross.exact`), computed on the method's own output, and the diagnostics;
 - ``part: times`` (every core, so that no other job disturbs it): the same runs timed, initial
   discretisation plus evolution, after warm-up runs that compile every kernel (the smallest size, and
-  once per method the largest, which takes the parallel variants), the best of
-  ``repeats`` runs when a run is short; merged with the errors into the study's results.
+  once per method the largest, which takes the parallel variants), the best of ``repeats`` rounds
+  over all the runs when a run is short (interleaved), with the CPU and a load guard recorded beside
+  them; merged with the errors into the study's results.
 """
 
 import numpy as np
 
 from particle_methods.cross import distances, methods
 from particle_methods.cross.exact import AggregationSolution
-from particle_replication.workflow import load_results, logged, progress, save_results, timed
+from particle_replication.environment import cpu
+from particle_replication.workflow import LoadGuard, interleaved, load_results, logged, progress, save_results
 
 
 def count(output) -> int:
@@ -121,10 +123,11 @@ def errors(p, output):
                  case_dirac=np.array(case_dirac))
 
 
-def times(p, errors_path, output):
-    """Every run timed (after a warm-up per method, data and time), merged with the errors."""
+def times(p, errors_path, output, threads):
+    """Every run timed (after a warm-up per method, data and time; interleaved, under a load guard), merged with
+    the errors."""
     results = load_results(errors_path)
-    seconds, warmed = [], set()
+    timed, labels, warmed = [], [], set()
     for _, data, _, t, _, name, sizes, method, _ in runs(p):
         method(data, sizes[0], t)  # warm-up: compile and fill caches
         if name not in warmed:
@@ -134,16 +137,20 @@ def times(p, errors_path, output):
             method(data, sizes[-1], t)
             warmed.add(name)
         for size in sizes:
-            best, _ = timed(lambda m=method, d=data, s=size, t=t: m(d, s, t), p["repeats"])
-            seconds.append(best)
-            progress(f"  {data}, t = {t:g}, {name:18} size {size:7d}: {best:.4g} s")
-    if len(seconds) != results["size"].size:
-        raise RuntimeError(f"{len(seconds)} timed runs for {results['size'].size} measured ones: the errors are stale")
-    save_results(output, **results, seconds=np.array(seconds))
+            timed.append(lambda m=method, d=data, s=size, t=t: m(d, s, t))
+            labels.append(f"{data}, t = {t:g}, {name:18} size {size:7d}")
+    if len(timed) != results["size"].size:
+        raise RuntimeError(f"{len(timed)} timed runs for {results['size'].size} measured ones: the errors are stale")
+    with LoadGuard(threads) as guard:
+        seconds, _ = interleaved(timed, p["repeats"], guard)
+    for label, best in zip(labels, seconds):
+        progress(f"  {label}: {best:.4g} s")
+    progress(f"CPU {cpu()}; {guard.load:.2g} other processes runnable on average")
+    save_results(output, **results, seconds=np.array(seconds), cpu=cpu(), **guard.readings())
 
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     if snakemake.params.part == "errors":  # noqa: F821
         errors(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
     else:
-        times(snakemake.params.cfg, snakemake.input.errors, snakemake.output[0])  # noqa: F821
+        times(snakemake.params.cfg, snakemake.input.errors, snakemake.output[0], snakemake.threads)  # noqa: F821

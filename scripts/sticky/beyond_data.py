@@ -7,11 +7,12 @@ exact MSPD and the upwind scheme on the p-system cases against the case's refere
 accurate of the exact MSPD with the largest n of the limit sweep and the upwind scheme on the most
 cells (both from ``beyond_limits.py``, whose results are copied into this job's output).
 
-Operations: the hull's stack operations (SPD; :func:`particle_methods.sticky.spd.hull_operations`),
+Operations: the hull's tests, pops, pushes and writes (SPD; :func:`particle_methods.sticky.spd.hull_positions_kernel`),
 rank entries and hull operations over the steps (TSPD), events and velocity updates (exact MSPD),
 cell updates times components (finite volumes, the steps counted by the scheme). Every kernel runs
-once untimed before its timings, so that no compilation is timed. Only timed runs happen here: the
-job holds every core, so that no other job disturbs the timings.
+once untimed before its timings, so that no compilation is timed; the runs are then timed together,
+interleaved, with the CPU and a load guard recorded beside them. Only timed runs happen here: the job
+holds every core, so that no other job disturbs the timings.
 """
 
 import numpy as np
@@ -32,42 +33,56 @@ from particle_methods.sticky.mspd import mspd_positions
 from particle_methods.sticky.multitype_events import mspd_exact
 from particle_methods.sticky.spd import spd_positions
 from particle_methods.systems import PSystem
-from particle_replication.workflow import load_results, logged, progress, save_results, timed
+from particle_replication.environment import cpu
+from particle_replication.workflow import LoadGuard, interleaved, load_results, logged, progress, save_results
 
 FLUXES = {"burgers_two_atoms": BURGERS, "concave_laplace": CONCAVE}
 PSYSTEM_CASES = ("rarefaction", "shocks")
 REFERENCES = ("exact MSPD", "upwind")
 
 
-def measured(run, repeats, warm_up):
-    """(seconds, result) of ``run``, best of ``repeats``, after ``warm_up`` (the same kernel on the
-    smallest size, untimed) on the first call of each method."""
-    if warm_up is not None:
-        warm_up()
-    return timed(run, repeats)
+class Timed:
+    """The runs of the study, each with what makes its row from its result; the first run of each method also
+    runs once untimed (compilation), and all are then timed together, interleaved
+    (:func:`~particle_replication.workflow.interleaved`), under one load guard."""
+
+    def __init__(self):
+        self.runs, self.rows, self.methods = [], [], set()
+
+    def add(self, method, run, row):
+        if method not in self.methods:
+            run()
+            self.methods.add(method)
+        self.runs.append(run)
+        self.rows.append(row)
+        return len(self.rows) - 1
+
+    def time(self, repeats):
+        with LoadGuard() as guard:
+            seconds, results = interleaved(self.runs, repeats, guard)
+        self.guard = guard
+        self.made = [row(result, time) for row, result, time in zip(self.rows, results, seconds)]
 
 
-def scalar_study(name, p, repeats):
-    """SPD (n particles) and Godunov (cells) errors, operations and best times for one scalar case."""
+def scalar_study(name, p, timing):
+    """SPD (n particles) and Godunov (cells) errors, operations and best times for one scalar case: the indices
+    of its runs in ``timing`` (:class:`Timed`)."""
     case, t = SCALAR_CASES[name], p["t"]
     solution = case.solution(t)
-    spd = []
+    spd, fv = [], []
     for n in p["spd_n"]:
         x, v = case.initial_state(n)
-        run = lambda x=x, v=v: spd_positions(x, v, t, return_operations=True)  # noqa: E731
-        seconds, (positions, operations) = measured(run, repeats, run if not spd else None)
-        spd.append((w1_to_measure(solution, positions), operations, seconds))
-        progress(f"{name}: SPD n = {n}: W1 {spd[-1][0]:.3e}, {seconds:.3g} s")
-    fv = []
+        spd.append(timing.add("spd", lambda x=x, v=v: spd_positions(x, v, t, return_operations=True),
+                              lambda result, seconds: (w1_to_measure(solution, result[0]), result[1], seconds)))
     for cells in p["cells"]:
         edges = np.linspace(*p["domain"], cells + 1)
         u0 = np.diff(cdf_antiderivative(case.initial, edges)) / np.diff(edges)
-        run = lambda u0=u0, edges=edges: godunov(FLUXES[name], u0, edges, t, left=0.0, right=1.0,  # noqa: E731
-                                                 return_steps=True)
-        seconds, (u, steps) = measured(run, repeats, run if not fv else None)
-        fv.append((l1_to_step_function(solution, edges, np.append(u, 1.0)), cells * steps, seconds))
-        progress(f"{name}: Godunov {cells} cells, {steps} steps: W1 {fv[-1][0]:.3e}, {seconds:.3g} s")
-    return np.array(spd).T, np.array(fv).T
+        fv.append(timing.add(
+            "godunov", lambda u0=u0, edges=edges: godunov(FLUXES[name], u0, edges, t, left=0.0, right=1.0,
+                                                          return_steps=True),
+            lambda result, seconds, edges=edges, cells=cells: (
+                l1_to_step_function(solution, edges, np.append(result[0], 1.0)), cells * result[1], seconds)))
+    return spd, fv
 
 
 def reference(limits, name, domain):
@@ -83,48 +98,69 @@ def reference(limits, name, domain):
     return 0, errors[0], lambda x: configuration_distance(x, mspd), lambda v, edges: distance_to_cells(mspd, v, edges)
 
 
-def psystem_study(system, name, x0, p, limits):
-    """TSPD, exact MSPD and upwind errors, operations and best times for one p-system case."""
-    t, repeats = p["t"], p["repeats"]
+def psystem_study(system, name, x0, p, limits, timing):
+    """TSPD, exact MSPD and upwind errors, operations and best times for one p-system case: the indices of its
+    runs in ``timing`` (:class:`Timed`), and its reference."""
+    t = p["t"]
     chosen, own_error, to_configuration, to_cells = reference(limits, name, p["domain"])
     tspd, exact_runs, upwind_runs = [], [], []
     for n in p["tspd_n"]:
         x = psystem_initial_configuration(name, x0, n)
-        run = lambda x=x, n=n: mspd_positions(x, system, t / n, n, return_operations=True)  # noqa: E731
-        seconds, (state, operations) = measured(run, repeats, run if not tspd else None)
-        tspd.append((to_configuration(state), operations, seconds))
+        tspd.append(timing.add("tspd", lambda x=x, n=n: mspd_positions(x, system, t / n, n, return_operations=True),
+                               lambda result, seconds: (to_configuration(result[0]), result[1], seconds)))
+
+    def exact_row(result, seconds):
+        state, events = result
+        work = events.merges + events.crossings + events.splits + events.member_updates
+        return to_configuration(state[0]), work, seconds, events.crossings
+
     for n in p["exact_n"]:
         x = psystem_initial_configuration(name, x0, n)
-        run = lambda x=x: mspd_exact(x, system, [t], return_events=True)  # noqa: E731
-        seconds, (state, events) = measured(run, repeats, run if not exact_runs else None)
-        work = events.merges + events.crossings + events.splits + events.member_updates
-        exact_runs.append((to_configuration(state[0]), work, seconds, events.crossings))
+        exact_runs.append(timing.add("exact", lambda x=x: mspd_exact(x, system, [t], return_events=True), exact_row))
     for cells in p["upwind_cells"]:
         edges = np.linspace(*p["domain"], cells + 1)
         w0 = psystem_initial_cells(name, x0, edges)
-        run = lambda w0=w0, edges=edges: upwind_diagonal(system, w0, edges, t, p["cfl"], return_steps=True)  # noqa: E731
-        seconds, (w, steps) = measured(run, repeats, run if not upwind_runs else None)
-        upwind_runs.append((to_cells(w, edges), system.d * cells * steps, seconds))
+        upwind_runs.append(timing.add(
+            "upwind", lambda w0=w0, edges=edges: upwind_diagonal(system, w0, edges, t, p["cfl"], return_steps=True),
+            lambda result, seconds, edges=edges, cells=cells: (to_cells(result[0], edges),
+                                                               system.d * cells * result[1], seconds)))
     progress(f"{name}: reference {REFERENCES[chosen]}, own error {own_error:.3g}")
-    for label, runs in (("TSPD", tspd), ("exact MSPD", exact_runs), ("upwind", upwind_runs)):
-        progress(f"{name}: {label}: " + "; ".join(f"{r[0]:.3e} in {r[2]:.3g} s" for r in runs))
-    return dict(tspd=np.array(tspd).T, exact=np.array(exact_runs).T, upwind=np.array(upwind_runs).T,
-                reference=REFERENCES[chosen], reference_error=own_error)
+    return dict(tspd=tspd, exact=exact_runs, upwind=upwind_runs, reference=REFERENCES[chosen],
+                reference_error=own_error)
 
 
 def run(system_params, cases, p, limits, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
     limits = load_results(limits)
-    results = {name: psystem_study(system, name, cases[name]["x0"], p, limits) for name in PSYSTEM_CASES}
-    scalar = {name: scalar_study(name, p["scalar"][name], p["repeats"]) for name in FLUXES}
+    timing = Timed()
+    studies = {name: psystem_study(system, name, cases[name]["x0"], p, limits, timing) for name in PSYSTEM_CASES}
+    scalar = {name: scalar_study(name, p["scalar"][name], timing) for name in FLUXES}
+    timing.time(p["repeats"])
+
+    def rows(indices):
+        return np.array([timing.made[i] for i in indices]).T
+
+    for name, study in studies.items():
+        for method in ("tspd", "exact", "upwind"):
+            progress(f"{name}: {method}: " + "; ".join(f"{timing.made[i][0]:.3e} in {timing.made[i][2]:.3g} s"
+                                                       for i in study[method]))
+    for name, (spd, fv) in scalar.items():
+        progress(f"{name}: SPD " + "; ".join(f"{timing.made[i][0]:.3e} in {timing.made[i][2]:.3g} s" for i in spd)
+                 + "; Godunov " + "; ".join(f"{timing.made[i][0]:.3e} in {timing.made[i][2]:.3g} s" for i in fv))
+    progress(f"CPU {cpu()}; the timed runs got {timing.guard.cpu_share:.2f} of a core, {timing.guard.load:.2g} other "
+             "processes runnable on average")
     save_results(
         output, **limits, tspd_n=np.asarray(p["tspd_n"]), exact_n=np.asarray(p["exact_n"]),
         upwind_cells=np.asarray(p["upwind_cells"]), scalar_cases=np.array(list(FLUXES)),
-        **{f"{case}_{key}": np.asarray(value) for case, r in results.items() for key, value in r.items()},
-        **{f"{name}_spd": spd for name, (spd, _) in scalar.items()},
-        **{f"{name}_godunov": fv for name, (_, fv) in scalar.items()},
+        **{f"{case}_{method}": rows(study[method]) for case, study in studies.items()
+           for method in ("tspd", "exact", "upwind")},
+        **{f"{case}_{key}": np.asarray(study[key]) for case, study in studies.items()
+           for key in ("reference", "reference_error")},
+        **{f"{name}_spd": rows(spd) for name, (spd, _) in scalar.items()},
+        **{f"{name}_godunov": rows(fv) for name, (_, fv) in scalar.items()},
         **{f"{name}_spd_n": np.asarray(p["scalar"][name]["spd_n"]) for name in FLUXES},
         **{f"{name}_cells": np.asarray(p["scalar"][name]["cells"]) for name in FLUXES},
+        cpu=cpu(), **timing.guard.readings(),
     )
 
 

@@ -515,9 +515,9 @@ def read_changes(path, known=None) -> list[Change]:
 
 
 def verify(claims_path, verdicts_path, run: str | None = "full", margin_min: float = 10.0,
-           differing: tuple[str, ...] = (), write=print) -> int:
-    """Print (through ``write``) the paper claims, the fragile verdicts, then every difference from the expected
-    verdicts; return the exit code.
+           differing: tuple[str, ...] = (), write=print, brief: bool = False) -> int:
+    """Print (through ``write``) the paper claims (``brief``: only those that fail), the fragile verdicts, then
+    every difference from the expected verdicts; return the exit code.
 
     Non-zero when a verdict differs from the expected one, when an expected claim is missing, or when
     a claim has no expected verdict. A check that abstained (a loaded machine) is listed, never a difference.
@@ -527,7 +527,7 @@ def verify(claims_path, verdicts_path, run: str | None = "full", margin_min: flo
     claims = read_claims(claims_path)
     write(summary_line(claims))
     for claim in claims:
-        if claim.kind == "paper":
+        if claim.kind == "paper" and not (brief and claim.status == "pass"):
             write(f"  {claim.status:4} {claim.id} ({claim.source}): published {claim.published}, "
                   f"measured {claim.measured}, margin {claim.margin or '-'}")
     for claim in claims:
@@ -668,6 +668,7 @@ def main(argv=None) -> int:
                                help="the configuration is none of the repository's runs: the keys in which it differs "
                                     "(nothing is compared)")
     verify_parser.add_argument("--report", help="also write what is printed to this file")
+    verify_parser.add_argument("--brief", action="store_true", help="list only the paper claims that fail")
     values_parser = sub.add_parser("values", help="record a claims table's measured values as the reference")
     values_parser.add_argument("path")
     values_parser.add_argument("--reference", required=True, help="YAML file of reference values")
@@ -687,7 +688,7 @@ def main(argv=None) -> int:
         lines.append(line)
 
     run = None if args.differs is not None else args.run
-    code = verify(args.path, args.expected, run, args.margin_min, tuple(args.differs or ()), write)
+    code = verify(args.path, args.expected, run, args.margin_min, tuple(args.differs or ()), write, args.brief)
     if args.report:
         Path(args.report).write_text("\n".join(lines) + "\n")
     return code

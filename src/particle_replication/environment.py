@@ -30,6 +30,28 @@ def versions() -> dict[str, str]:
     return found
 
 
+#: Vector extensions, widest first, by the flag /proc/cpuinfo gives them.
+VECTOR_FLAGS = (("avx512f", "AVX-512"), ("avx2", "AVX2"), ("avx", "AVX"), ("sse2", "SSE2"))
+
+
+def cpu() -> str:
+    """The CPU a timing was made on: its model, its widest vector extension and the cores this process may use,
+    e.g. "AMD EPYC (AVX-512, 2 cores)" (from /proc/cpuinfo; the platform's processor name elsewhere)."""
+    model, flags = platform.processor() or platform.machine() or "unknown CPU", set()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            key, _, value = line.partition(":")
+            if key.strip() == "model name" and value.strip():
+                model = value.strip()
+            elif key.strip() == "flags":
+                flags = set(value.split())
+    except OSError:
+        pass
+    width = next((name for flag, name in VECTOR_FLAGS if flag in flags), "")
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    return f"{model} ({width + ', ' if width else ''}{cores} cores)"
+
+
 def repository() -> Path:
     """The clone the run was made from: PARTICLE_METHODS_SOURCE (set by the Snakefile), else this package's."""
     return Path(os.environ.get("PARTICLE_METHODS_SOURCE", Path(__file__).resolve().parents[2]))
@@ -60,6 +82,7 @@ def markdown() -> str:
     state = commit()
     lines = ["# Software versions", "", f"Commit: {state['hash']}", "", f"Commit date: {state['date']}", "",
              f"Modified since the commit: {state['modified']}", "", f"Platform: {platform.platform()}", "",
+             f"CPU: {cpu()}", "",
              "| package | version |", "|---|---|"]
     lines += [f"| {name} | {version} |" for name, version in versions().items()]
     return "\n".join(lines) + "\n"

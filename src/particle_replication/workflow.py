@@ -5,6 +5,7 @@ from __future__ import annotations
 import ast
 import contextlib
 import functools
+import math
 import os
 import sys
 import time
@@ -51,23 +52,94 @@ def progress(message: str) -> None:
 
 #: Runs longer than this many seconds are timed once: a repeat would only cost budget. Below it the
 #: timer's resolution, an interrupt or a cache left cold by the previous run is a visible share of a run.
-#: (0.05 s was tried on 2026-12-02: the SPD's largest runs of section 5.2, 0.065 to 0.069 s, then timed
-#: once, moved sticky.beyond.cost.wall_time from 1.23-1.25 to 1.24-1.29 against its bound 1.25.)
 REPEAT_BELOW = 0.2
 
 
-def timed(function, repeats: int):
-    """(seconds, result) of ``function()``: the best of ``repeats`` runs for runs shorter than
-    :data:`REPEAT_BELOW`, else a single run."""
-    start = time.perf_counter()
-    result = function()
-    best = time.perf_counter() - start
-    if best < REPEAT_BELOW:
-        for _ in range(repeats - 1):
+def interleaved(runs, repeats: int, guard=None):
+    """(best seconds, results) of the callables ``runs``, timed in ``repeats`` rounds over all of them, so that a
+    passing disturbance of the machine hits every size alike rather than one; a run longer than
+    :data:`REPEAT_BELOW` is timed in the first round only. ``results`` are those of the first round;
+    ``guard`` (a :class:`LoadGuard`) samples the load before every run. Compile and warm the kernels first:
+    the first round is timed too."""
+    best, results = [math.inf] * len(runs), [None] * len(runs)
+    for round_ in range(repeats):
+        for i, run in enumerate(runs):
+            if round_ and best[i] >= REPEAT_BELOW:
+                continue
+            if guard is not None:
+                guard.sample()
             start = time.perf_counter()
-            result = function()
-            best = min(best, time.perf_counter() - start)
-    return best, result
+            result = run()
+            best[i] = min(best[i], time.perf_counter() - start)
+            if not round_:
+                results[i] = result
+    return best, results
+
+
+#: A single-threaded timed run that got less than this share of a core's time was slowed by another process.
+CPU_SHARE_MIN = 0.9
+
+
+class LoadGuard:
+    """Whether timed work had the machine to itself, measured while it runs (``with LoadGuard() as guard:``).
+
+    Two readings: the share of a core the process got (its CPU time over the wall time; a single-threaded
+    kernel with a core of its own gets all of it), and the processes the kernel shared the machine with,
+    sampled from the run queue (``/proc/loadavg``; the one-minute load average elsewhere) at every
+    :meth:`sample`. The timing is disturbed (:meth:`loaded`) when the share falls below :data:`CPU_SHARE_MIN`
+    (single-threaded work only: ``threads`` = 1) or the other runnable processes were at least the cores on
+    average, so that no core was free for the kernel. A wall-time check then abstains.
+    """
+
+    def __init__(self, threads: int = 1):
+        self.threads = threads
+        self.others: list[float] = []
+        self.cpu_share = math.nan
+        self.cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+
+    def sample(self) -> None:
+        """Read how many other processes are runnable now."""
+        try:
+            running = int(Path("/proc/loadavg").read_text().split()[3].split("/")[0]) - 1  # ourselves aside
+        except (OSError, IndexError, ValueError):
+            running = os.getloadavg()[0] - 1.0 if hasattr(os, "getloadavg") else 0.0
+        self.others.append(float(max(running, 0)))
+
+    def __enter__(self):
+        self.sample()
+        self._cpu, self._wall = time.process_time(), time.perf_counter()
+        return self
+
+    def __exit__(self, *exc):
+        wall = time.perf_counter() - self._wall
+        self.cpu_share = (time.process_time() - self._cpu) / wall if wall > 0 else math.nan
+        self.sample()
+        return False
+
+    @property
+    def load(self) -> float:
+        """The other runnable processes, on average over the samples."""
+        return float(np.mean(self.others)) if self.others else math.nan
+
+    def loaded(self) -> bool:
+        return bool(disturbance(self.readings()))
+
+    def readings(self) -> dict:
+        """The readings, to save beside the times: ``cpu_share``, ``load``, ``cores`` and ``threads``."""
+        return {"cpu_share": self.cpu_share, "load": self.load, "cores": self.cores, "threads": self.threads}
+
+
+def disturbance(readings) -> str:
+    """Why a timing was disturbed, or '' if it was not: the rule of :meth:`LoadGuard.loaded` applied to its
+    readings (a mapping with the keys of :meth:`LoadGuard.readings`, such as the result file they were saved in)."""
+    cpu_share, load = float(readings["cpu_share"]), float(readings["load"])
+    cores, threads = int(readings["cores"]), int(readings["threads"])
+    reasons = []
+    if threads == 1 and not cpu_share >= CPU_SHARE_MIN:
+        reasons.append(f"the timed kernels got {cpu_share:.2f} of a core (at least {CPU_SHARE_MIN:g} alone)")
+    if not load < cores:
+        reasons.append(f"{load:.2g} other processes were runnable on average, on {cores} cores")
+    return " and ".join(reasons)
 
 
 def save_results(path, **arrays) -> None:

@@ -151,6 +151,25 @@ def test_a_particle_at_zero_is_on_neither_side():
     np.testing.assert_allclose(masses, [0.25, 0.25])  # the middle half of the mass is counted on neither side
 
 
+@pytest.mark.parametrize("middle", [0.0, 1e-17, -1e-17, 7e-16, -7e-16])
+def test_a_particle_within_rounding_of_zero_is_on_neither_side(middle):
+    """The particle at 0 of a symmetric run drifts by rounding to either side: the sides' widths must not
+    depend on where (with it on a side, the width holding 0.9 of that side's mass would change)."""
+    centres = np.array([-0.6, -0.5, -0.4, middle, 0.4, 0.5, 0.6])
+    weights = np.array([0.1, 0.2, 0.1, 0.2, 0.1, 0.2, 0.1])
+    widths, masses = side_concentration(centres, weights, np.ones(7), 0.9, 0.05)
+    reference = side_concentration(np.delete(centres, 3), np.delete(weights, 3), np.ones(6), 0.9, 0.05)
+    np.testing.assert_array_equal(widths, reference[0])
+    np.testing.assert_allclose(masses, reference[1] * 0.8)  # the same side masses, of a total that includes it
+
+
+def test_a_particle_beyond_rounding_of_zero_is_on_its_side():
+    centres = np.array([-0.6, -0.5, -0.4, 1e-6, 0.4, 0.5, 0.6])
+    weights = np.array([0.1, 0.2, 0.1, 0.2, 0.1, 0.2, 0.1])
+    widths, _ = side_concentration(centres, weights, np.ones(7), 0.9, 0.05)
+    assert widths[0] == pytest.approx(0.2) and widths[1] > 0.3
+
+
 def test_side_concentration_picks_the_densest_particle_of_each_side():
     centres = np.array([-0.9, -0.2, 0.3, 0.8])
     weights = np.full(4, 0.25)

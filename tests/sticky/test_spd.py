@@ -118,13 +118,19 @@ def test_bad_flux_and_n():
         velocities_from_flux(lambda u: np.where(u > 0.5, np.nan, u), 4)
 
 
-def test_the_hull_counts_n_pushes_and_one_merge_per_particle_absorbed():
+def test_the_hull_counts_its_pushes_writes_tests_and_pops():
+    """n pushes and n writes, a pop per merge (n - clusters of them), and a test before every merge and one that
+    stops merging unless the stack emptied (at least once: the first particle): 3n + 2m - e, 1 <= e <= n - m."""
     rng = np.random.default_rng(3)
-    x, v = np.sort(rng.uniform(size=500)), rng.normal(size=500)
+    n = 500
+    x, v = np.sort(rng.uniform(size=n)), rng.normal(size=n)
     positions, operations = spd_positions(x, v, 0.7, return_operations=True)
-    assert operations == 2 * 500 - cluster_sizes(positions).size
+    merges = n - cluster_sizes(positions).size
+    assert merges > 0 and 3 * n + 2 * merges - (n - merges) <= operations <= 3 * n + 2 * merges - 1
     assert np.array_equal(positions, spd_positions(x, v, 0.7))
     _, free = spd_positions(x, np.sort(v), 0.7, return_operations=True)  # increasing velocities: no collision
-    assert free == 500
+    assert free == 3 * n - 1
+    _, one = spd_positions(x, -np.sort(v) * 1e3, 0.7, return_operations=True)  # every particle merges at once
+    assert one == 3 * n + 2 * (n - 1) - n
     with pytest.raises(TypeError, match="return_operations"):
         spd_positions(x, v, 0.7, return_operations=1)

@@ -32,13 +32,15 @@ Z_LIMIT = _EXP_LIMIT**0.5
 
 
 def _table():
-    """Monomial coefficients in t in [-1, 1] of erfcx on each interval, constant term first."""
+    """Monomial coefficients in t in [-1, 1] of erfcx on each interval, constant term first (``cheb2poly`` drops
+    trailing zero coefficients, which another BLAS's least squares can leave on an interval: they are put back)."""
     nodes = chebyshev.chebpts1(2 * (_DEGREE + 1))
-    rows = []
+    rows = np.zeros((_INTERVALS, _DEGREE + 1))
     for k in range(_INTERVALS):
         z = _WIDTH * (k + 0.5 * (nodes + 1.0))
-        rows.append(chebyshev.cheb2poly(chebyshev.chebfit(nodes, erfcx(z), _DEGREE)))
-    return np.array(rows)
+        monomial = chebyshev.cheb2poly(chebyshev.chebfit(nodes, erfcx(z), _DEGREE))
+        rows[k, : monomial.size] = monomial
+    return rows
 
 
 _COEFFICIENTS = _table()

@@ -35,7 +35,7 @@ from ..systems import (
     speed_primitives_into,
 )
 from ..validation import ParameterTypeError, instance, integer_at_least, positive, real_array, sorted_array
-from .spd import LARGEST, MAX_POSITIONS, check_reach, hull_operations, hull_positions_kernel
+from .spd import LARGEST, MAX_POSITIONS, check_reach, hull_positions_kernel
 
 #: Largest number of steps L one call accepts: besides its particles a step costs about 0.1 ms on the Python
 #: path (calls of the system; a PSystem's compiled steps about 10 us), so 10**6 steps take at most one to two
@@ -52,8 +52,10 @@ MAX_WORK = 4 * 10**9
 def ranks_kernel(x):
     """Merge of the d sorted rows, pseudo-code of section 5.2.1, in O(n d^2).
 
-    Returns counts[gamma, k, g]: the number of particles of type g placed before
-    particle gamma:k (own type included, so counts[gamma, k, gamma] = k + 1).
+    Returns (counts, operations): counts[gamma, k, g] is the number of particles of type g placed
+    before particle gamma:k (own type included, so counts[gamma, k, gamma] = k + 1); operations
+    counts, where they are made, the heads of the rows examined to choose each next particle and the
+    rank entries written (section 5.2.1's O(n d^2) is a statement about them).
     Among particles at the same place the highest type is taken first, the
     post-collisional order imposed by (USH): strict inequality towards lower
     types, non-strict towards higher ones, as in (1.8).
@@ -61,16 +63,19 @@ def ranks_kernel(x):
     d, n = x.shape
     counts = np.empty((d, n, d), dtype=np.int64)
     current = np.zeros(d, dtype=np.int64)
+    operations = 0
     for _ in range(d * n):
         chosen = -1
         for g in range(d):
+            operations += 1  # a row's head examined
             if current[g] < n and (chosen < 0 or x[g, current[g]] <= x[chosen, current[chosen]]):
                 chosen = g
         k = current[chosen]
         current[chosen] = k + 1
         for g in range(d):
             counts[chosen, k, g] = current[g]
-    return counts
+            operations += 1  # a rank entry written
+    return counts, operations
 
 
 class ScalarLaw:
@@ -137,10 +142,12 @@ def _primitive(system):
     return lambda gamma, levels: checked_primitive(system, gamma, levels)
 
 
-def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
-    """Velocities (1.8) and their largest magnitude, after checking that they are finite."""
+def _checked_velocities(x, system) -> tuple[np.ndarray, float, int]:
+    """Velocities (1.8), their largest magnitude (after checking that they are finite) and the operations of the
+    ranks (:func:`ranks_kernel`)."""
     d, n = x.shape
-    levels = ranks_kernel(x) / n
+    counts, operations = ranks_kernel(x)
+    levels = counts / n
     velocities = np.empty((d, n))
     primitive = _primitive(system)
     for gamma in range(d):
@@ -152,18 +159,16 @@ def _checked_velocities(x, system) -> tuple[np.ndarray, float]:
     if not math.isfinite(speed):
         raise ValueError("the velocities (1.8) are not finite: system.speed_primitive returned non-finite values, "
                          "or values whose differences overflow")
-    return velocities, speed
+    return velocities, speed, operations
 
 
 def _tspd_step(x, system, delta, out) -> int:
-    """One TSPD step from ``x`` into ``out``; returns its operations: the d^2 n rank entries of
-    :func:`ranks_kernel` and the stack operations of the d hull passes (:func:`.spd.hull_operations`)."""
-    velocities, speed = _checked_velocities(x, system)
+    """One TSPD step from ``x`` into ``out``; returns its operations, as the kernels count them: those of the
+    ranks (:func:`ranks_kernel`) and of the d hull passes (:func:`.spd.hull_positions_kernel`)."""
+    velocities, speed, operations = _checked_velocities(x, system)
     check_reach(x, speed, delta, "Delta", "velocities")
-    d, n = x.shape
-    operations = d * d * n
-    for gamma in range(d):
-        operations += hull_operations(n, hull_positions_kernel(x[gamma], velocities[gamma], delta, out[gamma]))
+    for gamma in range(x.shape[0]):
+        operations += hull_positions_kernel(x[gamma], velocities[gamma], delta, out[gamma])[1]
     return operations
 
 
@@ -187,7 +192,8 @@ def _tspd_psystem_kernel(x, out, delta, steps, a, coefficient, spreads, primitiv
     current, following = x, out
     operations = 0
     for step in range(steps):
-        counts = ranks_kernel(current)
+        counts, ranked = ranks_kernel(current)
+        operations += ranked
         for gamma in range(d):
             for k in range(n):
                 plus, minus = counts[gamma, k, PLUS] / n, counts[gamma, k, MINUS] / n
@@ -213,10 +219,8 @@ def _tspd_psystem_kernel(x, out, delta, steps, a, coefficient, spreads, primitiv
         if not reach <= limit:
             report[0], report[1] = step, reach
             return _TOO_FAR
-        operations += d * d * n
         for gamma in range(d):
-            clusters = hull_positions_kernel(current[gamma], velocities[gamma], delta, following[gamma])
-            operations += 2 * n - clusters
+            operations += hull_positions_kernel(current[gamma], velocities[gamma], delta, following[gamma])[1]
         current, following = following, current
     report[0], report[1] = operations, 0.0 if steps % 2 == 0 else 1.0
     return _DONE

@@ -549,7 +549,7 @@ def mspd_exact(x0, system, times, return_events: bool = False):
                          "(called at each crossing; a PSystem runs compiled up to MAX_EVENTS)")
     instance("return_events", return_events, (bool, np.bool_))
     last = float(times[-1])
-    ranks = ranks_kernel(x0)
+    ranks = ranks_kernel(x0)[0]
     lam = _initial_speeds(system, ranks)
     # Every velocity (1.8) of the p-system is an average of lambda^gamma, at most A = speed_scale in
     # magnitude; the rounding of n (P((k+1)/n) - P(k/n)) adds about 8 n eps |P| with |P| <= A

@@ -58,41 +58,54 @@ LARGEST = float(np.finfo(np.float64).max)
 
 @njit
 def hull_positions_kernel(x, v, t, out):
-    """Positions at time t of the SPD, written to ``out``; returns the number of clusters.
+    """Positions at time t of the SPD, written to ``out``; returns (the number of clusters, the operations
+    made).
 
     The stack of hull segments lives in place: segment j keeps its sum of free
     positions in ``out[j]`` (there are never more segments than particles seen)
     and its particle count in ``counts[j]``; the segment being built stays in
     registers. The final pass runs backwards so that each segment's sum is read
     before its particles' slots are overwritten.
+
+    The operations are counted where they are made (section 5.1.1's O(n) is a statement about them): every
+    test of the merge condition against a segment on the stack, every merge (a pop), every push, and every
+    position written by the final pass.
     """
     n = x.size
     counts = np.empty(n, dtype=np.int32)
     top = -1
+    operations = 0
     for k in range(n):
         total = x[k] + t * v[k]
         count = 1
         # Merge while the previous segment is steeper than the new one (a concave corner).
-        while top >= 0 and out[top] * count > total * counts[top]:
+        while top >= 0:
+            operations += 1  # a test
+            if not out[top] * count > total * counts[top]:
+                break
             total += out[top]
             count += counts[top]
             top -= 1
+            operations += 1  # a pop
         top += 1
         out[top] = total
         counts[top] = count
+        operations += 1  # a push
     end = n
     for segment in range(top, -1, -1):
         start = end - counts[segment]
         position = out[segment] / counts[segment]
         for k in range(start, end):
             out[k] = position
+            operations += 1  # a position written
         end = start
-    return top + 1
+    return top + 1, operations
 
 
 @njit
 def _weighted_hull_positions(x, v, masses, t, out):
-    """Positions at time t of the SPD of particles with ``masses``, written to ``out``; returns the number of clusters.
+    """Positions at time t of the SPD of particles with ``masses``, written to ``out``; returns (the number of
+    clusters, the operations made), counted as in :func:`hull_positions_kernel`.
 
     The hull of :func:`hull_positions_kernel` with the abscissae k/n replaced by the cumulative
     masses (section 5.1.1 for masses m_k instead of 1/n): segment j keeps its sum of m_k (x_k + t v_k)
@@ -111,27 +124,34 @@ def _weighted_hull_positions(x, v, masses, t, out):
     weights = np.empty(n)
     counts = np.empty(n, dtype=np.int32)
     top = -1
+    operations = 0
     for k in range(n):
         mass = masses[k]
         total = mass * (x[k] + t * v[k])
         count = 1
-        while top >= 0 and out[top] * mass > total * weights[top]:
+        while top >= 0:
+            operations += 1  # a test
+            if not out[top] * mass > total * weights[top]:
+                break
             total += out[top]
             mass += weights[top]
             count += counts[top]
             top -= 1
+            operations += 1  # a pop
         top += 1
         out[top] = total
         weights[top] = mass
         counts[top] = count
+        operations += 1  # a push
     end = n
     for segment in range(top, -1, -1):
         start = end - counts[segment]
         position = out[segment] / weights[segment]
         for k in range(start, end):
             out[k] = position
+            operations += 1  # a position written
         end = start
-    return top + 1
+    return top + 1, operations
 
 
 def checked_state(x, v):
@@ -186,17 +206,11 @@ def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: 
         )
 
 
-def _hull(x, v, masses, t: float, out) -> int:
-    """The equal-mass kernel for ``masses=None``, else the weighted one; returns the number of clusters."""
+def _hull(x, v, masses, t: float, out) -> tuple[int, int]:
+    """The equal-mass kernel for ``masses=None``, else the weighted one; returns (clusters, operations)."""
     if masses is None:
         return hull_positions_kernel(x, v, t, out)
     return _weighted_hull_positions(x, v, masses, t, out)
-
-
-def hull_operations(n: int, clusters: int) -> int:
-    """Stack operations of one hull pass over n particles that ends with ``clusters`` segments: n
-    pushes and n - clusters merges (each merge pops one segment), counted from what the pass returns."""
-    return 2 * n - clusters
 
 
 def spd_positions(x, v, t: float, masses=None, return_operations: bool = False):
@@ -209,7 +223,8 @@ def spd_positions(x, v, t: float, masses=None, return_operations: bool = False):
     t : time, t >= 0.
     masses : positive masses, one per particle, any total; None for equal masses 1/n. At most
         :data:`MAX_MASS_RATIO` between the largest and the smallest.
-    return_operations : also return the stack operations the hull pass made (:func:`hull_operations`).
+    return_operations : also return the operations the hull pass made (counted by the kernel:
+        :func:`hull_positions_kernel`).
     """
     x, v = checked_state(x, v)
     t = nonnegative("t", t)
@@ -217,8 +232,8 @@ def spd_positions(x, v, t: float, masses=None, return_operations: bool = False):
     return_operations = instance("return_operations", return_operations, (bool, np.bool_))
     check_reach(x, np.abs(v).max(), t, masses=masses)
     out = np.empty_like(x)
-    clusters = _hull(x, v, masses, t, out)
-    return (out, hull_operations(x.size, clusters)) if return_operations else out
+    _, operations = _hull(x, v, masses, t, out)
+    return (out, operations) if return_operations else out
 
 
 def spd_trajectories(x, v, times, masses=None) -> np.ndarray:

@@ -43,7 +43,7 @@ RESULTS = (
     Result(
         "results/cross/study.npz",
         "study_data.py",
-        (*STUDY_KEYS, "seconds"),
+        (*STUDY_KEYS, "seconds", "cpu", "cpu_share", "load", "cores", "threads"),
         Job(
             "the same runs timed after JIT warm-up (alone on the cores), merged with the errors",
             lambda s: {"cfg": s, "part": "times"},
