@@ -142,6 +142,7 @@ SNIPPETS = expand(
         "rates",
         "summary",
         "versions",
+        "fragile",
     ],
 )
 LATEX = all(shutil.which(tool) for tool in ("latexmk", "pdflatex"))

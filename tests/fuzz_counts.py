@@ -11,8 +11,9 @@ extreme number. Every call is classified:
 - ``answered``: a finite result;
 - ``silent non-finite``: a result holding NaN or inf;
 - ``other exception``: anything else (IndexError, ZeroDivisionError, MemoryError, ...);
-- ``hang``: longer than :data:`CALL_SECONDS` (an alarm interrupts Python code; the compiled loops are bounded by
-  the entry points' work limits).
+- ``hang``: more than :data:`CALL_SECONDS` of CPU time (a profiling timer, which counts the process's CPU time
+  and not the wall clock, so that a call slowed by a loaded machine is no hang, interrupts Python code; the
+  compiled loops are bounded by the entry points' work limits).
 
 The test suite's fuzz tests (tests/*/test_*_safety.py, :mod:`fuzzing`) assert the same properties; this script
 counts them, for a closing note's before-and-after table.
@@ -108,8 +109,8 @@ def _alarm(signum, frame):
 
 
 def classify(function, arguments, parameter, value) -> str:
-    signal.signal(signal.SIGALRM, _alarm)
-    signal.alarm(CALL_SECONDS)
+    signal.signal(signal.SIGPROF, _alarm)
+    signal.setitimer(signal.ITIMER_PROF, CALL_SECONDS)
     try:
         result = function(*arguments)
     except _Hang:
@@ -122,7 +123,7 @@ def classify(function, arguments, parameter, value) -> str:
     except BaseException:
         return "other exception"
     finally:
-        signal.alarm(0)
+        signal.setitimer(signal.ITIMER_PROF, 0)
     return "answered" if all_finite(result) else "silent non-finite"
 
 

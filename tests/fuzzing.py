@@ -3,14 +3,18 @@
 Every public entry point is called with values drawn from :data:`BAD` and with well-formed but
 extreme values. A call must return finite results or raise ``ValueError`` or ``TypeError``
 naming the parameter; anything else (another exception, NaN or inf returned, a hang) fails.
-Each call runs under a watchdog: a call that does not return within ``CALL_SECONDS`` ends the
-test process with a traceback (compiled loops cannot be interrupted any other way).
+Each call runs under a watchdog that measures the call's CPU time, not the wall clock, so that a
+call that is only slow because the machine is loaded is no hang: a call that spends more than
+``CALL_SECONDS`` of CPU fails its test, and one that does not return within ``WALL_BACKSTOP``
+seconds (a true hang: an endless loop, a deadlock) ends the test process with a traceback
+(compiled loops cannot be interrupted any other way).
 """
 
 from __future__ import annotations
 
 import faulthandler
 import os
+import time
 from contextlib import contextmanager
 
 import numpy as np
@@ -20,6 +24,8 @@ from hypothesis import strategies as st
 from particle_methods.validation import ParameterTypeError
 
 CALL_SECONDS = 20.0
+#: Wall-clock seconds after which a call is taken for hung whatever the load: ten times CALL_SECONDS.
+WALL_BACKSTOP = 10 * CALL_SECONDS
 
 FUZZ = settings(
     max_examples=40,
@@ -40,13 +46,17 @@ extreme = st.sampled_from([0.0, -0.0, 5e-324, 1e-300, -1e-300, 1e300, -1e300, 1.
 
 
 @contextmanager
-def watchdog(seconds: float = CALL_SECONDS):
-    """End the process with a traceback if the block runs longer than ``seconds``."""
-    faulthandler.dump_traceback_later(seconds, exit=True)
+def watchdog(seconds: float = CALL_SECONDS, backstop: float = WALL_BACKSTOP):
+    """Fail if the block spends more than ``seconds`` of CPU time (the process's, every thread's); end the
+    process with a traceback if it runs longer than ``backstop`` seconds of wall time."""
+    faulthandler.dump_traceback_later(backstop, exit=True)
+    start = time.process_time()
     try:
         yield
     finally:
         faulthandler.cancel_dump_traceback_later()
+    spent = time.process_time() - start
+    assert spent <= seconds, f"the call spent {spent:.1f} s of CPU, more than {seconds:g} s"
 
 
 def all_finite(value) -> bool:

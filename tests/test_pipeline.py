@@ -19,6 +19,8 @@ QUICK = ROOT / "config" / "quick.yaml"
 EXPECTED_FIGURES = registry.figure_outputs()
 # Every claim of the quick run, with its expected verdict (`snakemake verify` checks them).
 EXPECTED_VERDICTS = read_verdicts(ROOT / "config" / "verdicts.yaml", "quick")
+# The smallest margin that is not fragile, also the factor of a value's spread that its pin allows.
+CONFIG_MARGIN = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["robustness"]["margin_min"]
 # Claims whose measured values are timings, different on every run.
 TIMED = ("sticky.cost.", "sticky.beyond.ratio.", "sticky.beyond.cost.wall_time", "cross.fastest")
 
@@ -123,16 +125,42 @@ def test_every_notebook_runs_on_the_quick_results(workdir):
 
 
 def test_measured_values_match_the_last_build(workdir):
-    """Every claim's measured value within 1e-9 (relative) of the reference recorded from the last build
-    (config/values-quick.yaml): an optimisation that changes results beyond rounding fails here."""
-    from particle_replication.claims import read_claims, value_differences
+    """Every claim's measured value within its tolerance of the reference recorded from the last build
+    (config/values-quick.yaml): 1e-9 (relative), or ten times the value's spread over the robustness run's
+    variants (config/spreads.yaml) where rounding, threads or another CPU move it more. An optimisation that
+    changes results beyond that fails here."""
+    from particle_replication.claims import read_claims, read_spreads, value_differences
 
-    problems = value_differences(read_claims(workdir / "results/claims.csv"), ROOT / "config" / "values-quick.yaml")
+    spreads = read_spreads(ROOT / "config" / "spreads.yaml", "quick")
+    problems = value_differences(read_claims(workdir / "results/claims.csv"), ROOT / "config" / "values-quick.yaml",
+                                 spreads=spreads, factor=CONFIG_MARGIN)
+    assert not problems, "\n".join(problems)
+
+
+def test_another_machine_gives_the_same_verdicts(workdir):
+    """The quick run's claims under the robustness run's `combined` variant, as another machine would compute
+    them: one thread, OpenBLAS's AVX2 kernels, NumPy's dispatch without AVX-512, numba's code for an AVX2 CPU
+    and every initial datum nudged by a few ulps, at once (config.yaml, robustness.variants). Every verdict must
+    be this run's, and every value within its pin's tolerance."""
+    from particle_replication.claims import read_claims, read_spreads, value_differences
+    from particle_replication.robustness import compare
+
+    result = snakemake(workdir, "--", "robustness/combined/results/claims.csv")
+    assert result.returncode == 0, (result.stdout + result.stderr)[-3000:]
+    effective = yaml.safe_load((workdir / "robustness/combined/environment.json").read_text())["effective"]
+    assert effective["numba_threads"] == 1 and effective["numba_cpu"] == "haswell", effective
+    baseline = read_claims(workdir / "results/claims.csv")
+    variant = read_claims(workdir / "robustness/combined/results/claims.csv")
+    assert not compare(baseline, {"combined": variant})
+    spreads = read_spreads(ROOT / "config" / "spreads.yaml", "quick")
+    problems = value_differences(variant, ROOT / "config" / "values-quick.yaml", spreads=spreads, factor=CONFIG_MARGIN)
     assert not problems, "\n".join(problems)
 
 
 def test_value_comparison_sees_a_moved_value(tmp_path):
-    from particle_replication.claims import Claim, value_differences
+    import dataclasses
+
+    from particle_replication.claims import Claim, Spread, value_differences
 
     reference = tmp_path / "values.yaml"
     reference.write_text("exempt: {demo.time: wall clock}\nvalues: {demo.order: '3.6', demo.gone: '1.0'}\n")
@@ -141,6 +169,11 @@ def test_value_comparison_sees_a_moved_value(tmp_path):
     problems = value_differences([claim, timing], reference)
     assert any(p.startswith("MOVED demo.order") for p in problems) and "MISSING demo.gone" in problems
     assert not any("demo.time" in p for p in problems)
+    # a value that the variants move by 1e-7 is pinned to ten times that, and no closer
+    spreads = {"demo.order": Spread(distance=1e-7, value=1e-7)}
+    assert not any("demo.order" in p for p in value_differences([claim], reference, spreads=spreads))
+    moved = dataclasses.replace(claim, value="3.600002")
+    assert any(p.startswith("MOVED demo.order") for p in value_differences([moved], reference, spreads=spreads))
 
 
 def test_claims_table_and_summary(workdir):

@@ -315,10 +315,13 @@ def summary_line(claims) -> str:
 
 class Spread(NamedTuple):
     """What the robustness run measured of a claim over its variants: the spread (largest minus smallest) of its
-    signed distance from the threshold and of its measured value (:mod:`particle_replication.robustness`)."""
+    signed distance from the threshold and of its measured value, and its smallest margin over them (the
+    distance in units of that spread; inf where the spread is 0) (:mod:`particle_replication.robustness`)."""
 
     distance: float
     value: float
+    margin: float = math.inf
+    kind: str = "paper"
 
 
 def read_spreads(path, run: str) -> dict[str, Spread]:
@@ -333,10 +336,11 @@ def read_spreads(path, run: str) -> dict[str, Spread]:
     for i, entry in section.items():
         if not isinstance(entry, dict) or set(entry) != set(Spread._fields):
             raise ValueError(f"{path} [{run}]: the spread of {i} needs exactly the keys {list(Spread._fields)}")
-        values = [float(entry[key]) for key in Spread._fields]
-        if any(math.isnan(v) or v < 0 for v in values):
-            raise ValueError(f"{path} [{run}]: the spreads of {i} must be non-negative numbers, got {entry}")
-        spreads[i] = Spread(*values)
+        values = [float(entry[key]) for key in Spread._fields[:3]]
+        if any(not v >= 0 for v in values) or entry["kind"] not in KINDS:
+            raise ValueError(f"{path} [{run}]: the spreads of {i} must be non-negative numbers and its kind one of "
+                             f"{', '.join(KINDS)}, got {entry}")
+        spreads[i] = Spread(*values, entry["kind"])
     return spreads
 
 
@@ -625,10 +629,14 @@ def write_values(claims_path, path) -> None:
     Path(path).write_text(yaml.safe_dump({"exempt": exempt, "values": values}, sort_keys=False, width=120))
 
 
-def value_differences(claims, reference_path, relative: float = 1e-9) -> list[str]:
-    """Every claim whose measured value moved by more than ``relative`` (relative to the reference), or
-    that is new or missing; exempt claims are skipped."""
+def value_differences(claims, reference_path, relative: float = 1e-9, spreads=None,
+                      factor: float = 10.0) -> list[str]:
+    """Every claim whose measured value moved by more than its tolerance from the reference, or that is new or
+    missing; exempt claims are skipped. The tolerance is ``relative`` times the reference value, or ``factor``
+    times the value's spread over the robustness run's variants where that is larger (``spreads``: claim id ->
+    :class:`Spread`): a value that rounding, threads or another CPU move is pinned as far as they move it."""
     values, exempt = read_values(reference_path)
+    spreads = spreads or {}
     problems = []
     present = set()
     for claim in claims:
@@ -639,9 +647,11 @@ def value_differences(claims, reference_path, relative: float = 1e-9) -> list[st
             problems.append(f"NEW {claim.id}: no reference value in {reference_path}")
             continue
         new, old = float(claim.value), values[claim.id]
-        same = new == old or (math.isfinite(new) and abs(new - old) <= relative * abs(old))
+        spread = spreads[claim.id].value if claim.id in spreads else 0.0
+        tolerance = max(relative * abs(old), factor * spread)
+        same = new == old or (math.isfinite(new) and abs(new - old) <= tolerance)
         if not same:
-            problems.append(f"MOVED {claim.id}: {old!r} -> {new!r}")
+            problems.append(f"MOVED {claim.id}: {old!r} -> {new!r} (tolerance {tolerance:.3g})")
     problems += [f"MISSING {i}" for i in values if i not in present and i not in exempt]
     return problems
 

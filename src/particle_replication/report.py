@@ -3,8 +3,10 @@
 ``write_snippets(claims, rates, versions, config, outdir, expected)`` writes:
 
 - ``claims_<paper>.tex``: each paper's claims table (a longtable);
-- ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}``, ``\\tol{<claim id>}`` and
-  ``\\status{<claim id>}`` for any claim;
+- ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}``, ``\\tol{<claim id>}``,
+  ``\\status{<claim id>}`` and ``\\margin{<claim id>}`` (in units of its spread over the robustness run's
+  variants) for any claim;
+- ``fragile.tex``: the verdicts within ``margin_min`` spreads of their threshold, or the statement that none is;
 - ``failures.tex``: the failing claims of every paper in one table, with the cause and reason of each
   (from the expected verdicts, :data:`particle_replication.claims.CAUSES`);
 - ``changes.tex``: the rules changed after a run in which they failed, with the failing values
@@ -36,6 +38,7 @@ from .claims import (
     KINDS,
     cause_counts,
     failures_with_causes,
+    fragile,
     read_changes,
     read_claims,
     read_verdicts,
@@ -52,7 +55,7 @@ _CLAIM_TABLE_HEAD = (
     "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{3.3cm}>{\\raggedright\\scriptsize}p{1.6cm}"
     ">{\\raggedright}p{5.0cm}>{\\raggedright}p{1.35cm}>{\\raggedright}p{1.4cm}>{\\raggedright}p{1.25cm}"
     ">{\\raggedright\\arraybackslash}p{1.1cm}@{}}\n"
-    "\\toprule id & kind, source & claim & published & measured & tolerance & status \\\\ \\midrule \\endhead\n"
+    "\\toprule id & kind, source & claim & published & measured & tolerance & status, margin \\\\ \\midrule \\endhead\n"
     "\\bottomrule \\endlastfoot\n"
 )
 _FAILURE_TABLE_HEAD = (
@@ -119,11 +122,14 @@ def _breakable(identifier: str) -> str:
 
 
 def _claims_table(claims) -> str:
-    """A longtable of claims: id, figure, statement, published, measured, tolerance, status (with, for a claim
-    decided on a fitted slope, on how many windows of resolutions the verdict is the same)."""
+    """A longtable of claims: id, figure, statement, published, measured, tolerance, status with its margin (in
+    spreads; and, for a claim decided on a fitted slope, on how many windows of resolutions the verdict is the
+    same)."""
     rows = []
     for claim in claims:
-        status = r"\textbf{fail}" if claim.status == "fail" else "pass"
+        status = {"fail": r"\textbf{fail}", "abstain": "abstains"}.get(claim.status, claim.status)
+        if claim.margin not in ("", "-"):
+            status += f"\\newline{{\\scriptsize margin {cell(claim.margin)}}}"
         if claim.windows:
             status += f"\\newline{{\\scriptsize same on {claim.windows}}}"
         cells = [f"\\texttt{{{_breakable(claim.id)}}}", f"\\textit{{{claim.kind}}}: {tex(claim.source)}",
@@ -198,11 +204,28 @@ def _rate_table(rate) -> str:
             + "\\bottomrule\\end{tabular}}\\par\\medskip\n")
 
 
+def _fragile_table(claims, margin_min: float) -> str:
+    """The fragile verdicts (:func:`particle_replication.claims.fragile`) as a table, or why none is listed."""
+    if all(claim.margin in ("", "-") for claim in claims):
+        return "No spreads are recorded for this run's configuration, so no margin is known.\n"
+    rows = fragile(claims, margin_min)
+    if not rows:
+        return f"No verdict lies within {number(margin_min)} spreads of its threshold.\n"
+    head = ("\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{6.2cm}>{\\raggedright}p{1.6cm}>{\\raggedright}p{1.6cm}"
+            ">{\\raggedright\\arraybackslash}p{2.4cm}@{}}\n"
+            "\\toprule id & kind & verdict & margin (spreads) \\\\ \\midrule \\endhead\n\\bottomrule \\endlastfoot\n")
+    lines = [" & ".join([f"\\texttt{{{_breakable(claim.id)}}}", tex(claim.kind), claim.status, cell(claim.margin)])
+             + " \\\\\n" for claim in rows]
+    return head + "".join(lines) + "\\end{longtable}\n"
+
+
 def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected, changes) -> None:
     """Write every snippet to ``outdir``; ``config`` is the run's configuration (dict or YAML path),
     ``expected`` its expected verdicts (:func:`particle_replication.claims.read_verdicts`), which give
     the failures their causes, and ``changes`` the rules changed after a failing run
     (:func:`particle_replication.claims.read_changes`)."""
+    if not isinstance(config, dict):
+        config = yaml.safe_load(Path(config).read_text())
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     claims = read_claims(claims_csv)
@@ -213,6 +236,7 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
         measured.append(_define("published", claim.id, cell(claim.published)))
         measured.append(_define("tolerance", claim.id, cell(claim.tolerance)))
         measured.append(_define("status", claim.id, claim.status))
+        measured.append(_define("margin", claim.id, cell(claim.margin or "-")))
     (outdir / "measured.tex").write_text("".join(measured))
     summary = []
     for paper in [*papers, "all"]:
@@ -230,23 +254,26 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
                                         "Every verdict decided on a fitted slope is the same on every window.\n")
     summary.append(_define("claimcount", "windows.fitted", str(sum(bool(claim.windows) for claim in claims))))
     summary.append(_define("claimcount", "windows.dependent", str(len(dependent))))
+    margin_min = config["robustness"]["margin_min"]
+    (outdir / "fragile.tex").write_text(_fragile_table(claims, margin_min))
+    summary.append(_define("claimcount", "fragile", str(len(fragile(claims, margin_min)))))
+    summary.append(_define("claimcount", "abstained", str(sum(claim.status == "abstain" for claim in claims))))
     tally = cause_counts({claim.id: verdict for claim, verdict in failures})
     summary += [_define("claimcount", f"cause.{cause}", str(count)) for cause, count in tally.items()]
     (outdir / "summary.tex").write_text("".join(summary))
     (outdir / "rates.tex").write_text("".join(_rate_table(rate) for rate in read_rates(rates_json)))
-    if not isinstance(config, dict):
-        config = yaml.safe_load(Path(config).read_text())
     parameters = list(_flatten(config))
     (outdir / "parameters.tex").write_text("".join(_define("param", key, cell(text)) for key, text in parameters))
     (outdir / "configuration.tex").write_text("".join(
         f"\\noindent\\texttt{{{_breakable(key)}}} = {cell(text)}\\par\n" for key, text in parameters))
     lines = Path(versions_md).read_text().splitlines()
-    fields = dict(line.split(": ", 1) for line in lines if line.startswith(("Commit", "Modified")))
+    fields = dict(line.split(": ", 1) for line in lines if line.startswith(("Commit", "Modified", "CPU")))
     modified = " (with uncommitted changes)" if fields.get("Modified since the commit") == "yes" else ""
     hash_, date = fields.get("Commit", "unknown"), fields.get("Commit date", "unknown")[:10]
     built = (f"Built from commit \\texttt{{{tex(hash_)}}}{modified} of {tex(date)}" if hash_ != "unknown"
              else "Built outside a git clone (commit unknown)")
-    (outdir / "commit.tex").write_text(f"\\newcommand{{\\builtfrom}}{{{built}}}\n")
+    (outdir / "commit.tex").write_text(f"\\newcommand{{\\builtfrom}}{{{built}}}\n"
+                                       f"\\newcommand{{\\builton}}{{{tex(fields.get('CPU', 'an unrecorded CPU'))}}}\n")
     rows = [line for line in lines if re.match(r"\| [^-]", line)][1:]
     table = "".join(f"{tex(cells[1].strip())} & {tex(cells[2].strip())} \\\\\n"
                     for cells in (row.split("|") for row in rows))

@@ -144,11 +144,17 @@ def _spread(values) -> float:
 
 def spreads(tables: dict) -> dict[str, Spread]:
     """Claim id -> :class:`Spread` of its signed distance and of its measured value over the tables
-    (name -> claims), for the claims present in every table."""
+    (name -> claims), for the claims present in every table (a check that abstained in a table is left out
+    of its spread there, as it is of the comparison)."""
     ids = set.intersection(*({claim.id for claim in claims} for claims in tables.values()))
     rows = {name: {claim.id: claim for claim in claims} for name, claims in tables.items()}
-    return {i: Spread(_spread(_float(rows[name][i].distance) for name in rows),
-                      _spread(_float(rows[name][i].value) for name in rows)) for i in sorted(ids)}
+    out = {}
+    for i in sorted(ids):
+        decided = [rows[name][i] for name in rows if rows[name][i].status != "abstain"] or [rows[next(iter(rows))][i]]
+        distance = _spread(_float(claim.distance) for claim in decided)
+        out[i] = Spread(distance, _spread(_float(claim.value) for claim in decided),
+                        min(_margin(claim.distance, distance) for claim in decided), decided[0].kind)
+    return out
 
 
 def compare(baseline: list, variants: dict) -> list[str]:
@@ -169,11 +175,12 @@ def compare(baseline: list, variants: dict) -> list[str]:
     return problems
 
 
-def _margin(distance: str, spread: Spread) -> float:
+def _margin(distance: str, spread: float) -> float:
+    """|distance| / spread: inf for a spread of 0, 0 for a distance or spread not finite (not measured)."""
     d = abs(_float(distance))
-    if not math.isfinite(d) or not math.isfinite(spread.distance):
+    if not math.isfinite(d) or not math.isfinite(spread):
         return 0.0
-    return math.inf if spread.distance == 0 else d / spread.distance
+    return math.inf if spread == 0 else d / spread
 
 
 def report(baseline: list, variants: dict, environments: dict, margin_min: float, run: str) -> str:
@@ -199,9 +206,9 @@ def report(baseline: list, variants: dict, environments: dict, margin_min: float
                      f"{sum(claim.status == 'abstain' for claim in claims)} |")
     lines += ["", *(f"- {problem}" for problem in problems)] if problems else []
     kinds = {claim.id: claim.kind for claim in baseline}
-    distances = {claim.id: claim.distance for claim in baseline}
-    shaky = sorted((_margin(distances[i], s), i) for i, s in spread.items() if _margin(distances[i], s) < margin_min)
-    lines += ["", f"## Fragile verdicts: {len(shaky)} within {margin_min:g} spreads of their threshold", ""]
+    shaky = sorted((s.margin, i) for i, s in spread.items() if s.margin < margin_min)
+    lines += ["", f"## Fragile verdicts: {len(shaky)} within {margin_min:g} spreads of their threshold (the smallest "
+              "margin over the run and its variants)", ""]
     if shaky:
         lines += ["| claim | kind | margin (spreads) | distance spread | value spread |", "|---|---|---|---|---|"]
         lines += [f"| `{i}` | {kinds[i]} | {m:.3g} | {spread[i].distance:.3g} | {spread[i].value:.3g} |"
@@ -213,7 +220,8 @@ def report(baseline: list, variants: dict, environments: dict, margin_min: float
 
 def write_spreads(path, run: str, spread: dict[str, Spread]) -> None:
     """The spreads of one run as a spreads file (``{run: {id: {distance, value}}}``)."""
-    section = {i: {"distance": float(s.distance), "value": float(s.value)} for i, s in spread.items()}
+    section = {i: {"distance": float(s.distance), "value": float(s.value), "margin": float(s.margin), "kind": s.kind}
+               for i, s in spread.items()}
     Path(path).write_text(yaml.safe_dump({run: section}, sort_keys=False, width=120))
 
 

@@ -1,0 +1,111 @@
+"""The README's results: generated from a full run, never typed.
+
+``python -m particle_replication.readme`` prints the block the README holds between its results markers, from
+the run's claims table (``results/claims.csv``: the counts, the margins), its software record
+(``results/versions.md``: the commit, its date, the CPU it ran on) and the expected verdicts
+(``config/verdicts.yaml``: each failure's cause and reason); ``--write`` puts it into README.md. The tests keep
+the block in step with the expected verdicts (tests/test_readme.py).
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from pathlib import Path
+
+from .claims import CAUSES, KINDS, counts, fragile, read_claims, read_verdicts
+from .paths import REPOSITORY
+
+START = ("<!-- results: generated from the full run by `python -m particle_replication.readme --write`; "
+         "tests/test_readme.py keeps it in step with config/verdicts.yaml -->")
+END = "<!-- end of the results -->"
+#: How the README counts the failures of each cause: (one, several).
+CAUSE_WORDS = {"contradicts": ("contradicts the paper", "contradict the paper"),
+               "pre-asymptotic": ("is pre-asymptotic", "are pre-asymptotic"),
+               "our-inference": ("is an inference of ours that was wrong", "are inferences of ours that were wrong"),
+               "defect": ("is a defect of ours", "are defects of ours")}
+
+
+def cause_sentence(causes: dict[str, int]) -> str:
+    """'Of the 8 failures, 2 contradict the paper, 4 are pre-asymptotic, ...' for the failures per cause."""
+    return (f"Of the {sum(causes.values())} failures, "
+            + ", ".join(f"{count} {CAUSE_WORDS[cause][count != 1]}" for cause, count in causes.items()
+                        if cause in CAUSE_WORDS) + ".")
+
+
+def _field(versions: str, name: str) -> str:
+    found = re.search(rf"^{name}: (.+)$", versions, flags=re.MULTILINE)
+    return found.group(1).strip() if found else "unknown"
+
+
+def results_block(claims, expected, versions: str, margin_min: float) -> str:
+    """The README's results paragraph and table of failures for a run's ``claims`` (with their margins), its
+    ``expected`` verdicts (claim id -> :class:`~particle_replication.claims.Expected`) and its versions record."""
+    tally = counts(claims)
+    paper, derived, check = (tally.get(kind, (0, 0)) for kind in KINDS)
+    abstained = sum(claim.status == "abstain" for claim in claims)
+    failing = [claim for claim in claims if claim.status == "fail"]
+    causes = {cause: sum(expected[claim.id].cause == cause for claim in failing if claim.id in expected)
+              for cause in CAUSES}
+    shaky = [claim for claim in fragile(claims, margin_min) if claim.kind in ("paper", "derived")]
+    run = (f"At the last full run (commit {_field(versions, 'Commit')[:7]} of {_field(versions, 'Commit date')[:10]}, "
+           f"on {_field(versions, 'CPU')})")
+    lines = [
+        f"{run}, {paper[0]} of the papers' {paper[1]} claims are reproduced; {derived[0]} of {derived[1]} claims we "
+        f"derive from their theory and {check[0]} of our {check[1]} checks pass"
+        + (f" ({abstained} wall-time checks abstained: the machine was loaded)" if abstained else "") + ". "
+        "Every verdict is compared with the expected one in `config/verdicts.yaml`, at the end of the run and by "
+        "`snakemake verify`; each expected failure carries its cause and reason (a pre-asymptotic one: the paper's "
+        "limit lies beyond our resolutions; a defect: our own instrument decides the verdict), and the report "
+        "(`paper/ms.pdf`) gives the evidence. " + cause_sentence(causes),
+        "",
+        "| claim | kind | cause | why |",
+        "|---|---|---|---|",
+    ]
+    order = list(CAUSES)
+    for claim in sorted(failing, key=lambda c: order.index(expected[c.id].cause) if c.id in expected else len(order)):
+        verdict = expected.get(claim.id)
+        cause, reason = (verdict.cause, verdict.reason) if verdict else ("unexpected", "not expected")
+        lines.append(f"| `{claim.id}` | {claim.kind} | {cause} | {reason.replace('|', '/')} |")
+    lines += [
+        "",
+        "Each verdict's margin, its distance from its threshold in units of its spread over the variants of the "
+        "robustness run (threads, BLAS kernels, SIMD dispatch, CPU target, ulp-nudged data, a loaded machine), is "
+        f"in the claims table; a margin below {margin_min:g} is fragile. "
+        + (f"Fragile paper or derived claims: {', '.join(f'`{claim.id}` ({claim.margin})' for claim in shaky)}."
+           if shaky else "No paper or derived claim is fragile."),
+    ]
+    return "\n".join(lines)
+
+
+def replaced(readme: str, block: str) -> str:
+    """``readme`` with the text between its results markers replaced by ``block``."""
+    pattern = re.compile(re.escape(START) + r"\n.*?\n" + re.escape(END), flags=re.DOTALL)
+    if not pattern.search(readme):
+        raise ValueError("README.md has lost its results markers")
+    return pattern.sub(lambda _: f"{START}\n{block}\n{END}", readme)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m particle_replication.readme", description=__doc__)
+    parser.add_argument("--root", default=".", help="the full run's root (results/ under it)")
+    parser.add_argument("--write", action="store_true", help="write the block into README.md")
+    args = parser.parse_args(argv)
+    import yaml
+
+    config = yaml.safe_load((REPOSITORY / "config" / "config.yaml").read_text())
+    root = Path(args.root)
+    block = results_block(read_claims(root / "results" / "claims.csv"),
+                          read_verdicts(REPOSITORY / config["verdicts"]),
+                          (root / "results" / "versions.md").read_text(), config["robustness"]["margin_min"])
+    if args.write:
+        readme = REPOSITORY / "README.md"
+        readme.write_text(replaced(readme.read_text(), block))
+    else:
+        print(block)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
