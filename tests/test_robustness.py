@@ -130,6 +130,8 @@ def test_spreads_and_margins_over_variants():
     assert exact.distance == 0.0 and exact.margin == math.inf
     flipped = robustness.spreads({"run": [made(1.5)], "a": [made(math.nan)]})["demo.x"]
     assert flipped.distance == math.inf and flipped.margin == 0.0
+    never = robustness.spreads({"run": [made(math.nan)], "a": [made(math.nan)]})["demo.x"]
+    assert never.distance == 0.0 and never.margin == math.inf  # not measured in every variant: the same verdict
 
 
 def test_an_abstention_is_no_difference_but_a_changed_verdict_is():

@@ -344,15 +344,23 @@ def read_spreads(path, run: str) -> dict[str, Spread]:
     return spreads
 
 
+def margin_of(distance: float, spread: float) -> float:
+    """A signed distance from a threshold in units of its spread: inf where the spread is 0 (every variant gave
+    the same distance, a value not measured included: the verdict is exact), 0 where the distance is not
+    measured or the spread is infinite (some variants measured it, others not)."""
+    if spread == 0:
+        return math.inf
+    if not (math.isfinite(distance) and math.isfinite(spread)):
+        return 0.0
+    return abs(distance) / spread
+
+
 def margin(claim: Claim, spread: Spread | None) -> float | None:
-    """The claim's distance from its threshold in units of its spread: inf where the spread is 0 (the verdict is
-    exact), 0 where a value was not measured or the spread is infinite, None without a recorded spread."""
+    """The claim's distance from its threshold in units of its recorded spread (:func:`margin_of`), None without
+    a recorded spread."""
     if spread is None or not claim.distance:
         return None
-    distance = abs(float(claim.distance))
-    if not math.isfinite(distance) or not math.isfinite(spread.distance):
-        return 0.0
-    return math.inf if spread.distance == 0 else distance / spread.distance
+    return margin_of(float(claim.distance), spread.distance)
 
 
 def margin_text(value: float | None) -> str:

@@ -33,7 +33,7 @@ from pathlib import Path
 
 import yaml
 
-from .claims import Spread, read_claims
+from .claims import Spread, margin_of, read_claims
 
 #: What each variant's environment probe reports (:func:`probe`).
 PROBE = """
@@ -153,7 +153,7 @@ def spreads(tables: dict) -> dict[str, Spread]:
         decided = [rows[name][i] for name in rows if rows[name][i].status != "abstain"] or [rows[next(iter(rows))][i]]
         distance = _spread(_float(claim.distance) for claim in decided)
         out[i] = Spread(distance, _spread(_float(claim.value) for claim in decided),
-                        min(_margin(claim.distance, distance) for claim in decided), decided[0].kind)
+                        min(margin_of(_float(claim.distance), distance) for claim in decided), decided[0].kind)
     return out
 
 
@@ -175,12 +175,6 @@ def compare(baseline: list, variants: dict) -> list[str]:
     return problems
 
 
-def _margin(distance: str, spread: float) -> float:
-    """|distance| / spread: inf for a spread of 0, 0 for a distance or spread not finite (not measured)."""
-    d = abs(_float(distance))
-    if not math.isfinite(d) or not math.isfinite(spread):
-        return 0.0
-    return math.inf if spread == 0 else d / spread
 
 
 def report(baseline: list, variants: dict, environments: dict, margin_min: float, run: str) -> str:

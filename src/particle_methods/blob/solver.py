@@ -211,9 +211,11 @@ def setup_1d(data, kernel: str, h: float, *, method: str = "blob", order: int = 
     data = as_data_1d(data)
     one_of("method", method, METHODS)
     psi, q = mollifier(order, 1), _exponent_q(q)
-    points = nudged(grid_1d(h))
+    points = grid_1d(h)
     rho0 = data(points[:, 0])
-    masses = nudged(rho0 * h)
+    # The data nudged as data: the density is evaluated on the grid first, so that a grid point on a jump of the
+    # data (the ends of the indicator (4.4)) keeps its value whichever way its position moves.
+    points, rho0, masses = nudged(points), nudged(rho0), nudged(rho0 * h)
     if method == "blob":
         return points, rho0, masses, kernel_1d(kernel, psi, h**q), True
     # Delta K is a Dirac mass for the Newtonian kernels: no density.
@@ -245,13 +247,13 @@ def setup_2d(data, kernel: str, h: float, *, method: str = "blob", q: float = 0.
     data = as_data_2d(data)
     one_of("method", method, METHODS)
     q = _exponent_q(q)
-    points = nudged(grid_2d(h, data))
+    points = grid_2d(h, data)
     h = float(h)
     if delta is not None and positive("delta", delta) < MIN_DELTA_OVER_H * h:
         raise ValueError(f"delta = {delta} must be at least MIN_DELTA_OVER_H h = {MIN_DELTA_OVER_H * h:.4g}: smaller "
                          "blobs barely overlap and the densities blow up")
     rho0 = data(points)
-    masses = nudged(rho0 * h * h)
+    points, rho0, masses = nudged(points), nudged(rho0), nudged(rho0 * h * h)  # as in setup_1d
     tables = {"table_radius": table_radius, "table_points": table_points}
     if method == "blob":
         k = kernel_2d(kernel, mollifier(4, 2), h**q if delta is None else delta, **tables)
