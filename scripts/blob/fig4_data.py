@@ -70,7 +70,8 @@ def run(p, output):
                 progress(f"diagnostic q = {p['diagnostic_q']}, m = {order}: h = 1/{n}")
                 run = run_1d(p["data"], "newtonian_repulsive", 1.0 / n, [0.0, p["t"]], order=order,
                              q=p["diagnostic_q"], rtol=p["rtol"], atol=p["atol"])
-                exact = newtonian_exact(data, "newtonian_repulsive", run.positions[0, :, 0], p["t"])[1]
+                exact = newtonian_exact(data, "newtonian_repulsive", run.positions[0, :, 0], p["t"],
+                                        rho0=run.densities[0])[1]
                 errors.append(discrete_l1(run.densities[-1], exact, 1.0 / n))
             results[f"diagnostic_m{order}_density"] = np.array(errors)
         results["diagnostic_q"] = p["diagnostic_q"]

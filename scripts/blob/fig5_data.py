@@ -21,7 +21,8 @@ def one_run(p, case, inverse_h):
     sim = run_2d(data, p["kernel"], h, [0.0, p["t"]], method=case["method"], q=p["q"], rtol=p["rtol"],
                  atol=p["atol"])
     seconds = time.perf_counter() - start
-    exact_x, exact_rho = newtonian_exact_2d(data, sim.positions[0], p["t"])
+    carried = None if sim.densities is None else sim.densities[0]  # the particles' own initial densities
+    exact_x, exact_rho = newtonian_exact_2d(data, sim.positions[0], p["t"], rho0=carried)
     trajectory = discrete_l1(sim.positions[-1], exact_x, h, 2)
     density = discrete_l1(sim.densities[-1], exact_rho, h, 2) if sim.densities is not None else np.nan
     progress(f"{case['data']} {case['method']}: h = 1/{inverse_h}, {sim.masses.size} particles, {sim.evaluations} "

@@ -13,7 +13,8 @@ def errors(p, h, t, rtol, atol):
     run = run_1d(p["data"], p["kernel"], h, [0.0, t], method=p["method"], order=p["order"], q=p["q"],
                  rtol=rtol, atol=atol)
     alpha = run.positions[0, :, 0]
-    exact_x, exact_rho = newtonian_exact(data_1d(p["data"]), p["kernel"], alpha, t)
+    carried = None if run.densities is None else run.densities[0]  # the particles' own initial densities
+    exact_x, exact_rho = newtonian_exact(data_1d(p["data"]), p["kernel"], alpha, t, rho0=carried)
     trajectory = discrete_l1(run.positions[-1, :, 0], exact_x, h)
     density = discrete_l1(run.densities[-1], exact_rho, h) if run.densities is not None else np.nan
     return trajectory, density, run.evaluations
@@ -36,7 +37,8 @@ def run(p, output):
     exact_paths = np.array([newtonian_exact(data, p["kernel"], alpha, t)[0] for t in exact_times])
     density_times = np.asarray(p["density_times"], dtype=float)
     density_index = [int(np.argmin(np.abs(times - t))) for t in density_times]
-    exact_densities = np.array([newtonian_exact(data, p["kernel"], alpha, t)[1] for t in density_times])
+    carried = None if shown.densities is None else shown.densities[0]
+    exact_densities = np.array([newtonian_exact(data, p["kernel"], alpha, t, rho0=carried)[1] for t in density_times])
     energies = shown.energies() if p["method"] == "blob" else np.full(times.size, np.nan)
 
     mass_defect = lagrangian_mass_defect(p, data, 0.4) if p["method"] == "blob" else np.nan

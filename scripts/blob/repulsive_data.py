@@ -63,7 +63,7 @@ def run(p, fig4_path, output):
             progress(f"m = {order}: blob run with h = 1/{n}")
             run_ = run_1d(p["data"], KERNEL, 1.0 / n, [0.0, p["t"]], order=order, q=p["q"], rtol=p["rtol"],
                           atol=p["atol"])
-            exact = newtonian_exact(data, KERNEL, run_.positions[0, :, 0], p["t"])[1]
+            exact = newtonian_exact(data, KERNEL, run_.positions[0, :, 0], p["t"], rho0=run_.densities[0])[1]
             totals.append(discrete_l1(run_.densities[-1], exact, 1.0 / n))
         decomposition = []
         for n in all_n:

@@ -84,3 +84,19 @@ def test_particle_method_has_no_density_for_the_newtonian_kernel():
 def test_bad_input(make, message):
     with pytest.raises(ValueError, match=message):
         make()
+
+
+@pytest.mark.parametrize("outward", [1e-17, 2.2e-16])
+def test_a_label_on_a_jump_of_the_data_keeps_its_particles_density(outward):
+    """The ends of the indicator (4.4) sit on grid points: a label rounded just outside reads the data as 0, its
+    particle carries 1; given the run's own initial densities, the exact density along its trajectory is the
+    particle's, however the label rounds (rounding decides nothing)."""
+    from particle_methods.blob.initial import data_1d
+
+    indicator = data_1d("indicator")
+    labels = np.array([-1.0 - outward, 0.0, 1.0 + outward])
+    carried = np.ones(3)
+    _, density = newtonian_exact(indicator, "newtonian_attractive", labels, 0.2, rho0=carried)
+    np.testing.assert_allclose(density, 1.0 / (1.0 - 0.2))
+    with pytest.raises(ValueError, match="rho0"):
+        newtonian_exact(indicator, "newtonian_attractive", labels, 0.2, rho0=np.ones(2))

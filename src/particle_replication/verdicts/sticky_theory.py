@@ -145,24 +145,33 @@ def constant_claims(d, study):
 def random_claims(d, recorder: Recorder, order_min: float, exponent_max: float, share: float, fewest: int):
     """Corollary 4.6 on random configurations and the t^2 of section 5.2, each fitted only on the runs
     the reference resolves (errors at least 1/``share`` times the reference's distance to half as many
-    particles, at the same case and time), and the check that each fit keeps at least ``fewest`` runs."""
+    particles, at the same case and time), and the check that each fit keeps at least ``fewest`` runs.
+
+    The random configurations' errors are averaged over the seeds before the order is fitted: one draw's error
+    scatters by a factor about its own size from n to 2n (single draws gave pairwise slopes near 0 where the
+    mean over draws falls like n^-1/2), so the order of one draw decides nothing; the mean's order is the
+    statement's convergence, and the orders of the single draws are listed in the claim's text."""
     n = d["random_n"].astype(float)
     times = d["random_times"]
     floor = d["reference_gap"] / share                     # (cases, times): the smallest resolvable error
-    convergence, premise, exponents, lows, kept = [], [], [], [], []
+    convergence, premise, exponents, lows, kept, singles = [], [], [], [], [], []
+    seeds = len(d["random_seeds"])
     for c_index, case in enumerate(d["cases"]):
-        for s_index, seed in enumerate(d["random_seeds"]):
-            premise.append(recorder.add(order(f"{PAPER}.theory.cor46.premise", "1/n", 1.0 / n,
-                                              d["random_initial"][c_index, s_index], n.size, f"{case}, seed {seed}")))
-            for k, t in enumerate(times):
-                errors = d["random_errors"][c_index, s_index, :, k]
-                resolved = np.zeros(n.size, dtype=bool)
-                resolved[resolvable(errors, d["reference_gap"][c_index, k], share)] = True
-                kept.append(int(resolved.sum()))
-                convergence.append(recorder.add(order(f"{PAPER}.theory.cor46.convergence", "1/n", 1.0 / n[resolved],
-                                                      errors[resolved], int(resolved.sum()),
-                                                      f"{case}, seed {seed}, t = {t:g}"))
-                                   if resolved.sum() >= 2 else math.nan)
+        premise.append(recorder.add(order(f"{PAPER}.theory.cor46.premise", "1/n", 1.0 / n,
+                                          d["random_initial"][c_index].mean(axis=0), n.size,
+                                          f"{case}, mean over {seeds} seeds")))
+        for k, t in enumerate(times):
+            errors = d["random_errors"][c_index, :, :, k].mean(axis=0)
+            resolved = np.zeros(n.size, dtype=bool)
+            resolved[resolvable(errors, d["reference_gap"][c_index, k], share)] = True
+            kept.append(int(resolved.sum()))
+            convergence.append(recorder.add(order(f"{PAPER}.theory.cor46.convergence", "1/n", 1.0 / n[resolved],
+                                                  errors[resolved], int(resolved.sum()),
+                                                  f"{case}, mean over {seeds} seeds, t = {t:g}"))
+                               if resolved.sum() >= 2 else math.nan)
+            singles += [order(f"{PAPER}.theory.cor46.convergence", "1/n", 1.0 / n[resolved], row[resolved],
+                              int(resolved.sum())).slope for row in d["random_errors"][c_index, :, :, k]
+                        if resolved.sum() >= 2]
         errors = np.where(d["tspd_errors"][c_index] >= floor[c_index][:, None], d["tspd_errors"][c_index], np.nan)
         kept += [int(count) for count in np.isfinite(errors).sum(axis=1)]
         usable = np.isfinite(errors).sum(axis=1) >= 2
@@ -180,14 +189,15 @@ def random_claims(d, recorder: Recorder, order_min: float, exponent_max: float, 
     return [
         claim(c.at_least, "theory.cor46.convergence", "paper", "Corollary 4.6", "Corollary 4.6",
               f"the MSPD from any configurations with W1^(d)(mu_0[x(n)], m) -> 0 converges to the semigroup "
-              f"solution: configurations of n draws of each m^gamma of both p-system cases (seeds "
-              f"{_listing(d['random_seeds'])}), {sizes}, t = {_listing(times)}, W1^(d) to the exact MSPD from (1.9) "
-              f"with n = {int(d['reference_n'])}; order in n {resolved_text}, smallest", order_min,
+              f"solution: configurations of n draws of each m^gamma of both p-system cases ({seeds} seeds), {sizes}, "
+              f"t = {_listing(times)}, W1^(d) to the exact MSPD from (1.9) with n = {int(d['reference_n'])}, averaged "
+              f"over the seeds; order in n {resolved_text}, smallest over cases and times (one draw's own order "
+              f"scatters: {min(singles, default=math.nan):.2f} to {max(singles, default=math.nan):.2f})", order_min,
               chosen(convergence, min), published="convergence"),
         claim(c.at_least, "theory.cor46.premise", "check", "(4.12), premise of Corollary 4.6 (our random data)",
-              "Corollary 4.6", f"the random configurations satisfy (4.12): W1^(d)(mu_0[x(n)], m), exact, falls with n; "
-              f"order fitted on every n ({sizes}), smallest over cases and seeds", order_min, chosen(premise, min),
-              published="-> 0"),
+              "Corollary 4.6", f"the random configurations satisfy (4.12): W1^(d)(mu_0[x(n)], m), exact, averaged over "
+              f"the {seeds} seeds, falls with n; order fitted on every n ({sizes}), smaller of the cases", order_min,
+              chosen(premise, min), published="-> 0"),
         claim(c.at_most, "theory.t_exponent", "paper", "section 5.2, O(t^2/eps^2) from Theorem 4.4",
               "section 5.2", f"the iterated TSPD needs O(t^2/eps^2) operations for an error eps at time t: L = n steps "
               f"of t/n from (1.9), {sizes} ({resolved_text}), t = {_listing(times)}; n needed at a common error eps* "
