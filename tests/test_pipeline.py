@@ -22,7 +22,7 @@ EXPECTED_VERDICTS = read_verdicts(ROOT / "config" / "verdicts.yaml", "quick")
 # The smallest margin that is not fragile, also the factor of a value's spread that its pin allows.
 CONFIG_MARGIN = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["robustness"]["margin_min"]
 # Claims whose measured values are timings, different on every run.
-TIMED = ("sticky.cost.", "sticky.beyond.ratio.", "sticky.beyond.cost.wall_time", "cross.fastest")
+TIMED = ("sticky.cost.wall_time", "sticky.beyond.ratio.", "sticky.beyond.cost.wall_time", "cross.fastest")
 
 # One xdist worker runs this module (its quick run is a module fixture); the unit tests share the other cores.
 pytestmark = [pytest.mark.pipeline, pytest.mark.xdist_group("pipeline")]
@@ -247,7 +247,7 @@ def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
     assert result.returncode == 0, result.stderr[-2000:]
     import shutil
 
-    expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "all"}
+    expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "verdicts", "all"}
     if shutil.which("latexmk") and shutil.which("pdflatex"):  # the snippets are made for the report alone
         expected |= {"report_snippets", "manuscript"}
     assert planned_rules(result) == expected
@@ -263,19 +263,50 @@ def test_verify_works_as_the_readme_writes_it(workdir):
     assert "Paper claims reproduced:" in result.stdout and "0 differences from the expected verdicts" in result.stdout
 
 
-def test_verify_fails_when_a_verdict_changes(workdir, tmp_path):
+def changed_verdicts(tmp_path):
+    """An expected-verdicts file in which one claim of the quick run that passes is expected to fail (its quick
+    section empty: the quick run's verdicts are its own); returns (path, the claim's id)."""
     changed_id = next(i for i, verdict in EXPECTED_VERDICTS.items() if verdict.status == "pass")
     passing = [i for i, verdict in EXPECTED_VERDICTS.items() if verdict.status == "pass" and i != changed_id]
     failing = {i: {"cause": verdict.cause, "reason": verdict.reason}
                for i, verdict in EXPECTED_VERDICTS.items() if verdict.status == "fail"}
     failing[changed_id] = {"cause": "contradicts", "reason": "pretend it used to fail"}
     expected = tmp_path / "verdicts.yaml"
-    expected.write_text(yaml.safe_dump({"pass": passing, "fail": failing}))
+    expected.write_text(yaml.safe_dump({"pass": passing, "fail": failing, "quick": {"pass": [], "fail": {}}}))
+    return expected, changed_id
+
+
+def test_verify_fails_when_a_verdict_changes(workdir, tmp_path):
+    expected, changed_id = changed_verdicts(tmp_path)
     result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml",
-                             "--config", f"verdicts={expected}", "verdicts_run=full"], cwd=workdir.parents[1],
+                             "--config", f"verdicts={expected}"], cwd=workdir.parents[1],
                             capture_output=True, text=True, timeout=600)
     assert result.returncode != 0
     assert f"CHANGED {changed_id}: expected fail" in result.stdout + result.stderr
+
+
+def test_the_default_run_ends_loudly_when_a_verdict_changes(workdir, tmp_path):
+    """The run's last step prints the verdict summary and fails while a verdict differs from the expected one;
+    with the expected verdicts restored it passes again, and only that step reruns."""
+    expected, changed_id = changed_verdicts(tmp_path)
+    result = snakemake(workdir, "--config", f"verdicts={expected}", "--", "results/verdicts.txt")
+    assert result.returncode != 0
+    assert f"CHANGED {changed_id}: expected fail" in result.stdout + result.stderr
+    assert "Paper claims reproduced:" in result.stdout + result.stderr
+    again = snakemake(workdir, "--", "results/verdicts.txt")
+    assert again.returncode == 0 and planned_rules(again) == {"verdicts"}, again.stderr[-2000:]
+    assert "0 differences from the expected verdicts" in (workdir / "results" / "verdicts.txt").read_text()
+
+
+def test_a_configuration_of_ones_own_is_compared_with_nothing(workdir, tmp_path):
+    """An overlay that changes what a claim measures has no expected verdicts: verify prints the summary, names the
+    keys in which it differs, compares nothing and passes."""
+    override = tmp_path / "mine.yaml"
+    override.write_text("sticky:\n  lemma21:\n    n_values: [16, 64, 256, 1024, 2048]\n")
+    result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml",
+                             str(override)], cwd=workdir.parents[1], capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, (result.stdout + result.stderr)[-2000:]
+    assert "Nothing compared" in result.stdout and "sticky.lemma21.n_values" in result.stdout
 
 
 @pytest.mark.parametrize(

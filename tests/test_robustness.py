@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
+from fuzzing import BAD_ARRAYS, safe_call
 
 from particle_methods import perturbation
 from particle_methods.blob.solver import setup_1d
@@ -72,6 +73,15 @@ def test_the_constructors_of_initial_data_apply_the_nudge(make):
 def test_a_bad_nudge_is_refused_naming_it(bad, error):
     with pytest.raises(error, match="ulps"):
         perturbation.set_nudge(bad)
+
+
+@pytest.mark.parametrize("bad", BAD_ARRAYS)
+def test_nudged_refuses_what_is_no_array_of_finite_reals(bad):
+    """Finite results or a ValueError/TypeError naming the values, nudged or not (tests/fuzzing.py)."""
+    for ulps in (0, 4):
+        with perturbation.nudge(ulps, seed=1):
+            result = safe_call(perturbation.nudged, bad)
+        assert result is None or np.all(np.isfinite(result))
 
 
 # The variants

@@ -285,3 +285,16 @@ def test_farthest_from_centre_picks_the_value_that_decides_a_band():
     assert farthest_from_centre([0.95, 1.02, 1.3], (0.9, 1.1)) == 1.3
     assert farthest_from_centre([0.5, 1.05], (0.9, 1.1)) == 0.5
     assert math.isnan(farthest_from_centre([], (0.9, 1.1)))
+
+
+def test_no_claim_text_prints_a_non_finite_value_as_a_number():
+    """A run that never settles or a fit on too few points leaves inf or NaN in a claim's text: the one constructor
+    writes them as what they mean."""
+    from particle_replication import claims as c
+
+    made = c.claim("demo", c.at_most, "steady", "paper", "Figure 1", "1",
+                   "steady from t = inf (steady time inf), ratio inf, slope nan, Linf error, so p = inf", 40.0,
+                   float("inf"))
+    assert made.claim == ("steady from t = never (steady time never), ratio not measured, slope not measured, Linf "
+                          "error, so p = infinity")
+    assert made.measured == "not measured" and made.status == "fail"

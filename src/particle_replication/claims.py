@@ -23,6 +23,7 @@ import csv
 import dataclasses
 import inspect
 import math
+import re
 import sys
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -172,6 +173,20 @@ def abstain(made: Claim, why: str) -> Claim:
 
 COMPARISONS = (close_to, relatively_close_to, at_most, at_least, between)
 
+#: A non-finite number written into a claim's text as a word of its own ("inf", "-inf", "nan"), not part of a
+#: name (u_inf, Linf).
+_NON_FINITE = re.compile(r"(?<![A-Za-z0-9_.])(-?inf|nan)(?![A-Za-z0-9_])")
+
+
+def in_words(text: str) -> str:
+    """``text`` with every non-finite number written as what it means: a time never reached within the run
+    ("t = inf", "time inf") as "never", the exponent p = inf of a norm as "infinity", anything else as "not
+    measured". No table prints a non-finite value as a number."""
+    text = re.sub(r"\b(t|time) = inf\b(?![A-Za-z0-9_])", r"\1 = never", text)
+    text = re.sub(r"\bsteady time inf\b", "steady time never", text)
+    text = re.sub(r"\bp = inf\b", "p = infinity", text)
+    return _NON_FINITE.sub("not measured", text)
+
 
 def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, text: str, *args, **kwargs) -> Claim:
     """The one constructor of every claim: ``<paper>.<name>``, its kind (:data:`KINDS`) and its source in the
@@ -186,7 +201,7 @@ def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, t
     if compare not in COMPARISONS:
         raise ParameterTypeError(f"compare must be one of {', '.join(f.__name__ for f in COMPARISONS)}, got "
                                  f"{compare!r}")
-    arguments = inspect.signature(compare).bind(f"{paper}.{name}", paper, figure, text, *args, kind=kind,
+    arguments = inspect.signature(compare).bind(f"{paper}.{name}", paper, figure, in_words(text), *args, kind=kind,
                                                 source=source, **kwargs).arguments
     made = compare(**arguments)
     windows = getattr(arguments["measured"], "windows", None)
