@@ -34,7 +34,7 @@ def test_readme_is_a_front_page_whose_failures_are_the_expected_ones():
     reasons = dict(re.findall(r"^\| `([a-z0-9_.]+)` \| (?:paper|derived|check) \| [a-z-]+ \| (.*) \|$", readme,
                               flags=re.MULTILINE))
     regenerate = "python -m particle_replication.readme --write"
-    assert reasons == {i: verdicts[i].reason.replace("|", "/") for i in expected}, regenerate
+    assert reasons == {i: verdicts[i].reason.replace("|", "\\|") for i in expected}, regenerate
     for path in ("docs/running.md", "docs/robustness.md", "docs/usage.md", "config/README.md", "benchmarks/README.md",
                  "CONTRIBUTING.md", "paper/README.md"):
         assert f"`{path}`" in readme and (ROOT / path).exists()

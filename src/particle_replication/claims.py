@@ -57,10 +57,12 @@ ROUNDING = 1e-9
 """The one rounding tolerance of every paper's claims, relative: a quantity that equals another in exact
 arithmetic (an identity exact by construction) may differ from it by ``ROUNDING * scale``, the scale being
 that of the quantity compared (1 for ratios and relative gaps; the positions' extent, the mass or the time
-for absolute ones). A tolerance that decides a paper's statement belongs in the config instead. The value
-sits above the largest rounding residual of the full run (4.2e-10: sticky's Remark 3.3, the relative gap
-of W1 to t/(4n), which grows with n, at n = 1e4) and at least 30 times below the smallest plausible
-wrong outcome (a centre of mass drifting at O(h^2) in LTP: 3e-8 at h = 0.005)."""
+for absolute ones). A tolerance that decides a paper's statement belongs in the config instead. An identity
+is compared at the scale of its operands, never as a ratio to a small quantity: a gap relative to W1 = t/(4n)
+multiplies the rounding of positions of size t by n, and the robustness run's nudged data moved such gaps to
+within a spread of the tolerance. The value sits far above rounding at the scale of the operands and at least
+30 times below the smallest plausible wrong outcome (a centre of mass drifting at O(h^2) in LTP: 3e-8 at
+h = 0.005)."""
 
 
 @dataclass(frozen=True)

@@ -67,7 +67,7 @@ def results_block(claims, expected, versions: str, margin_min: float) -> str:
     for claim in sorted(failing, key=lambda c: order.index(expected[c.id].cause) if c.id in expected else len(order)):
         verdict = expected.get(claim.id)
         cause, reason = (verdict.cause, verdict.reason) if verdict else ("unexpected", "not expected")
-        lines.append(f"| `{claim.id}` | {claim.kind} | {cause} | {reason.replace('|', '/')} |")
+        lines.append(f"| `{claim.id}` | {claim.kind} | {cause} | {reason.replace('|', chr(92) + '|')} |")
     lines += [
         "",
         "Each verdict's margin, its distance from its threshold in units of its spread over the variants of the "
