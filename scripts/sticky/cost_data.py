@@ -3,8 +3,9 @@
 Every kernel counts its operations as it makes them (the hull's tests, pops, pushes and writes, the rank
 step's examined heads and written entries, summed over the steps of the iterated TSPD): the cost claims
 are decided on those counts, which no machine changes. The same runs are also timed, for a wall-time check
-only: each kernel runs once untimed on its smallest size (compilation), then the sizes are timed in turn,
-``repeats`` rounds over all of them, keeping each size's best time
+only: each size runs once untimed (compilation, and the first touch of its memory: a run over 0.2 s is
+timed in one round only, so its page faults would be timed), then the sizes are timed in turn, ``repeats``
+rounds over all of them, keeping each size's best time
 (:func:`~particle_replication.workflow.interleaved`). A :class:`~particle_replication.workflow.LoadGuard`
 records whether the timed kernels had a core to themselves, and the CPU is recorded beside the times. The
 kernels are called directly, past the input checks of the public functions, so that what is measured is the
@@ -47,8 +48,7 @@ def run(p, output):
     series = {name: [] for name in ("hull", "hull_free", "rank", "tspd", "steps")}  # the runs of each
 
     def add(name, function, *args):
-        if not series[name]:
-            function(*args)  # untimed: compiles the kernel
+        function(*args)  # untimed: compiles the kernel, and touches the memory of this size first
         series[name].append(lambda: function(*args)[1])  # the operations it counted
 
     for n in p["hull_n"]:
