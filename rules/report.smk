@@ -237,4 +237,3 @@ rule verdicts:
     shell:
         "python -m particle_replication.claims verify {input.claims} --expected {input.expected} "
         "{params.comparison} --brief --report {output} 2>&1 | tee {log}; exit ${{PIPESTATUS[0]}}"
-

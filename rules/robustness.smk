@@ -1,13 +1,19 @@
 """The robustness run (`snakemake --cores 2 robustness`): every claim recomputed under the variants of the
 config's `robustness.variants` (particle_replication.robustness), each in a Snakemake run of its own under
-robustness/<variant>/, then compared with this run's claims: a verdict that differs fails the target."""
+robustness/<variant>/, then compared with this run's claims: a verdict that differs fails the target.
+"""
 
 ROBUSTNESS = config["robustness"]
 VARIANTS = ROBUSTNESS["variants"]
 # Every source a variant's run may use: a change reruns the variants, whose own runs redo only what it touches.
 ROBUSTNESS_CODE = sorted(
     source(path)
-    for folder, pattern in [(PACKAGE, "*.py"), (REPLICATION, "*.py"), (ROOT / "scripts", "*.py"), (ROOT / "rules", "*.smk")]
+    for folder, pattern in [
+        (PACKAGE, "*.py"),
+        (REPLICATION, "*.py"),
+        (ROOT / "scripts", "*.py"),
+        (ROOT / "rules", "*.smk"),
+    ]
     for path in folder.rglob(pattern)
     if "__pycache__" not in path.parts
 ) + [source(ROOT / "Snakefile")]

@@ -39,9 +39,10 @@ def _field(versions: str, name: str) -> str:
     return found.group(1).strip() if found else "unknown"
 
 
-def results_block(claims, expected, versions: str, margin_min: float) -> str:
+def results_block(claims, expected, versions: str, margin_min: float, robustness: str = "") -> str:
     """The README's results paragraph and table of failures for a run's ``claims`` (with their margins), its
-    ``expected`` verdicts (claim id -> :class:`~particle_replication.claims.Expected`) and its versions record."""
+    ``expected`` verdicts (claim id -> :class:`~particle_replication.claims.Expected`), its versions record and
+    its robustness report (``results/robustness.md``, or '' if the run has none)."""
     tally = counts(claims)
     paper, derived, check = (tally.get(kind, (0, 0)) for kind in KINDS)
     abstained = sum(claim.status == "abstain" for claim in claims)
@@ -73,10 +74,20 @@ def results_block(claims, expected, versions: str, margin_min: float) -> str:
         "Each verdict's margin, its distance from its threshold in units of its spread over the variants of the "
         "robustness run (threads, BLAS kernels, SIMD dispatch, CPU target, ulp-nudged data, a loaded machine), is "
         f"in the claims table; a margin below {margin_min:g} is fragile. "
+        + (f"The robustness run: {_robustness_line(robustness)} " if robustness else "")
         + (f"Fragile paper or derived claims: {', '.join(f'`{claim.id}` ({claim.margin})' for claim in shaky)}."
            if shaky else "No paper or derived claim is fragile."),
     ]
     return "\n".join(lines)
+
+
+def _robustness_line(report: str) -> str:
+    """The robustness report's count of variants and of verdicts that differ ('10 variants beside the run itself;
+    0 verdicts differ.')."""
+    found = re.search(r"^\d+ variants beside the run itself; \d+ verdicts differ\.$", report, flags=re.MULTILINE)
+    if not found:
+        raise ValueError("the robustness report has lost its count of variants and differences")
+    return found.group(0)
 
 
 def replaced(readme: str, block: str) -> str:
@@ -96,9 +107,11 @@ def main(argv=None) -> int:
 
     config = yaml.safe_load((REPOSITORY / "config" / "config.yaml").read_text())
     root = Path(args.root)
+    report = root / "results" / "robustness.md"
     block = results_block(read_claims(root / "results" / "claims.csv"),
                           read_verdicts(REPOSITORY / config["verdicts"]),
-                          (root / "results" / "versions.md").read_text(), config["robustness"]["margin_min"])
+                          (root / "results" / "versions.md").read_text(), config["robustness"]["margin_min"],
+                          report.read_text() if report.exists() else "")
     if args.write:
         readme = REPOSITORY / "README.md"
         readme.write_text(replaced(readme.read_text(), block))

@@ -140,7 +140,8 @@ def nonaffine_claims(d, rates: Recorder, p, rules):
     for column, norm in ((0, "l1"), (1, "linf")):
         slope = rates.add(order(f"{PAPER}.nonaffine.order_{norm}", "h", h, d["errors"][:, column], k))
         out.append(claim(c.at_least, f"nonaffine.order_{norm}", "derived",
-                         "Theorem 4 (W = |x|^1.5/1.5 satisfies (5.2), alpha = -1/2, p = inf) without its dt <~ h^2",
+                         "Theorem 4 (W = |x|^1.5/1.5 satisfies (5.2), alpha = -1/2, p = infinity) without its "
+                         "dt <~ h^2",
                          "(ours)",
                          f"W = {d['label']} from (6.1), not an affine flow: LTP {norm.upper()} error at t = "
                          f"{float(d['t']):g} against a run with h = {float(d['reference_h']):g} at the same dt = "
@@ -167,7 +168,8 @@ def theorem4_claims(d, rates: Recorder, p, rules):
     weights (2.14) and (2.16); and the reference's own error."""
     h, times = d["theorem4_h"], d["theorem4_times"]
     reference_h = float(d["theorem4_reference_h"])
-    setting = (f"W = {d['label']} ((5.2) with alpha = -1/2, so p = inf), dt = {float(p['theorem4']['dt_over_h2']):g} "
+    setting = (f"W = {d['label']} ((5.2) with alpha = -1/2, so p = infinity), dt = "
+               f"{float(p['theorem4']['dt_over_h2']):g} "
                f"h^2 at h = {', '.join(f'{v:g}' for v in h)}, error against h = {reference_h:g} (the finest dt), "
                f"largest over t = {', '.join(f'{v:g}' for v in times)}")
     out, shares = [], []
