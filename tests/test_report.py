@@ -56,7 +56,8 @@ def snippets(tmp_path):
     (tmp_path / "versions.md").write_text("Commit: 0123abc\n\nCommit date: 2026-11-23T17:37:41+00:00\n\n"
                                           "Modified since the commit: no\n\n"
                                           "| package | version |\n|---|---|\n| python | 3.11.7 |\n| numpy | 2.0 |\n")
-    config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]}}
+    config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]},
+              "robustness": {"margin_min": 10}}
     expected = {"demo.fig1.order": Expected("pass"), "other.mass": Expected("pass"),
                 "demo.fig2.peaks": Expected("fail", "three, not two", "contradicts")}
     changes = [Change(("demo.fig2.peaks",), "3 against 2", "peaks counted above 1e-3", "noise made a third")]

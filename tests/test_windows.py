@@ -75,7 +75,8 @@ def test_the_report_lists_the_window_dependent_verdicts(tmp_path):
     assert [claim.windows for claim in c.read_claims(tmp_path / "claims.csv")] == [rows[0].windows, "4 of 4"]
     rates.write_rates(tmp_path / "rates.json", [])
     (tmp_path / "versions.md").write_text("Commit: abc\n")
-    write_snippets(tmp_path / "claims.csv", tmp_path / "rates.json", tmp_path / "versions.md", {"x": 1.0},
+    write_snippets(tmp_path / "claims.csv", tmp_path / "rates.json", tmp_path / "versions.md",
+                   {"x": 1.0, "robustness": {"margin_min": 10}},
                    tmp_path / "out", {}, [])
     table = (tmp_path / "out" / "windows.tex").read_text()
     assert "demo.\\allowbreak{}rate" in table and "steady" not in table
