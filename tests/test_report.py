@@ -54,7 +54,7 @@ def snippets(tmp_path):
     rate = order("demo.fig1.order", "h", [0.1, 0.05, 0.025], [1e-2, 2.6e-3, 6.4e-4], window=2, label="t = 1")
     write_rates(tmp_path / "rates.json", [rate])
     (tmp_path / "versions.md").write_text("Commit: 0123abc\n\nCommit date: 2026-11-23T17:37:41+00:00\n\n"
-                                          "Modified since the commit: no\n\n"
+                                          "Modified since the commit: no\n\nCPU: AMD EPYC (AVX-512, 2 cores)\n\n"
                                           "| package | version |\n|---|---|\n| python | 3.11.7 |\n| numpy | 2.0 |\n")
     config = {"demo": {"fig1": {"h": [0.1, 0.05], "kernel": "cubic_b"}, "cases": [{"t": 2.0}]},
               "robustness": {"margin_min": 10}}
@@ -78,7 +78,8 @@ def test_every_claim_value_and_parameter_gets_a_macro(snippets):
     assert measured["status@demo.fig2.peaks"] == "fail"
     parameters = definitions(snippets["parameters"])
     assert parameters == {"param@demo.fig1.h": r"\ensuremath{0.1}, \ensuremath{0.05}",
-                          "param@demo.fig1.kernel": r"cubic\_b", "param@demo.cases.0.t": r"\ensuremath{2}"}
+                          "param@demo.fig1.kernel": r"cubic\_b", "param@demo.cases.0.t": r"\ensuremath{2}",
+                          "param@robustness.margin_min": r"\ensuremath{10}"}
 
 
 def test_counts_tables_and_failures(snippets):
@@ -95,7 +96,8 @@ def test_counts_tables_and_failures(snippets):
     assert "contradicts" in snippets["failures"] and "three, not two" in snippets["failures"]
     assert counts["claimcount@cause.contradicts"] == "1" and counts["claimcount@cause.defect"] == "0"
     assert "numpy & 2.0" in snippets["versions"]
-    assert snippets["configuration"].count(r"\par") == 3
+    assert snippets["configuration"].count(r"\par") == 4
+    assert snippets["fragile"].startswith("No spreads are recorded")  # the demo claims have no margins
 
 
 def test_rate_tables_mark_the_deciding_window(snippets):
@@ -106,7 +108,8 @@ def test_rate_tables_mark_the_deciding_window(snippets):
 
 
 def test_the_title_page_names_the_commit(snippets):
-    assert snippets["commit"] == "\\newcommand{\\builtfrom}{Built from commit \\texttt{0123abc} of 2026-11-23}\n"
+    assert snippets["commit"] == ("\\newcommand{\\builtfrom}{Built from commit \\texttt{0123abc} of 2026-11-23}\n"
+                                  "\\newcommand{\\builton}{AMD EPYC (AVX-512, 2 cores)}\n")
 
 
 def test_versions_name_the_commit_or_say_unknown_outside_a_clone(tmp_path, monkeypatch):
