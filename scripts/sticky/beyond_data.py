@@ -140,13 +140,14 @@ def run(system_params, cases, p, limits, output):
     def rows(indices):
         return np.array([timing.made[i] for i in indices]).T
 
+    def listed(indices):
+        return "; ".join(f"{timing.made[i][0]:.3e} in {timing.made[i][2]:.3g} s" for i in indices)
+
     for name, study in studies.items():
         for method in ("tspd", "exact", "upwind"):
-            progress(f"{name}: {method}: " + "; ".join(f"{timing.made[i][0]:.3e} in {timing.made[i][2]:.3g} s"
-                                                       for i in study[method]))
+            progress(f"{name}: {method}: {listed(study[method])}")
     for name, (spd, fv) in scalar.items():
-        progress(f"{name}: SPD " + "; ".join(f"{timing.made[i][0]:.3e} in {timing.made[i][2]:.3g} s" for i in spd)
-                 + "; Godunov " + "; ".join(f"{timing.made[i][0]:.3e} in {timing.made[i][2]:.3g} s" for i in fv))
+        progress(f"{name}: SPD {listed(spd)}; Godunov {listed(fv)}")
     progress(f"CPU {cpu()}; the timed runs got {timing.guard.cpu_share:.2f} of a core, {timing.guard.load:.2g} other "
              "processes runnable on average")
     save_results(

@@ -37,11 +37,6 @@ def set_nudge(ulps, seed=0) -> None:
     _state.update(ulps=ulps, generator=np.random.default_rng(seed) if ulps else None)
 
 
-def nudge_ulps() -> int:
-    """The active nudge in units in the last place (0: off)."""
-    return _state["ulps"]
-
-
 @contextlib.contextmanager
 def nudge(ulps, seed=0):
     """:func:`set_nudge` inside the block, the previous setting restored on exit."""

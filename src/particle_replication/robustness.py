@@ -10,7 +10,7 @@ its own under ``robustness/<variant>/`` of the run's root, with one change that 
   numba's machine code for another CPU (``NUMBA_CPU_NAME``);
 - ``nudge``: every initial datum moved by a few units in the last place (the configuration key ``nudge``,
   :mod:`particle_methods.perturbation`);
-- ``load``: a process spinning on every core while the variant runs.
+- ``load``: a process spinning on each of the run's cores while the variant runs.
 
 :func:`compare` then sets every claim of every variant beside the run's own: a verdict that differs in any
 variant is a defect of its measure (never a reason to move a threshold), and the spread of each claim's signed
@@ -35,31 +35,31 @@ import yaml
 
 from .claims import Spread, margin_of, read_claims
 
-#: What each variant's environment probe reports (:func:`probe`).
-PROBE = """
-import json, os, numba, numpy
-from threadpoolctl import threadpool_info
-try:
-    from numpy._core._multiarray_umath import __cpu_features__ as features, __cpu_dispatch__ as dispatch
-except ImportError:
-    from numpy.core._multiarray_umath import __cpu_features__ as features, __cpu_dispatch__ as dispatch
-blas = [info.get("architecture", "?") for info in threadpool_info() if info.get("user_api") == "blas"]
-print(json.dumps({
-    "numba_threads": numba.config.NUMBA_NUM_THREADS,
-    "numba_cpu": numba.config.CPU_NAME or "host",
-    "blas": ", ".join(blas),
-    "numpy_dispatch": " ".join(name for name in dispatch if features.get(name)),
-}))
-"""
+
+def _numpy_cpu() -> tuple[list[str], dict]:
+    """(the CPU feature groups this NumPy's SIMD dispatch knows, every feature with whether it is enabled)."""
+    try:
+        from numpy._core._multiarray_umath import __cpu_dispatch__, __cpu_features__
+    except ImportError:  # NumPy 1.x
+        from numpy.core._multiarray_umath import __cpu_dispatch__, __cpu_features__
+    return list(__cpu_dispatch__), dict(__cpu_features__)
 
 
 def numpy_dispatch() -> list[str]:
     """The CPU feature groups this NumPy's SIMD dispatch knows (the names ``NPY_DISABLE_CPU_FEATURES`` takes)."""
-    try:
-        from numpy._core._multiarray_umath import __cpu_dispatch__
-    except ImportError:  # NumPy 1.x
-        from numpy.core._multiarray_umath import __cpu_dispatch__
-    return list(__cpu_dispatch__)
+    return _numpy_cpu()[0]
+
+
+def effective() -> dict:
+    """What the libraries use in this process: numba's threads and CPU, the BLAS kernels, and the NumPy dispatch
+    groups enabled."""
+    import numba
+    from threadpoolctl import threadpool_info
+
+    dispatch, features = _numpy_cpu()
+    blas = [info.get("architecture", "?") for info in threadpool_info() if info.get("user_api") == "blas"]
+    return {"numba_threads": numba.config.NUMBA_NUM_THREADS, "numba_cpu": numba.config.CPU_NAME or "host",
+            "blas": ", ".join(blas), "numpy_dispatch": " ".join(name for name in dispatch if features.get(name))}
 
 
 def variant_environment(variant: dict, base: dict | None = None) -> dict:
@@ -83,7 +83,8 @@ def variant_configuration(config: dict, variant: dict) -> dict:
 def probe(environment: dict) -> dict:
     """What the libraries actually use under ``environment``: numba's threads and CPU, the BLAS kernels and the
     NumPy dispatch groups enabled (a variant that asks for what the machine cannot do shows it here)."""
-    result = subprocess.run([sys.executable, "-c", PROBE], env=environment, capture_output=True, text=True,
+    code = "import json; from particle_replication.robustness import effective; print(json.dumps(effective()))"
+    result = subprocess.run([sys.executable, "-c", code], env=environment, capture_output=True, text=True,
                             timeout=300)
     if result.returncode != 0:
         raise RuntimeError(f"the environment probe failed: {result.stderr[-2000:]}")
@@ -116,7 +117,7 @@ def run_variant(name: str, variant: dict, config: dict, snakefile, directory, co
                                                            indent=1) + "\n")
     command = [sys.executable, "-m", "snakemake", "-s", str(Path(snakefile).resolve()), "--directory", str(directory),
                "--configfile", str(overlay), "--cores", str(cores), "--rerun-incomplete", "results/claims.csv"]
-    with Path(log).open("w") as handle, spinning((os.cpu_count() or 1) if variant.get("load") else 0):
+    with Path(log).open("w") as handle, spinning(cores if variant.get("load") else 0):
         handle.write(f"variant {name}: {json.dumps(variant)}\neffective: {json.dumps(effective)}\n")
         handle.flush()
         start = time.perf_counter()
@@ -175,13 +176,11 @@ def compare(baseline: list, variants: dict) -> list[str]:
     return problems
 
 
-
-
-def report(baseline: list, variants: dict, environments: dict, margin_min: float, run: str) -> str:
-    """Markdown: the variants (what each changed, what the libraries then used, how many verdicts moved), then
-    every claim whose margin is below ``margin_min`` spreads."""
-    problems = compare(baseline, variants)
-    spread = spreads({"run": baseline, **variants})
+def report(variants: dict, environments: dict, problems: list[str], spread: dict[str, Spread], margin_min: float,
+           run: str) -> str:
+    """Markdown: the variants (what each changed, what the libraries then used, how many verdicts moved:
+    ``problems``, from :func:`compare`), then every claim whose margin (``spread``, from :func:`spreads`) is below
+    ``margin_min`` spreads."""
     lines = [f"# Robustness of the {run} run's verdicts", "",
              f"{len(variants)} variants beside the run itself; {len(problems)} verdicts differ.", "",
              "| variant | change | BLAS kernels | NumPy dispatch | numba CPU, threads | verdicts changed | "
@@ -199,13 +198,12 @@ def report(baseline: list, variants: dict, environments: dict, margin_min: float
                      f"{effective.get('numba_cpu', '?')}, {effective.get('numba_threads', '?')} | {changed} | "
                      f"{sum(claim.status == 'abstain' for claim in claims)} |")
     lines += ["", *(f"- {problem}" for problem in problems)] if problems else []
-    kinds = {claim.id: claim.kind for claim in baseline}
     shaky = sorted((s.margin, i) for i, s in spread.items() if s.margin < margin_min)
     lines += ["", f"## Fragile verdicts: {len(shaky)} within {margin_min:g} spreads of their threshold (the smallest "
               "margin over the run and its variants)", ""]
     if shaky:
         lines += ["| claim | kind | margin (spreads) | distance spread | value spread |", "|---|---|---|---|---|"]
-        lines += [f"| `{i}` | {kinds[i]} | {m:.3g} | {spread[i].distance:.3g} | {spread[i].value:.3g} |"
+        lines += [f"| `{i}` | {spread[i].kind} | {m:.3g} | {spread[i].distance:.3g} | {spread[i].value:.3g} |"
                   for m, i in shaky]
     exact = sum(s.distance == 0 for s in spread.values())
     lines += ["", f"{exact} of {len(spread)} claims have the same distance from their threshold in every variant."]
@@ -257,11 +255,13 @@ def main(argv=None) -> int:
         variants[name] = read_claims(path)
         info = Path(path).parents[1] / "environment.json"
         environments[name] = json.loads(info.read_text()) if info.exists() else {}
-    text = report(baseline, variants, environments, args.margin_min, args.run)
+    problems = compare(baseline, variants)
+    spread = spreads({"run": baseline, **variants})
+    text = report(variants, environments, problems, spread, args.margin_min, args.run)
     Path(args.markdown).write_text(text)
-    write_spreads(args.spreads, args.run, spreads({"run": baseline, **variants}))
+    write_spreads(args.spreads, args.run, spread)
     print(text)
-    return 1 if compare(baseline, variants) else 0
+    return 1 if problems else 0
 
 
 if __name__ == "__main__":

@@ -86,9 +86,10 @@ class LoadGuard:
     Two readings: the share of a core the process got (its CPU time over the wall time; a single-threaded
     kernel with a core of its own gets all of it), and the processes the kernel shared the machine with,
     sampled from the run queue (``/proc/loadavg``; the one-minute load average elsewhere) at every
-    :meth:`sample`. The timing is disturbed (:meth:`loaded`) when the share falls below :data:`CPU_SHARE_MIN`
-    (single-threaded work only: ``threads`` = 1) or the other runnable processes, on average, left no core idle
-    beside the timed work's threads (at least cores - threads of them, and at least half a process): a process
+    :meth:`sample`. The timing is disturbed (:func:`disturbance` of its :meth:`readings`) when the share falls
+    below :data:`CPU_SHARE_MIN` (single-threaded work only: ``threads`` = 1) or the other runnable processes, on
+    average, left no core idle beside the timed work's threads (at least cores - threads of them, and at least
+    half a process): a process
     on the other core shares the caches and the memory bandwidth, and moved a quick run's time exponent from
     1.1 to 0.79 while the tests ran beside it. A wall-time check then abstains.
     """
@@ -122,9 +123,6 @@ class LoadGuard:
     def load(self) -> float:
         """The other runnable processes, on average over the samples."""
         return float(np.mean(self.others)) if self.others else math.nan
-
-    def loaded(self) -> bool:
-        return bool(disturbance(self.readings()))
 
     def readings(self) -> dict:
         """The readings, to save beside the times: ``cpu_share``, ``load``, ``cores`` and ``threads``."""
