@@ -1,7 +1,8 @@
 """Remark 3.3: exact error t/(4n) from one Dirac mass (Burgers); for the concave flux the SPD is the
-entropy solution of the discretised data, checked exactly (Rankine-Hugoniot speed and Oleinik's
-condition at every jump, at every n and t of the study; Burgers from two atoms as the contrast) and
-against an independent Godunov solver."""
+entropy solution of the discretised data, tested exactly against Hopf's formula for that solution
+(at every n and t of the study; Burgers from two atoms as the contrast), by construction (the
+Rankine-Hugoniot speed and Oleinik's condition at every jump, a check) and against an independent
+Godunov solver."""
 
 import math
 
@@ -14,6 +15,7 @@ from particle_methods.norms import w1_to_measure
 from particle_methods.sticky.admissibility import admissibility_violation, spd_state
 from particle_methods.sticky.cases import SCALAR_CASES
 from particle_methods.sticky.exact import BurgersSolution
+from particle_methods.sticky.hopf import hopf_gap
 from particle_methods.sticky.measures import Atoms
 from particle_methods.sticky.spd import spd_positions, velocities_from_flux
 from particle_replication.workflow import logged, progress, save_results
@@ -31,15 +33,19 @@ def godunov_distance(flux, x, positions, t, cells_per_unit, cfl):
     return l1_distance_to_step_cdf(values, edges, positions)
 
 
-def admissibility_table(case, n_values, times, points):
-    """The exact test of Remark 3.3 (:func:`admissibility_violation`) on the SPD of ``case`` started from
-    (2.1), for every n of ``n_values`` and t of ``times``: rows of Admissibility results, one per n."""
-    table = []
-    for n in n_values:
-        progress(f"admissibility of the SPD: n = {n}, t = {times.tolist()}")
+def exact_tests(case, n_values, times, points):
+    """The SPD of ``case`` started from (2.1), for every n of ``n_values`` and t of ``times``, against
+    Hopf's formula (:func:`hopf_gap`, the remark) and against (RH) and (E) (:func:`admissibility_violation`,
+    which hold by construction for a concave flux): an array of gaps and rows of Admissibility results,
+    one per n."""
+    gaps, table = np.empty((len(n_values), len(times))), []
+    for a, n in enumerate(n_values):
+        progress(f"the SPD against Hopf's formula, (RH) and (E): n = {n}, t = {times.tolist()}")
         x, v = case.initial_state(int(n))
-        table.append([admissibility_violation(*spd_state(x, v, t), case.flux, points=points) for t in times])
-    return table
+        states = [spd_state(x, v, t) for t in times]
+        gaps[a] = [hopf_gap(x, positions, t, case.flux, points=points) for (positions, _), t in zip(states, times)]
+        table.append([admissibility_violation(*state, case.flux, points=points) for state in states])
+    return gaps, table
 
 
 def run(p, output):
@@ -52,13 +58,14 @@ def run(p, output):
             positions = spd_positions(np.zeros(n), velocities_from_flux(burgers_flux, int(n)), t)
             dirac_errors[i, j] = w1_to_measure(solution, positions)
 
-    # The exact test: the SPD state at each n and t against (RH) and (E), for the concave flux with the
-    # Laplace data (2.1) and, as the contrast where the remark does not apply, Burgers from two atoms.
+    # The exact tests: the SPD state at each n and t against Hopf's formula and against (RH) and (E), for
+    # the concave flux with the Laplace data (2.1) and, as the contrast where the remark does not apply,
+    # Burgers from two atoms.
     check = p["admissibility"]
     check_n = np.asarray(check["n"], dtype=np.int64)
     check_times = np.asarray(check["times"], dtype=float)
-    concave = admissibility_table(SCALAR_CASES["concave_laplace"], check_n, check_times, check["points"])
-    convex_check = admissibility_table(SCALAR_CASES["burgers_two_atoms"], check_n, check_times, check["points"])
+    hopf, concave = exact_tests(SCALAR_CASES["concave_laplace"], check_n, check_times, check["points"])
+    convex_hopf, convex_check = exact_tests(SCALAR_CASES["burgers_two_atoms"], check_n, check_times, check["points"])
 
     # Concave flux, Laplace data (2.1): SPD of the discretised data against Godunov from the same data.
     case = SCALAR_CASES["concave_laplace"]
@@ -91,7 +98,8 @@ def run(p, output):
     progress(f"refined grids for n = {refinement['n']}, t = {refinement['t']:g}: {refinement['cells_per_unit']}")
     refined = np.array([godunov_distance(CONCAVE, x, positions, refinement["t"], int(c), p["cfl"])
                         for c in refinement["cells_per_unit"]])
-    save_results(output, admissibility_n=check_n, admissibility_times=check_times,
+    save_results(output, admissibility_n=check_n, admissibility_times=check_times, hopf_gaps=hopf,
+                 convex_hopf_gaps=convex_hopf,
                  admissibility_rankine_hugoniot=[[r.rankine_hugoniot for r in row] for row in concave],
                  admissibility_entropy=[[r.entropy for r in row] for row in concave],
                  admissibility_clusters=[[r.clusters for r in row] for row in concave],

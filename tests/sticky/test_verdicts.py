@@ -2,6 +2,7 @@
 paper states and fails on a plausible wrong one (a rate without its log factor, a plateau, a state
 that never recovers, a cluster that splits at the wrong crossing, a quadratic cost)."""
 
+import functools
 import math
 from pathlib import Path
 
@@ -10,8 +11,10 @@ import pytest
 import yaml
 
 from particle_methods.finite_volume.fluxes import burgers_flux, concave_flux
-from particle_methods.sticky import admissibility_violation, spd_state, velocities_from_flux
+from particle_methods.sticky import admissibility_violation, spd_state
 from particle_methods.sticky.cases import SCALAR_CASES
+from particle_methods.sticky.hopf import hopf_gap
+from particle_methods.sticky.spd import spd_positions
 from particle_methods.systems import MINUS, PLUS, PSystem
 from particle_replication.claims import ROUNDING
 from particle_replication.rates import Recorder
@@ -120,31 +123,18 @@ def two_atoms_spd(n, t):
     return spd_state(*SCALAR_CASES["burgers_two_atoms"].initial_state(n), t)
 
 
-def asymmetric(n):
-    """Sorted normal samples with the concave flux's velocities: clusters of unequal sizes merge."""
-    return np.sort(np.random.default_rng(n).normal(size=n)), velocities_from_flux(concave_flux, n)
-
-
-def free_flight(n, t):
-    """No sticking: the particles cross."""
-    x, v = asymmetric(n)
-    return x + t * v, v
-
-
-def late_merge(n, t):
-    """The SPD's positions, each particle still at the velocity of its cluster of time t - 1/2."""
-    x, v = asymmetric(n)
-    return spd_state(x, v, t)[0], spd_state(x, v, max(t - 0.5, 0.0))[1]
-
-
 def admissibility(state, flux=concave_flux, n_values=(4, 32), times=(0.0, 2.0, 3.0, 17.0)):
-    """The keys of the exact test, measured by admissibility_violation on the states ``state(n, t)``."""
+    """The keys of the exact tests: (RH) and (E) by admissibility_violation on the states ``state(n, t)``,
+    Hopf's formula by hopf_gap on the same positions from the pipeline's initial atoms of ``flux``."""
     table = [[admissibility_violation(*state(n, t), flux) for t in times] for n in n_values]
+    case = SCALAR_CASES["concave_laplace" if flux is concave_flux else "burgers_two_atoms"]
+    gaps = [[hopf_gap(case.initial_state(n)[0], state(n, t)[0], t, flux) for t in times] for n in n_values]
     return {"admissibility_n": np.array(n_values), "admissibility_times": np.array(times),
             "admissibility_rankine_hugoniot": np.array([[r.rankine_hugoniot for r in row] for row in table]),
             "admissibility_entropy": np.array([[r.entropy for r in row] for row in table]),
             "admissibility_clusters": np.array([[r.clusters for r in row] for row in table]),
-            "convex_admissibility": np.full((len(n_values), len(times)), 0.1)}
+            "convex_admissibility": np.full((len(n_values), len(times)), 0.1),
+            "hopf_gaps": np.array(gaps), "convex_hopf_gaps": np.full((len(n_values), len(times)), 0.1)}
 
 
 def remark33(distance_shape, dirac_factor=4.0, state=concave_spd, flux=concave_flux):
@@ -172,17 +162,58 @@ def test_remark33_concave_passes_on_the_spd_of_the_concave_flux():
     assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims]
 
 
-@pytest.mark.parametrize("state, flux", [(two_atoms_spd, burgers_flux), (free_flight, concave_flux),
-                                         (late_merge, concave_flux)])
-def test_remark33_concave_fails_where_the_spd_is_not_the_entropy_solution(state, flux):
-    """A convex flux (Figure 2: upward jumps are rarefactions), particles that cross instead of sticking,
-    clusters whose momenta merge late."""
-    assert status(remark33_claims(remark33(lambda h: 0.3 * h, state=state, flux=flux)), "remark33.concave") == "fail"
+def laplace_spd(n, t, time_factor=1.0, velocity_factor=1.0):
+    """The pipeline's SPD of the concave flux from the Laplace data (2.1), at time_factor t with
+    velocity_factor times the velocities of section 1.1.3 (a position update or clock off by a factor)."""
+    x, v = SCALAR_CASES["concave_laplace"].initial_state(n)
+    return spd_positions(x, velocity_factor * v, time_factor * t), v
+
+
+def sorted_free_flight(n, t):
+    """No sticking, the free positions sorted: the SPD until the first collision, then not."""
+    x, v = SCALAR_CASES["concave_laplace"].initial_state(n)
+    return np.sort(x + t * v), v
+
+
+def random_integers(n, t):
+    """Sorted random integers: order-preserving positions unrelated to the data."""
+    return np.sort(np.random.default_rng(n).integers(-5, 6, size=n)).astype(float), np.zeros(n)
+
+
+WRONG_STATES = {
+    "at 2t": functools.partial(laplace_spd, time_factor=2.0),
+    "x2 velocities": functools.partial(laplace_spd, velocity_factor=2.0),
+    "x1/2 velocities": functools.partial(laplace_spd, velocity_factor=0.5),
+    "sorted free flight": sorted_free_flight,
+    "random sorted integers": random_integers,
+}
+
+
+@pytest.mark.parametrize("name", WRONG_STATES)
+def test_remark33_concave_fails_on_order_preserving_wrong_states(name):
+    """Each state keeps the particles' order; those from the SPD move each cluster at the mean of its
+    velocities, so (RH) and (E) (the check remark33.oleinik) cannot see them; Hopf's formula does."""
+    data = remark33(lambda h: 0.3 * h, state=WRONG_STATES[name])
+    assert status(remark33_claims(data), "remark33.concave") == "fail", data["hopf_gaps"]
+
+
+def test_remark33_oleinik_is_blind_to_a_wrong_clock():
+    """Why the (RH)-(E) test is a check: the SPD at 2t satisfies it exactly."""
+    data = remark33(lambda h: 0.3 * h, state=lambda n, t: concave_spd(n, 2 * t))
+    assert status(remark33_claims(data), "remark33.oleinik") == "pass"
+    assert status(remark33_claims(data), "remark33.concave") == "fail"
+
+
+def test_remark33_concave_fails_for_a_convex_flux():
+    """Burgers from the two atoms of Figure 2: every upward jump is a rarefaction, which G lies above."""
+    data = remark33(lambda h: 0.3 * h, state=two_atoms_spd, flux=burgers_flux)
+    assert status(remark33_claims(data), "remark33.concave") == "fail"
+    assert status(remark33_claims(data), "remark33.oleinik") == "fail"
 
 
 def test_remark33_concave_fails_on_a_violation_just_above_rounding():
     data = remark33(lambda h: 0.3 * h)
-    data["admissibility_entropy"][1, 2] = 10 * ROUNDING
+    data["hopf_gaps"][1, 2] = 10 * ROUNDING
     assert status(remark33_claims(data), "remark33.concave") == "fail"
 
 

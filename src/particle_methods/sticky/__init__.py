@@ -15,13 +15,15 @@ Public entry points:
   MSPD itself, event by event (section 5.2);
 - :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants;
 - :func:`spd_state`, :func:`admissibility_violation`: the SPD's positions and velocities at time t, and
-  the exact test of Remark 3.3 (Rankine-Hugoniot speeds and Oleinik's condition at every jump).
+  the Rankine-Hugoniot speeds and Oleinik's condition at every jump; :func:`hopf_gap`: the exact test of
+  Remark 3.3, a state against Hopf's formula for the entropy solution of the discretised data.
 """
 
 from ..finite_volume.fluxes import burgers_flux, concave_flux
 from ..systems import PSystem
 from .admissibility import Admissibility, admissibility_violation, spd_state
 from .exact import BurgersSolution, ConcaveLaplaceSolution
+from .hopf import hopf_gap
 from .measures import (
     Atoms,
     Laplace,
@@ -58,6 +60,7 @@ __all__ = [
     "burgers_flux",
     "cluster_sizes",
     "concave_flux",
+    "hopf_gap",
     "median_quantiles",
     "mspd_exact",
     "mspd_positions",
