@@ -86,12 +86,12 @@ def scalar_study(name, p, timing):
 
 
 def reference(limits, name, domain):
-    """The case's reference: of the exact MSPD (n = limit_n[-1]) and the upwind scheme for (1.7) on
+    """The case's reference: of the exact MSPD (n = reference_n) and the upwind scheme for (1.7) on
     upwind_reference_cells, which approximate the same MSPD limit, the one with the smaller distance
     to its own half resolution (its error). Returns (index in REFERENCES, that error, distance to a
     configuration, distance to a cell function)."""
-    errors = (float(limits[f"{name}_mspd_gap"]), float(limits[f"{name}_upwind_gap"]))
-    mspd, w = limits[f"{name}_mspd"], limits[f"{name}_upwind_w"]
+    errors = (float(limits[f"{name}_reference_gap"]), float(limits[f"{name}_upwind_gap"]))
+    mspd, w = limits[f"{name}_reference_mspd"], limits[f"{name}_upwind_w"]
     fine = np.linspace(*domain, int(limits["upwind_reference_cells"]) + 1)
     if errors[1] < errors[0]:
         return 1, errors[1], lambda x: distance_to_cells(x, w, fine), lambda v, edges: cells_distance(v, edges, w, fine)
@@ -124,8 +124,9 @@ def psystem_study(system, name, x0, p, limits, timing):
             "upwind", lambda w0=w0, edges=edges: upwind_diagonal(system, w0, edges, t, p["cfl"], return_steps=True),
             lambda result, seconds, edges=edges, cells=cells: (to_cells(result[0], edges),
                                                                system.d * cells * result[1], seconds)))
-    progress(f"{name}: reference {REFERENCES[chosen]}, own error {own_error:.3g}")
-    return dict(tspd=tspd, exact=exact_runs, upwind=upwind_runs, reference=REFERENCES[chosen],
+    size = (f"n = {int(limits['reference_n'])}", f"{int(limits['upwind_reference_cells'])} cells")[chosen]
+    progress(f"{name}: reference {REFERENCES[chosen]} ({size}), own error {own_error:.3g}")
+    return dict(tspd=tspd, exact=exact_runs, upwind=upwind_runs, reference=f"{REFERENCES[chosen]}, {size}",
                 reference_error=own_error)
 
 

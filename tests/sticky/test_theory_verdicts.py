@@ -8,6 +8,9 @@ import numpy as np
 import pytest
 import yaml
 
+from particle_methods.norms import w1_to_measure
+from particle_methods.sticky.spd import spd_positions, velocities_from_flux
+from particle_methods.sticky.theory import CubicDiracSolution, cubic_flux
 from particle_replication.claims import ROUNDING
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import sticky_theory as v
@@ -89,13 +92,42 @@ def test_every_claim_passes_on_the_stated_behaviour():
     data = {**scalar(), **steps(), **randoms()}
     claims = v.claims({"theory": data, "tspd_convergence": study()}, CONFIG, quiet())
     assert all(claim.status == "pass" for claim in claims), [(c.id, c.measured) for c in claims if c.status != "pass"]
-    assert len({claim.id for claim in claims}) == len(claims) == 12
+    assert len({claim.id for claim in claims}) == len(claims) == 13
     assert all(claim.id.startswith("sticky.theory.") for claim in claims)
 
 
+def cubic_prop32(positions, n_values=(4, 16, 64), times=(0.5, 2.0)):
+    """Proposition 3.2's distances for the cubic flux from delta_0, as the data job measures them, with the SPD
+    replaced by ``positions(x, v, t)``."""
+    return np.array([[w1_to_measure(CubicDiracSolution(0.0, t),
+                                    np.sort(positions(np.zeros(n), velocities_from_flux(cubic_flux, n), t)))
+                      for t in times] for n in n_values])
+
+
+WRONG_CUBIC = {
+    "x2 velocities": lambda x, v, t: spd_positions(x, 2 * v, t),
+    "at 2t": lambda x, v, t: spd_positions(x, v, 2 * t),
+    "free flight": lambda x, v, t: x + t * v,
+}
+
+
+def test_prop32_passes_on_the_cubic_spd():
+    data = scalar()
+    data["cubic_prop32"] = cubic_prop32(spd_positions)
+    assert status(v.scalar_claims(data), "prop32.bound") == "pass"
+
+
+@pytest.mark.parametrize("name", WRONG_CUBIC)
+def test_prop32_fails_on_wrong_cubic_dynamics(name):
+    data = scalar()
+    data["cubic_prop32"] = cubic_prop32(WRONG_CUBIC[name])
+    assert status(v.scalar_claims(data), "prop32.bound") == "fail"
+
+
 @pytest.mark.parametrize("data, name", [
-    (scalar(burgers=1.2), "prop32.bound"),              # a non-entropic error beyond t L_LC / n
     (scalar(cubic=1.0 + 1e-6), "prop32.bound"),         # just above the bound, beyond rounding
+    (scalar(burgers=1.2), "scalar_identities"),         # a non-entropic error beyond Burgers' identity
+    (scalar(doubling=(0.5, 1e-6, 0.125)), "scalar_identities"),  # the concave doubling not the same solution
     (scalar(doubling=(0.5, 0.0, 1.3)), "eq33.bound"),   # the doubled SPD too far from the SPD
 ])
 def test_scalar_bounds_can_fail(data, name):
@@ -108,7 +140,7 @@ def test_scalar_bounds_can_fail(data, name):
     ({"count": 4}, "eq45.count"),                 # a pair counted at more than m = 3 iterates
     ({"shrink": 0.9}, "remark43.shrink"),         # a pair closing slower than L_USH Delta
     ({"window": 1.1}, "remark43.window"),         # a collision from farther than 2 L_C Delta
-    ({"per_delta": 16.0}, "prop41.sup_t"),        # the MSPD's distance above C Delta
+    ({"per_delta": 16.0}, "prop41.grid_times"),        # the MSPD's distance above C Delta
 ])
 def test_step_claims_can_fail(knobs, name):
     assert status(v.step_claims(steps(**knobs)), name) == "fail"
