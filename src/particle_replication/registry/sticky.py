@@ -72,6 +72,7 @@ LIMIT_KEYS = (
     "t",
     "cases",
     "limit_n",
+    "reference_n",
     "reference_cells",
     "upwind_reference_cells",
     "*_limit_to_hll",
@@ -83,6 +84,8 @@ LIMIT_KEYS = (
     "*_hll_w",
     "*_upwind_w",
     "*_mspd",
+    "*_reference_mspd",
+    "*_reference_gap",
 )
 
 
@@ -152,6 +155,8 @@ RESULTS = (
             "admissibility_entropy",
             "admissibility_clusters",
             "convex_admissibility",
+            "hopf_gaps",
+            "convex_hopf_gaps",
             "refined_cells",
             "refined_distances",
             "refined_n",
@@ -170,8 +175,9 @@ RESULTS = (
             "convex_t",
         ),
         Job(
-            "Remark 3.3: the exact t/(4n) error from one Dirac mass; the exact admissibility test of the SPD "
-            "(Rankine-Hugoniot speeds, Oleinik's condition); SPD against Godunov",
+            "Remark 3.3: the exact t/(4n) error from one Dirac mass; the SPD against Hopf's formula for the "
+            "entropy solution (the exact test) and against Rankine-Hugoniot speeds and Oleinik's condition (a "
+            "check); SPD against Godunov",
             lambda s: {"cfg": s["remark33"]},
         ),
     ),
