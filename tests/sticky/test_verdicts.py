@@ -434,7 +434,8 @@ PREDICTIONS = {"spd_burgers_two_atoms": (1, 0), "spd_concave_laplace": (1, 1.0),
                   for method in ("tspd", "exact", "upwind") for case in ("rarefaction", "shocks")}}
 BEYOND = {"window": 3, "limit_order_min": 0.8, "separation": 3.0, "reference_share": 0.2,
           "predictions": {key: {"k": k, "log_scale": s} for key, (k, s) in PREDICTIONS.items()},
-          "exponent_tolerance": 0.1, "events_band": (1.8, 2.2), "time_floor": 0.01, "time_band": (0.8, 1.25),
+          "exponent_tolerance": CONFIG["beyond"]["exponent_tolerance"],
+          "exponent_uncertainty": CONFIG["beyond"]["exponent_uncertainty"], "events_band": (1.8, 2.2), "time_floor": 0.01, "time_band": (0.8, 1.25),
           "scalar_ratio_min": 10.0, "same_cost_band": (0.1, 10.0), "domain": (-3.0, 3.0)}
 
 
@@ -563,3 +564,39 @@ def test_values_at_an_error_are_interpolated_never_extrapolated():
     assert v.value_at_error(errors, seconds, 10 ** -1.5) == pytest.approx(10**0.5)
     assert math.isnan(v.value_at_error(errors, seconds, 1e-4))
     assert v.common_error(errors, np.array([0.5, 0.05])) == 0.05
+
+
+def test_the_reference_error_enters_the_exponent_as_an_interval():
+    n = np.array([100.0, 200.0])
+    errors, work = 1.0 / n, n**2
+    assert v.exponent_interval(errors, work, 0.0) == pytest.approx((2.0, 2.0))
+    lower, upper = v.exponent_interval(errors, work, 1e-3)
+    # Two runs: exact at the corners, the most accurate error moved by -r and +r.
+    assert lower == pytest.approx(math.log(4.0) / math.log((1e-2 + 1e-3) / (5e-3 - 1e-3)))
+    assert upper == pytest.approx(math.log(4.0) / math.log((1e-2 - 1e-3) / (5e-3 + 1e-3)))
+    assert v.exponent_interval(errors, work, 5e-3) == (-math.inf, math.inf)  # an error the reference cannot see
+
+
+def test_the_window_skips_the_runs_the_reference_blurs():
+    n = np.array([25.0, 50.0, 100.0, 200.0, 400.0, 800.0])
+    errors = 1.0 / n
+    assert sorted(v.exponent_window(errors, n**2, 1e-5, 3, 0.1).tolist()) == [3, 4, 5]  # a sharp reference
+    # A reference error of 2e-4 moves the exponent of the three most accurate runs by more than 0.1.
+    assert sorted(v.exponent_window(errors, n**2, 2e-4, 3, 0.1).tolist()) == [1, 2, 3]
+    assert v.exponent_window(errors, n**2, 1e-2, 3, 0.1).size == 0
+
+
+@pytest.mark.parametrize("case", ["shocks", "rarefaction"])
+@pytest.mark.parametrize("method", ["tspd", "exact"])
+def test_an_order_0_8_method_falls_outside_the_log_factor_ranges_at_the_configs_sizes(method, case):
+    """The competing exponents 2 (order 1 with the data's log factor) and 2.5 (order 0.8, the upwind scheme on
+    the shock data) land on different sides of the ranges, at the sizes of the full run."""
+    sizes = np.asarray(CONFIG["beyond"][f"{method}_n"], dtype=float)
+    window = CONFIG["beyond"]["window"]
+    p = {**BEYOND, "window": window}
+    label = f"p-system, {case}"
+    log_factor = v.beyond_exponent_claim(quiet(), p, method, case, label,
+                                         runs((1.0 + np.log(sizes)) / sizes, sizes**2, sizes), sizes, 0.0, "exact")
+    slower = v.beyond_exponent_claim(quiet(), p, method, case, label, runs(sizes**-0.8, sizes**2, sizes), sizes, 0.0,
+                                     "exact")
+    assert (log_factor.status, slower.status) == ("pass", "fail"), (log_factor.measured, slower.measured)

@@ -12,6 +12,7 @@ resolutions named in the config, and every fit is recorded with its pairwise and
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 
 import numpy as np
@@ -516,6 +517,42 @@ def resolvable(errors, reference_error: float, share: float) -> np.ndarray:
     return np.flatnonzero(np.asarray(errors, dtype=float) >= reference_error / share)
 
 
+def cost_slope(errors, work) -> float:
+    """Least-squares slope of log(work) against log(1/error) (the paper's O(eps^-2) has slope 2)."""
+    return float(np.polyfit(np.log(1.0 / np.asarray(errors, dtype=float)), np.log(np.asarray(work, dtype=float)),
+                            1)[0])
+
+
+def exponent_interval(errors, work, reference_error: float) -> tuple[float, float]:
+    """The cost exponent of ``errors`` measured against a reference with its own error r: the true errors
+    lie in [e - r, e + r] (triangle inequality), so the exponent lies between the smallest and largest slope
+    over the corners of that box (the slope of two runs is monotone in each error: exact for two runs).
+    (-inf, inf) when an error does not exceed r."""
+    errors = np.asarray(errors, dtype=float)
+    if reference_error == 0.0:
+        slope = cost_slope(errors, work)
+        return slope, slope
+    if not np.all(errors > reference_error):
+        return -math.inf, math.inf
+    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=errors.size)))
+    slopes = [cost_slope(errors + sign * reference_error, work) for sign in signs]
+    return float(min(slopes)), float(max(slopes))
+
+
+def exponent_window(errors, work, reference_error: float, window: int, uncertainty: float) -> np.ndarray:
+    """Indices of the ``window`` most accurate consecutive runs (by error) whose exponent interval
+    (:func:`exponent_interval`) is at most ``2 uncertainty`` wide: the reference's own error enters the
+    exponent, and the runs it would blur are left out; empty if no window qualifies."""
+    errors = np.asarray(errors, dtype=float)
+    ranked = np.argsort(errors)
+    for start in range(errors.size - window + 1):
+        chosen_ = ranked[start:start + window]
+        lower, upper = exponent_interval(errors[chosen_], np.asarray(work, dtype=float)[chosen_], reference_error)
+        if upper - lower <= 2.0 * uncertainty:
+            return chosen_
+    return np.zeros(0, dtype=np.int64)
+
+
 def cost_exponent(rates: Recorder, name: str, errors, work, window: int, label: str = "") -> float:
     """Slope of log(work) against log(1/error) on the ``window`` most accurate runs given (the paper's
     O(eps^-2) has slope 2)."""
@@ -552,19 +589,22 @@ COST_SOURCES = {
 def beyond_exponent_claim(rates: Recorder, p, method: str, case: str, label: str, runs, sizes, reference_error: float,
                           reference: str):
     """The cost exponent of ``method`` on ``case`` against its predicted range (config ``predictions``),
-    fitted on the ``window`` most accurate runs the reference resolves."""
+    fitted on the ``window`` most accurate runs whose exponent the reference's own error leaves within
+    +-``exponent_uncertainty`` (:func:`exponent_window`); the interval is in the claim's text."""
     window = p["window"]
-    kept = resolvable(runs[0], reference_error, p["reference_share"]) if reference_error > 0 else np.arange(
-        len(runs[0]))
     k, log_scale = (p["predictions"][f"{method}_{case}"][key] for key in ("k", "log_scale"))
-    best = kept[np.argsort(runs[0][kept])][:window]
+    best = exponent_window(runs[0], runs[1], reference_error, window, p["exponent_uncertainty"])
     smallest = float(np.min(np.asarray(sizes, dtype=float)[best])) if best.size else math.nan
     band = predicted_exponents(k, log_scale, smallest, p["exponent_tolerance"]) if best.size else (k, k)
     exponent = cost_exponent(rates, f"{method}_{case}", runs[0][best], runs[1][best], best.size, label) \
         if best.size >= 2 else math.nan
     log_text = f"with a log factor, N >= {smallest:g}" if log_scale else "no log factor"
-    resolved = "" if reference_error == 0 else (f"; {best.size} of the runs the reference ({reference}, own error "
-                                                f"{reference_error:.2g}) resolves")
+    resolved = ""
+    if reference_error > 0:
+        lower, upper = exponent_interval(runs[0][best], runs[1][best], reference_error) if best.size else (
+            math.nan, math.nan)
+        resolved = (f"; against the reference ({reference}, own error {reference_error:.2g}) the exponent lies in "
+                    f"[{lower:.3f}, {upper:.3f}], the most accurate runs within +-{p['exponent_uncertainty']:g}")
     return claim(c.between, f"beyond.exponent.{method}_{case}", "derived",
                  COST_SOURCES.get(method, "section 5.2 (O(t^2/eps^2))"), label,
                  f"{label}: {COST_TEXTS[method]} against 1/error, exponent on the {window} most accurate runs"
@@ -629,10 +669,10 @@ def beyond_claims(d, rates: Recorder, p):
                   f"p-system, {name}", f"{name} case: crossings of the exact MSPD up to t = {float(d['t']):g} against "
                   f"n, exponent on the {window} largest n", *p["events_band"], events, published="O(n^2)"),
             claim(c.at_least, f"beyond.cost.resolved_{name}", "check", "our reference", f"p-system, {name}",
-                  f"{name} case: the reference ({reference}, own error {reference_error:.2g}) resolves at least "
-                  f"{window} runs of each method (errors at least 1/{p['reference_share']:g} of its own); fewest",
-                  window, float(min(resolvable(r[0], reference_error, p["reference_share"]).size
-                                    for r in runs.values()))),
+                  f"{name} case: the reference ({reference}, own error {reference_error:.2g}) leaves every method "
+                  f"{window} runs whose cost exponent it blurs by at most +-{p['exponent_uncertainty']:g}; fewest",
+                  window, float(min(exponent_window(r[0], r[1], reference_error, window,
+                                                    p["exponent_uncertainty"]).size for r in runs.values()))),
         ]
         if name == "rarefaction":
             limit_order = rates.add(order(f"{PAPER}.beyond.limit.{name}", "n", 1.0 / limit_n, to_hll, window, name))
