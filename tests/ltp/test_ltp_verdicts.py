@@ -331,7 +331,8 @@ def fig6(b25_widths=SHRINKING, b25_masses=GATHERING, b15_widths=SETTLING, b15_ma
                      f"case{i}_concentration_masses": both_sides(masses),
                      f"case{i}_centres": np.tile([-0.5, -0.45, 0.45, 0.5], (TIMES.size, 1)),
                      f"case{i}_weights": np.array(b25_weights), f"case{i}_edge_ratio": np.full(TIMES.size, edge_ratio),
-                     f"case{i}_profile_times": TIMES[TIMES >= 10.0], f"case{i}_profile_changes": b15_changes[TIMES >= 10.0]})
+                     f"case{i}_profile_times": TIMES[TIMES >= 10.0],
+                     f"case{i}_profile_changes": b15_changes[TIMES >= 10.0]})
     return data
 
 

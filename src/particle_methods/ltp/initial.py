@@ -123,8 +123,8 @@ DENSITIES = {"rho1": _gaussian_bumps(), "rho2": _indicator(), "rho3": _bump()}
 
 def golden_atoms(count: int, lower: float, upper: float):
     """``count`` atoms of equal mass 1/count at lower + (upper - lower) frac(i g), i = 1..count, g the golden
-    ratio (sorted): a measure with no density, whose positions fall at every phase of any grid step (their
-    fractional parts (x - lower)/h are equidistributed), so that no h puts them all at cell centres or edges."""
+    ratio (sorted): a measure with no density, spread over [lower, upper] with no regular spacing, so that no grid
+    step h puts them all at cell centres or all at cell edges."""
     count = integer_at_least("count", count, 1, MAX_PARTICLES)
     lower, upper = finite_number("lower", lower), finite_number("upper", upper)
     if not lower < upper:

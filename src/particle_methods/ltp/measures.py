@@ -178,7 +178,8 @@ def shrink_rate_ratios(times, sizes, window: float, since: float, floor: float, 
     rate = np.log(sizes[middle] / sizes[ends]) / window
     before = np.maximum(np.log(sizes[first] / sizes[middle]) / window, floor)
     if algebraic:  # the same log-shrinks (and floor), per unit of log t instead of t
-        return times[ends], (rate / np.log(times[ends] / times[middle])) / (before / np.log(times[middle] / times[first]))
+        exponent = rate / np.log(times[ends] / times[middle])
+        return times[ends], exponent / (before / np.log(times[middle] / times[first]))
     return times[ends], rate / before
 
 
@@ -196,18 +197,22 @@ def concentration_series(simulation, fraction: float, radius: float) -> tuple[np
     return np.array(widths), np.array(masses)
 
 
-#: Gauss-Legendre nodes per polynomial piece of :func:`l1_distance` (exact for the difference of two cubics).
+#: Gauss-Legendre nodes per part of :func:`l1_distance` (exact for the difference of two cubics), and parts per
+#: polynomial piece (the kink of |.| where the difference changes sign inside a part costs a share of about the
+#: part's length squared: 1e-4 relative with 8 parts, against 1e-2 with one).
 L1_NODES = 3
+L1_PARTS = 8
 _L1_NODES, _L1_WEIGHTS = np.polynomial.legendre.leggauss(L1_NODES)
 
 
 def l1_distance(first, second) -> float:
-    """int |rho_a - rho_b| for two :class:`~.solver.Particles` reconstructions (2.27): on every piece between
-    consecutive shape breaks of either, both are polynomials, integrated by Gauss-Legendre (exact for the
-    difference, up to the kink of |.| where it changes sign inside a piece)."""
+    """int |rho_a - rho_b| for two :class:`~.solver.Particles` reconstructions (2.27): every piece between
+    consecutive shape breaks of either, where both are polynomials, is cut into L1_PARTS parts integrated by
+    Gauss-Legendre (exact for the difference, up to the kink of |.| where it changes sign inside a part)."""
     instance("first", first, Particles)
     instance("second", second, Particles)
-    points = np.union1d(first.breaks, second.breaks)
+    breaks = np.union1d(first.breaks, second.breaks)
+    points = np.append(breaks[:-1, None] + np.diff(breaks)[:, None] * np.arange(L1_PARTS) / L1_PARTS, breaks[-1])
     a, b = points[:-1], points[1:]
     nodes = (0.5 * (a + b)[:, None] + 0.5 * (b - a)[:, None] * _L1_NODES).ravel()
     difference = np.abs(first.density(nodes) - second.density(nodes)).reshape(a.size, L1_NODES)

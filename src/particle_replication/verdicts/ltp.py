@@ -472,11 +472,12 @@ def _shifted_smooth(d, steady, resolved, limit, measure):
         if stop > start:
             value = float(oscillation[start:stop].max())
     return claim(c.at_most, "fig8.shifted.ltp_smooth", "paper", "Figure 8, section 6.2 (stationary state)", "8",
-                 f"the LTP stationary state on the grid (k + {offset:g}) h has no oscillations, largest from its steady "
-                 f"time t = {steady:g} to the last record before the particle widths reach {resolved:g} times the "
-                 f"rounding level of the positions (first at t = {end:g}; at t = {float(times[-1]):g} the widths run "
-                 f"from {widths[-1].min():.2g} to {widths[-1].max():.2g}): {measure}; the measure at the records "
-                 f"(t: measure) {later}", limit, value, published="no oscillation")
+                 f"the LTP stationary state on the grid (k + {offset:g}) h has no oscillations, largest from its "
+                 f"steady time t = {steady:g} to the last record before the smallest particle width falls below "
+                 f"{resolved:g} times the rounding level of the positions (first at t = {end:g}; at t = "
+                 f"{float(times[-1]):g} the widths run from {widths[-1].min():.2g} to {widths[-1].max():.2g}): "
+                 f"{measure}; the measure at the records (t: measure) {later}", limit, value,
+                 published="no oscillation")
 
 
 def fig8_claims(d, p, rules):
