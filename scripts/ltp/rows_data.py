@@ -54,7 +54,9 @@ def run(p, concentration, output):
             widths, masses = concentration_series(sim, concentration["fraction"], concentration["radius"])
             centre = np.argmin(np.abs(grid))
             edge_ratio = densities.max(axis=1) / densities[:, centre]
-            profile_times, changes = profile_changes(sim, concentration["window"])
+            # at every tenth of a window: the steady time to that resolution
+            every = max(1, round(0.1 * concentration["window"] / dt))
+            profile_times, changes = profile_changes(sim, concentration["window"], every)
             results.update({f"{prefix}_concentration_widths": widths, f"{prefix}_concentration_masses": masses,
                             f"{prefix}_edge_ratio": edge_ratio, f"{prefix}_profile_times": profile_times,
                             f"{prefix}_profile_changes": changes})

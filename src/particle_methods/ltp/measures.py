@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from ..validation import finite_array, finite_number, in_interval, instance, positive, same_length
+from ..validation import finite_array, finite_number, in_interval, instance, integer_at_least, positive, same_length
 from .solver import Particles, Simulation
 
 #: A shrink rate (per unit time) and a slope of g below these are zero up to rounding.
@@ -219,13 +219,15 @@ def l1_distance(first, second) -> float:
     return float(np.sum(0.5 * (b - a) * (difference @ _L1_WEIGHTS)))
 
 
-def profile_changes(simulation, window: float) -> tuple[np.ndarray, np.ndarray]:
-    """(t, ||rho_h(t) - rho_h(t')||_L1) at every record t of a :class:`~.solver.Simulation` with a record t' at or
-    before t - ``window`` (t' the latest such): how much the profile moves over one window."""
+def profile_changes(simulation, window: float, every: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """(t, ||rho_h(t) - rho_h(t')||_L1) at every ``every``-th record t of a :class:`~.solver.Simulation` with a
+    record t' at or before t - ``window`` (t' the latest such): how much the profile moves over one window."""
     instance("simulation", simulation, Simulation)
     window = positive("window", window)
+    every = integer_at_least("every", every, 1)
     times = simulation.times
     earlier = np.searchsorted(times, times - window + 1e-9 * window, side="right") - 1
     usable = np.flatnonzero(earlier >= 0)
+    usable = usable[usable % every == 0]
     return times[usable], np.array([l1_distance(simulation.at(int(i)), simulation.at(int(earlier[i])))
                                     for i in usable])
