@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from particle_methods.ltp import density_named, exact_density, potential, simulate
+from particle_methods.ltp import density_named, exact_density, exact_support, potential, simulate
 from particle_methods.norms import grid_errors
 from particle_replication.workflow import logged, progress, save_results
 
@@ -54,6 +54,11 @@ def run(p, output):
         dt_errors.append([grid_errors(run, exact_density(initial, w, t, grid), grid) for run in runs])
         dt_gaps.append([grid_errors(run, runs[-1], grid) for run in runs[:-1]])
     dt_errors, dt_gaps = np.array(dt_errors), np.array(dt_gaps)
+    # The cut-off of the data at their support's ends: the exact density's jump there at t (no continuous rho_h
+    # comes closer than half of it in Linf).
+    lower, upper = exact_support(initial, w, t)
+    inside = 1e-12 * (upper - lower)
+    edge_jump = float(exact_density(initial, w, t, np.array([lower + inside, upper - inside])).max())
     save_results(
         output, grid=grid, exact=exact_density(initial, w, t, grid), h_values=h_values,
         ltp_errors=np.array(ltp_errors), sp_errors=np.array(sp_errors), mass_error=np.array(mass_error),
@@ -64,7 +69,7 @@ def run(p, output):
         scan_dt=scan["dt"], scan_h=scan["h"], fine_dt=fine, scan_ltp_fine=np.array(scan_ltp_fine),
         scan_sp_fine=scan_sp_fine, dt_h=np.asarray(study["h_values"], float),
         dt_values=np.asarray(study["dt_values"], float), dt_errors=dt_errors, dt_gaps=dt_gaps,
-        dt_fit_points=study["fit_points"],
+        dt_fit_points=study["fit_points"], edge_jump=edge_jump,
     )
 
 

@@ -3,7 +3,8 @@
 Every step is recorded, for the collapse measure of Figure 5 (the smallest particle width and the
 spread of the centres at every step). Figure 6 runs continue past the figure's final time to
 ``t_long`` with the same time step, for the concentration measures (width holding a fraction of
-each side's mass, mass near each side's peak, density at the edge over the centre). Figure 6's case
+each side's mass, mass near each side's peak, density at the edge over the centre, and the L1 change of the
+density over one concentration window, for the steadiness of a profile). Figure 6's case
 ``edge_refinement["b"]`` runs again at the coarser ``edge_refinement["h_values"]`` (same dt and final time):
 the largest density at the centres at every record, with the widths of the concentration measure that
 date its steady state, at every h (the figure's included)."""
@@ -11,7 +12,7 @@ date its steady state, at every h (the figure's included)."""
 import numpy as np
 
 from particle_methods.ltp import density_named, potential, simulate
-from particle_methods.ltp.measures import concentration_series
+from particle_methods.ltp.measures import concentration_series, profile_changes
 from particle_replication.workflow import logged, progress, save_results
 
 
@@ -53,8 +54,12 @@ def run(p, concentration, output):
             widths, masses = concentration_series(sim, concentration["fraction"], concentration["radius"])
             centre = np.argmin(np.abs(grid))
             edge_ratio = densities.max(axis=1) / densities[:, centre]
+            # at every tenth of a window: the steady time to that resolution
+            every = max(1, round(0.1 * concentration["window"] / dt))
+            profile_times, changes = profile_changes(sim, concentration["window"], every)
             results.update({f"{prefix}_concentration_widths": widths, f"{prefix}_concentration_masses": masses,
-                            f"{prefix}_edge_ratio": edge_ratio})
+                            f"{prefix}_edge_ratio": edge_ratio, f"{prefix}_profile_times": profile_times,
+                            f"{prefix}_profile_changes": changes})
             progress(f"  t = {t_end:g}: widths holding {concentration['fraction']:g} of each side "
                      f"{widths[-1]}, mass within {concentration['radius']:g} of the peaks {masses[-1].sum():.4g}")
         refinement = p.get("edge_refinement")

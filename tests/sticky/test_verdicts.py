@@ -435,7 +435,8 @@ PREDICTIONS = {"spd_burgers_two_atoms": (1, 0), "spd_concave_laplace": (1, 1.0),
 BEYOND = {"window": 3, "limit_order_min": 0.8, "separation": 3.0, "reference_share": 0.2,
           "predictions": {key: {"k": k, "log_scale": s} for key, (k, s) in PREDICTIONS.items()},
           "exponent_tolerance": CONFIG["beyond"]["exponent_tolerance"],
-          "exponent_uncertainty": CONFIG["beyond"]["exponent_uncertainty"], "events_band": (1.8, 2.2), "time_floor": 0.01, "time_band": (0.8, 1.25),
+          "exponent_uncertainty": CONFIG["beyond"]["exponent_uncertainty"],
+          "events_band": (1.8, 2.2), "time_floor": 0.01, "time_band": (0.8, 1.25),
           "scalar_ratio_min": 10.0, "same_cost_band": (0.1, 10.0), "domain": (-3.0, 3.0)}
 
 

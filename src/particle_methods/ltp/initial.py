@@ -16,13 +16,16 @@ from scipy import integrate, special
 from ..perturbation import nudged
 from ..validation import (
     ParameterTypeError,
+    finite_array,
     finite_number,
     finite_result,
     finite_values,
     instance,
+    integer_at_least,
     one_of,
     positive,
     real_array,
+    same_length,
 )
 from .checks import MAX_PARTICLES
 from .shapes import Shape
@@ -116,6 +119,40 @@ def _bump():
 
 
 DENSITIES = {"rho1": _gaussian_bumps(), "rho2": _indicator(), "rho3": _bump()}
+
+
+def golden_atoms(count: int, lower: float, upper: float):
+    """``count`` atoms of equal mass 1/count at lower + (upper - lower) frac(i g), i = 1..count, g the golden
+    ratio (sorted): a measure with no density, spread over [lower, upper] with no regular spacing, so that no grid
+    step h puts them all at cell centres or all at cell edges."""
+    count = integer_at_least("count", count, 1, MAX_PARTICLES)
+    lower, upper = finite_number("lower", lower), finite_number("upper", upper)
+    if not lower < upper:
+        raise ValueError(f"lower must be below upper, got [{lower}, {upper}]")
+    fractions = np.remainder(np.arange(1, count + 1) * (0.5 * (1.0 + math.sqrt(5.0))), 1.0)
+    return np.sort(lower + (upper - lower) * fractions), np.full(count, 1.0 / count)
+
+
+def atomic(positions, masses) -> InitialDensity:
+    """The measure sum_i masses[i] delta_{positions[i]} (Theorem 3's initial probability measure, Remark 4): its
+    CDF is the right-continuous step function, so the cell weights (2.14) are the masses of the atoms in each
+    cell; it has no density (``pdf`` raises ValueError). Positions finite, masses positive."""
+    positions = finite_array("positions", positions)
+    masses = finite_array("masses", masses)
+    same_length(positions=positions, masses=masses)
+    if positions.size == 0 or np.any(masses <= 0):
+        raise ValueError("an atomic measure needs at least one atom and positive masses")
+    order = np.argsort(positions, kind="stable")
+    x, levels = positions[order], np.concatenate([[0.0], np.cumsum(masses[order])])
+
+    def cdf(y):
+        return levels[np.searchsorted(x, finite_values("x", y), side="right")]
+
+    def pdf(y):
+        raise ValueError("an atomic measure has no density")
+
+    span = max(x[-1] - x[0], 1.0)
+    return InitialDensity(f"{x.size} atoms", pdf, cdf, float(x[0] - 1e-3 * span), float(x[-1] + 1e-3 * span))
 
 
 def density_named(name: str) -> InitialDensity:

@@ -93,6 +93,11 @@ class Particles:
                             self.shape.breaks, self.shape.coefficients)
 
     @property
+    def breaks(self) -> np.ndarray:
+        """The sorted points where the reconstruction (2.27) is not a polynomial: every particle's shape breaks."""
+        return np.unique(self.centres[:, None] + self.widths[:, None] * self.shape.breaks)
+
+    @property
     def mass(self) -> float:
         """int rho_h = sum_k omega_k (each shape has unit mass)."""
         with np.errstate(over="ignore"):

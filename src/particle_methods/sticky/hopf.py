@@ -66,8 +66,9 @@ def hopf_gap(initial, positions, t: float, flux, masses=None, points: int = DEFA
     points : masses sampled strictly inside each interval between levels, >= 0.
 
     Returns the largest of (G - f)^+ over the levels and sampled masses, |G - f| at p = M and
-    min(|G - f|, M delta) at every level c_k, delta = y_(k+1) - y_(k) the corner of G there, relative to the largest term compared (M max |x|, M max |y| and t max
-    |Lambda(c_k) - Lambda(0)|): 0 up to rounding (about n eps) exactly when the state's measure is
+    min(|G - f|, M delta) at every level c_k, delta = y_(k+1) - y_(k) the corner of G there, relative
+    to the largest term compared (M max |x|, M max |y| and t max |Lambda(c_k) - Lambda(0)|): 0 up to
+    rounding (about n eps) exactly when the state's measure is
     the entropy solution of (1.1) from the atoms (module docstring), and of order the relative
     displacement of the wrong mass otherwise.
     """
