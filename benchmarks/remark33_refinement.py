@@ -1,7 +1,7 @@
 """Remark 3.3 with many particles: the Godunov-to-SPD distance on grids finer than the pipeline's.
 
-Remark 3.3 itself is tested exactly by the pipeline (``sticky.remark33.concave``: Rankine-Hugoniot
-speeds and Oleinik's condition at every jump); the Godunov comparison is the check
+Remark 3.3 itself is tested exactly by the pipeline (``sticky.remark33.concave``: the SPD against
+Hopf's formula for the entropy solution of the same atoms); the Godunov comparison is the check
 ``sticky.remark33.godunov_refinement``, whose distance falls slowly at n = 256 because a first-order
 scheme needs a very fine grid to resolve shocks of strength 1/n. This script continues the refinement
 (about three minutes on 2 cores) and prints the distance and the pairwise order per doubling,
