@@ -12,7 +12,6 @@ resolutions named in the config, and every fit is recorded with its pairwise and
 from __future__ import annotations
 
 import functools
-import itertools
 import math
 
 import numpy as np
@@ -496,11 +495,13 @@ def common_error(*error_rows) -> float:
 
 def predicted_exponents(k: float, log_scale: float, smallest: float, tolerance: float) -> tuple[float, float]:
     """Range of the exponent of work ~ N^k against 1/error, for an error (a + b log(s N))/N with a, b >= 0
-    at N >= ``smallest`` (s = ``log_scale``; 0 for no log factor, b = 0), widened by ``tolerance``
-    (relative) on both ends.
+    at N >= ``smallest`` (s = ``log_scale``; 0 for no log factor, b = 0). Without a log factor k, widened by
+    ``tolerance`` (relative) on both ends (the terms of higher order move it either way); with one, from
+    k (1 - tolerance) to the theory's largest value, unwidened.
 
     d log(error)/d log N = -1 + b/(a + b log(s N)) lies in [-1, -1 + 1/log(s N)], so the exponent
-    k / (1 - b/(a + b log(s N))) lies in [k, k/(1 - 1/log(s N))], largest at the smallest N.
+    k / (1 - b/(a + b log(s N))) lies in [k, k/(1 - 1/log(s N))], largest at the smallest N (a = 0): a
+    widened upper end would let in the exponent of an order below 1 (2.5 for order 0.8).
     """
     if log_scale == 0:
         return k * (1.0 - tolerance), k * (1.0 + tolerance)
@@ -508,7 +509,7 @@ def predicted_exponents(k: float, log_scale: float, smallest: float, tolerance: 
     if log_n <= 1.0:
         raise ValueError(f"log(s N) = {log_n:.3g} at the smallest N = {smallest:g}: the log-factor range needs more "
                          "than 1")
-    return k * (1.0 - tolerance), k / (1.0 - 1.0 / log_n) * (1.0 + tolerance)
+    return k * (1.0 - tolerance), k / (1.0 - 1.0 / log_n)
 
 
 def resolvable(errors, reference_error: float, share: float) -> np.ndarray:
@@ -524,32 +525,38 @@ def cost_slope(errors, work) -> float:
 
 
 def exponent_interval(errors, work, reference_error: float) -> tuple[float, float]:
-    """The cost exponent of ``errors`` measured against a reference with its own error r: the true errors
-    lie in [e - r, e + r] (triangle inequality), so the exponent lies between the smallest and largest slope
-    over the corners of that box (the slope of two runs is monotone in each error: exact for two runs).
-    (-inf, inf) when an error does not exceed r."""
+    """The cost exponent of ``errors`` measured against a reference with its own error r, with r propagated:
+    the reference's error is one fixed function, which moves every measured error the same way by at most r
+    (the triangle inequality bounds each by r), so the exponent lies between the slopes with every error
+    lowered by r and every error raised by r. (-inf, inf) when an error does not exceed r or two are equal."""
     errors = np.asarray(errors, dtype=float)
     if reference_error == 0.0:
         slope = cost_slope(errors, work)
         return slope, slope
-    if not np.all(errors > reference_error):
-        return -math.inf, math.inf
-    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=errors.size)))
-    slopes = [cost_slope(errors + sign * reference_error, work) for sign in signs]
+    if not np.all(errors > reference_error) or np.unique(errors).size < errors.size:
+        return -math.inf, math.inf  # an error the reference cannot see, or two runs it cannot order
+    slopes = (cost_slope(errors - reference_error, work), cost_slope(errors + reference_error, work))
     return float(min(slopes)), float(max(slopes))
 
 
+def pairwise_intervals(errors, work, reference_error: float) -> list[tuple[float, float]]:
+    """:func:`exponent_interval` of each pair of neighbouring runs, the runs ordered from the least accurate."""
+    errors, work = np.asarray(errors, dtype=float), np.asarray(work, dtype=float)
+    order_ = np.argsort(-errors)
+    return [exponent_interval(errors[order_[i:i + 2]], work[order_[i:i + 2]], reference_error)
+            for i in range(errors.size - 1)]
+
+
 def exponent_window(errors, work, reference_error: float, window: int, uncertainty: float) -> np.ndarray:
-    """Indices of the ``window`` most accurate consecutive runs (by error) whose exponent interval
-    (:func:`exponent_interval`) is at most ``2 uncertainty`` wide: the reference's own error enters the
-    exponent, and the runs it would blur are left out; empty if no window qualifies."""
+    """Indices of the ``window`` most accurate neighbouring runs (by error) whose pairwise exponents the
+    reference's own error leaves within +-``uncertainty`` each (:func:`pairwise_intervals`): the runs it
+    would blur are left out; empty if no window qualifies."""
     errors = np.asarray(errors, dtype=float)
-    ranked = np.argsort(errors)
-    for start in range(errors.size - window + 1):
-        chosen_ = ranked[start:start + window]
-        lower, upper = exponent_interval(errors[chosen_], np.asarray(work, dtype=float)[chosen_], reference_error)
-        if upper - lower <= 2.0 * uncertainty:
-            return chosen_
+    order_ = np.argsort(-errors)
+    narrow = [upper - lower <= 2.0 * uncertainty for lower, upper in pairwise_intervals(errors, work, reference_error)]
+    for start in range(errors.size - window, -1, -1):
+        if all(narrow[start:start + window - 1]):
+            return order_[start:start + window]
     return np.zeros(0, dtype=np.int64)
 
 
@@ -589,8 +596,8 @@ COST_SOURCES = {
 def beyond_exponent_claim(rates: Recorder, p, method: str, case: str, label: str, runs, sizes, reference_error: float,
                           reference: str):
     """The cost exponent of ``method`` on ``case`` against its predicted range (config ``predictions``),
-    fitted on the ``window`` most accurate runs whose exponent the reference's own error leaves within
-    +-``exponent_uncertainty`` (:func:`exponent_window`); the interval is in the claim's text."""
+    fitted on the ``window`` most accurate runs whose pairwise exponents the reference's own error leaves within
+    +-``exponent_uncertainty`` (:func:`exponent_window`); the pairwise intervals are in the claim's text."""
     window = p["window"]
     k, log_scale = (p["predictions"][f"{method}_{case}"][key] for key in ("k", "log_scale"))
     best = exponent_window(runs[0], runs[1], reference_error, window, p["exponent_uncertainty"])
@@ -601,10 +608,11 @@ def beyond_exponent_claim(rates: Recorder, p, method: str, case: str, label: str
     log_text = f"with a log factor, N >= {smallest:g}" if log_scale else "no log factor"
     resolved = ""
     if reference_error > 0:
-        lower, upper = exponent_interval(runs[0][best], runs[1][best], reference_error) if best.size else (
-            math.nan, math.nan)
-        resolved = (f"; against the reference ({reference}, own error {reference_error:.2g}) the exponent lies in "
-                    f"[{lower:.3f}, {upper:.3f}], the most accurate runs within +-{p['exponent_uncertainty']:g}")
+        pairs = ", ".join(f"[{lower:.2f}, {upper:.2f}]" for lower, upper in
+                          pairwise_intervals(runs[0], runs[1], reference_error))
+        resolved = (f"; pairwise exponents with the reference's error ({reference}, own error {reference_error:.2g}) "
+                    f"from the coarsest run: {pairs}; fitted on the most accurate runs whose pairwise exponents it "
+                    f"leaves within +-{p['exponent_uncertainty']:g}")
     return claim(c.between, f"beyond.exponent.{method}_{case}", "derived",
                  COST_SOURCES.get(method, "section 5.2 (O(t^2/eps^2))"), label,
                  f"{label}: {COST_TEXTS[method]} against 1/error, exponent on the {window} most accurate runs"
@@ -670,7 +678,8 @@ def beyond_claims(d, rates: Recorder, p):
                   f"n, exponent on the {window} largest n", *p["events_band"], events, published="O(n^2)"),
             claim(c.at_least, f"beyond.cost.resolved_{name}", "check", "our reference", f"p-system, {name}",
                   f"{name} case: the reference ({reference}, own error {reference_error:.2g}) leaves every method "
-                  f"{window} runs whose cost exponent it blurs by at most +-{p['exponent_uncertainty']:g}; fewest",
+                  f"{window} neighbouring runs whose pairwise cost exponents it moves by at most "
+                  f"+-{p['exponent_uncertainty']:g}; fewest",
                   window, float(min(exponent_window(r[0], r[1], reference_error, window,
                                                     p["exponent_uncertainty"]).size for r in runs.values()))),
         ]
