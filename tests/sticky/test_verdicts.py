@@ -436,6 +436,7 @@ BEYOND = {"window": 3, "limit_order_min": 0.8, "separation": 3.0, "reference_sha
           "predictions": {key: {"k": k, "log_scale": s} for key, (k, s) in PREDICTIONS.items()},
           "exponent_tolerance": CONFIG["beyond"]["exponent_tolerance"],
           "exponent_uncertainty": CONFIG["beyond"]["exponent_uncertainty"],
+          "competing_exponent": CONFIG["beyond"]["competing_exponent"],
           "events_band": (1.8, 2.2), "time_floor": 0.01, "time_band": (0.8, 1.25),
           "scalar_ratio_min": 10.0, "same_cost_band": (0.1, 10.0), "domain": (-3.0, 3.0)}
 
@@ -445,12 +446,12 @@ def runs(errors, work, seconds, *extra):
 
 
 def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_slowdown=1.0, events_exponent=2.0,
-           rarefaction_plateau=False, shock_gap=0.05, reference_gap=1e-3, hll_gap=2e-4, time_power=1.0,
+           rarefaction_plateau=False, shock_gap=0.05, mspd_gap=1e-3, reference_gap=1e-4, hll_gap=2e-4, time_power=1.0,
            laplace_log=True, plus_shift=0.1, spd_time_power=1.0):
     """Study results shaped as the theory predicts, with one knob per claim to make it wrong. Errors are
     (1 + log n)/n where the prediction carries a log factor; every method's three largest runs last
     more than the time floor."""
-    n = np.array([25.0, 50.0, 100.0, 200.0, 400.0])
+    n = np.array([50.0, 100.0, 200.0, 400.0, 800.0])
     errors = (1.0 + np.log(n) * laplace_log) / n
     d = {"t": 2.0, "cases": np.array(["rarefaction", "shocks"]), "limit_n": np.array([100, 200, 400, 800]),
          "reference_cells": 600, "upwind_reference_cells": 600, "exact_n": n, "tspd_n": n, "upwind_cells": 40 * n}
@@ -469,7 +470,7 @@ def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_sl
             limit = 0.01 + 0 * limit
         if case == "shocks":
             limit = limit + shock_gap
-        d.update({f"{case}_limit_to_hll": limit, f"{case}_limit_to_upwind": limit, f"{case}_mspd_gap": reference_gap,
+        d.update({f"{case}_limit_to_hll": limit, f"{case}_limit_to_upwind": limit, f"{case}_mspd_gap": mspd_gap,
                   f"{case}_hll_gap": hll_gap, f"{case}_reference": "exact MSPD",
                   f"{case}_reference_error": reference_gap,
                   f"{case}_mspd": np.array([uniform, uniform]),
@@ -511,6 +512,7 @@ def test_beyond_claims_pass_on_the_predicted_shapes():
     ({"rarefaction_plateau": True}, "limit.rarefaction"),             # no convergence
     ({"shock_gap": 0.0}, "limit.shocks"),                             # the limits agree
     ({"reference_gap": 0.01}, "cost.resolved_rarefaction"),           # a reference too coarse for the runs
+    ({"reference_gap": 1e-3}, "exponent.separation_shocks"),          # fits left on sizes where 2.5 is in range
     ({"hll_gap": 0.05}, "limit.reference_rarefaction"),               # a coarse conservative reference
     ({"time_power": 1.5}, "cost.wall_time"),                          # the counted operations are not the cost
     ({"plus_shift": 0.0}, "limit.plus_wave_shocks"),                  # the + waves coincide
@@ -542,14 +544,17 @@ def test_a_pure_power_outside_the_log_range_fails_and_without_the_log_factor_the
 
 
 def test_runs_the_reference_cannot_resolve_never_enter_a_fit():
-    """A reference error of 2e-3 blurs the pairwise exponents of the most accurate runs: the exact MSPD's fit
-    moves to the coarsest runs it still resolves, and the upwind runs (errors 2/n) keep no window at all, which
-    the check cost.resolved reports (a defect of the reference, not a verdict)."""
-    assert sorted(v.exponent_window(*beyond()["rarefaction_exact"][:2], 1e-3, 3, 0.1).tolist()) == [1, 2, 3]
-    d = beyond(reference_gap=2e-3)
-    assert sorted(v.exponent_window(*d["rarefaction_exact"][:2], 2e-3, 3, 0.1).tolist()) == [0, 1, 2]
+    """A reference error of 1e-3 blurs the pairwise exponents of the most accurate runs: the exact MSPD's fit
+    moves to the coarsest runs it still resolves, where the log-factor range holds 2.5 (the separation check
+    fails), and the upwind runs (errors 2/n) keep no window at all, which the check cost.resolved reports (a
+    defect of the reference, not a verdict)."""
+    assert sorted(v.exponent_window(*beyond()["rarefaction_exact"][:2], 1e-4, 3, 0.1).tolist()) == [2, 3, 4]
+    d = beyond(reference_gap=1e-3)
+    assert sorted(v.exponent_window(*d["rarefaction_exact"][:2], 1e-3, 3, 0.1).tolist()) == [0, 1, 2]
     assert beyond_status(d, "exponent.exact_rarefaction") == "pass"
     assert beyond_status(d, "cost.resolved_rarefaction") == "fail"
+    assert beyond_status(d, "exponent.separation_rarefaction") == "fail"
+    assert beyond_status(beyond(reference_gap=2e-3), "exponent.separation_rarefaction") == "fail"  # no window
 
 
 def test_runs_shorter_than_the_floor_never_enter_a_time_fit():
