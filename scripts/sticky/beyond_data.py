@@ -85,24 +85,27 @@ def scalar_study(name, p, timing):
     return spd, fv
 
 
-def reference(limits, name, domain):
-    """The case's reference: of the exact MSPD (n = reference_n) and the upwind scheme for (1.7) on
-    upwind_reference_cells, which approximate the same MSPD limit, the one with the smaller distance
-    to its own half resolution (its error). Returns (index in REFERENCES, that error, distance to a
-    configuration, distance to a cell function)."""
-    errors = (float(limits[f"{name}_reference_gap"]), float(limits[f"{name}_upwind_gap"]))
-    mspd, w = limits[f"{name}_reference_mspd"], limits[f"{name}_upwind_w"]
-    fine = np.linspace(*domain, int(limits["upwind_reference_cells"]) + 1)
+def reference(limits, exact, name, domain):
+    """The case's reference: of the exact MSPD (``exact``, from beyond_reference.py) and the upwind scheme for
+    (1.7) on upwind_reference_cells (from ``limits``), which approximate the same MSPD limit, the one with the
+    smaller distance to its own half resolution (its error). Returns (index in REFERENCES, its size, that
+    error, distance to a configuration, distance to a cell function)."""
+    errors = (float(exact["reference_gap"]), float(limits[f"{name}_upwind_gap"]))
+    mspd, w = exact["reference_mspd"], limits[f"{name}_upwind_w"]
+    cells = int(limits["upwind_reference_cells"])
+    fine = np.linspace(*domain, cells + 1)
     if errors[1] < errors[0]:
-        return 1, errors[1], lambda x: distance_to_cells(x, w, fine), lambda v, edges: cells_distance(v, edges, w, fine)
-    return 0, errors[0], lambda x: configuration_distance(x, mspd), lambda v, edges: distance_to_cells(mspd, v, edges)
+        return (1, f"{cells} cells", errors[1], lambda x: distance_to_cells(x, w, fine),
+                lambda v, edges: cells_distance(v, edges, w, fine))
+    return (0, f"n = {int(exact['reference_n'])}", errors[0], lambda x: configuration_distance(x, mspd),
+            lambda v, edges: distance_to_cells(mspd, v, edges))
 
 
-def psystem_study(system, name, x0, p, limits, timing):
+def psystem_study(system, name, x0, p, limits, exact, timing):
     """TSPD, exact MSPD and upwind errors, operations and best times for one p-system case: the indices of its
     runs in ``timing`` (:class:`Timed`), and its reference."""
     t = p["t"]
-    chosen, own_error, to_configuration, to_cells = reference(limits, name, p["domain"])
+    chosen, size, own_error, to_configuration, to_cells = reference(limits, exact, name, p["domain"])
     tspd, exact_runs, upwind_runs = [], [], []
     for n in p["tspd_n"]:
         x = psystem_initial_configuration(name, x0, n)
@@ -124,17 +127,18 @@ def psystem_study(system, name, x0, p, limits, timing):
             "upwind", lambda w0=w0, edges=edges: upwind_diagonal(system, w0, edges, t, p["cfl"], return_steps=True),
             lambda result, seconds, edges=edges, cells=cells: (to_cells(result[0], edges),
                                                                system.d * cells * result[1], seconds)))
-    size = (f"n = {int(limits['reference_n'])}", f"{int(limits['upwind_reference_cells'])} cells")[chosen]
     progress(f"{name}: reference {REFERENCES[chosen]} ({size}), own error {own_error:.3g}")
     return dict(tspd=tspd, exact=exact_runs, upwind=upwind_runs, reference=f"{REFERENCES[chosen]}, {size}",
                 reference_error=own_error)
 
 
-def run(system_params, cases, p, limits, output):
+def run(system_params, cases, p, limits, references, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
     limits = load_results(limits)
+    exact = {name: load_results(path) for name, path in references.items()}
     timing = Timed()
-    studies = {name: psystem_study(system, name, cases[name]["x0"], p, limits, timing) for name in PSYSTEM_CASES}
+    studies = {name: psystem_study(system, name, cases[name]["x0"], p, limits, exact[name], timing)
+               for name in PSYSTEM_CASES}
     scalar = {name: scalar_study(name, p["scalar"][name], timing) for name in FLUXES}
     timing.time(p["repeats"])
 
@@ -168,4 +172,5 @@ def run(system_params, cases, p, limits, output):
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.input.limits,  # noqa: F821
+        {name: snakemake.input[name] for name in PSYSTEM_CASES},  # noqa: F821
         snakemake.output[0])  # noqa: F821

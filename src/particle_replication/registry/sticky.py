@@ -72,7 +72,6 @@ LIMIT_KEYS = (
     "t",
     "cases",
     "limit_n",
-    "reference_n",
     "reference_cells",
     "upwind_reference_cells",
     "*_limit_to_hll",
@@ -84,14 +83,12 @@ LIMIT_KEYS = (
     "*_hll_w",
     "*_upwind_w",
     "*_mspd",
-    "*_reference_mspd",
-    "*_reference_gap",
 )
 
 
 #: The settings of the `beyond` section each data job reads (the others, bands and tolerances, are the claims'
 #: alone: a change of a band reruns no study).
-LIMIT_SETTINGS = ("t", "domain", "cfl", "limit_n", "reference_n", "reference_cells", "upwind_reference_cells")
+LIMIT_SETTINGS = ("t", "domain", "cfl", "limit_n", "reference_cells", "upwind_reference_cells")
 COST_SETTINGS = ("t", "domain", "cfl", "repeats", "tspd_n", "exact_n", "upwind_cells", "scalar")
 
 
@@ -256,6 +253,16 @@ RESULTS = (
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, LIMIT_SETTINGS)},
         ),
     ),
+    *(Result(
+        f"results/sticky/beyond_reference_{case}.npz",
+        "beyond_reference.py",
+        ("case", "reference_n", "reference_mspd", "reference_gap"),
+        Job(
+            f"beyond the paper: the cost study's exact MSPD reference, {case} case (untimed)",
+            lambda s, case=case: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
+                                  "cfg": _beyond(s, ("t", "reference_n"))},
+        ),
+    ) for case in ("rarefaction", "shocks")),
     Result(
         "results/sticky/beyond.npz",
         "beyond_data.py",
@@ -283,7 +290,8 @@ RESULTS = (
         Job(
             "beyond the paper: the cost study (timed runs, alone on the cores), merged with the limits",
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, COST_SETTINGS)},
-            inputs={"limits": "results/sticky/beyond_limits.npz"},
+            inputs={"limits": "results/sticky/beyond_limits.npz",
+                    **{case: f"results/sticky/beyond_reference_{case}.npz" for case in ("rarefaction", "shocks")}},
             threads="all",
         ),
     ),
