@@ -212,8 +212,8 @@ def test_return_events_must_be_a_bool():
 
 def test_the_old_table_limit_is_gone():
     # The velocity table of d (n+1)^d values stopped the call at n = 4999 per type; the crossing bound
-    # d(d-1)n^2/2 + d n is now the only limit on n, and admits 20,000 per type for a p-system.
-    n = 20_000
+    # d(d-1)n^2/2 + d n is now the only limit on n, and admits the cost study's 25,600 per type for a p-system.
+    n = 25_600
     assert n * n + 2 * n <= MAX_EVENTS
     assert MAX_PYTHON_EVENTS < n * n  # a Python primitive is called at every crossing: far fewer
 

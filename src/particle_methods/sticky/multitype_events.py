@@ -58,11 +58,12 @@ from ..validation import finite_array, finite_result, instance
 from .mspd import checked_configuration, ranks_kernel
 from .spd import MAX_POSITIONS, check_reach
 
-#: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts: n = 21,212 per type for d = 2. The
-#: p-system cases with n = 20,000 per type (bound 4.0e8) take 60-65 s (rarefaction, 1.8e8 crossings)
-#: and 35-40 s (shocks, 1.3e8) up to t = 2 (benchmarks/bench_mspd_exact.py); a run reaching the bound,
-#: at the same 0.35 us per crossing, under 3 minutes. Memory is no limit: 128 bytes per particle.
-MAX_EVENTS = 4.5 * 10**8
+#: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts: n = 26,456 per type for d = 2, above the
+#: cost study's reference (25,600 per type). The p-system cases with n = 20,000 per type (bound 4.0e8) take
+#: 60-65 s (rarefaction, 1.8e8 crossings) and 35-40 s (shocks, 1.3e8) up to t = 2
+#: (benchmarks/bench_mspd_exact.py); a run reaching the bound, at the same 0.35 us per crossing, about 4
+#: minutes. Memory is no limit: 128 bytes per particle.
+MAX_EVENTS = 7 * 10**8
 
 #: Largest crossing bound d(d-1) n^2 / 2 for a system whose ``speed_primitive`` is Python (any but a
 #: :class:`~particle_methods.systems.PSystem`): each crossing then costs two calls of it from Python,
