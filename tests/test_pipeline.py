@@ -1,6 +1,7 @@
 """End to end: the quick configuration of the Snakemake pipeline in a scratch directory."""
 
 import csv
+import math
 import re
 import shutil
 import subprocess
@@ -174,6 +175,11 @@ def test_value_comparison_sees_a_moved_value(tmp_path):
     assert not any("demo.order" in p for p in value_differences([claim], reference, spreads=spreads))
     moved = dataclasses.replace(claim, value="3.600002")
     assert any(p.startswith("MOVED demo.order") for p in value_differences([moved], reference, spreads=spreads))
+    # a value not measured (NaN) stays the same outcome when it is still not measured, and moves when measured
+    reference.write_text("exempt: {}\nvalues: {demo.order: 'nan'}\n")
+    spreads = {"demo.order": Spread(distance=0.0, value=math.inf)}
+    assert not value_differences([dataclasses.replace(claim, value="nan")], reference, spreads=spreads)
+    assert any(p.startswith("MOVED demo.order") for p in value_differences([claim], reference, spreads=spreads))
 
 
 def test_claims_table_and_summary(workdir):

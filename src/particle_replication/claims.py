@@ -674,7 +674,9 @@ def value_differences(claims, reference_path, relative: float = 1e-9, spreads=No
         new, old = float(claim.value), values[claim.id]
         spread = spreads[claim.id].value if claim.id in spreads else 0.0
         tolerance = max(relative * abs(old), factor * spread)
-        same = new == old or (math.isfinite(new) and abs(new - old) <= tolerance)
+        # Not measured in both (NaN): the same outcome; NaN on one side only: moved.
+        same = (new == old or (math.isnan(new) and math.isnan(old))
+                or (math.isfinite(new) and abs(new - old) <= tolerance))
         if not same:
             problems.append(f"MOVED {claim.id}: {old!r} -> {new!r} (tolerance {tolerance:.3g})")
     problems += [f"MISSING {i}" for i in values if i not in present and i not in exempt]
