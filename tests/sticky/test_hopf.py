@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 
 from particle_methods.finite_volume.fluxes import burgers_flux, concave_flux
+from particle_methods.sticky.admissibility import MAX_POINTS
 from particle_methods.sticky.cases import SCALAR_CASES
-from particle_methods.sticky.hopf import MAX_POINTS, hopf_gap
+from particle_methods.sticky.hopf import hopf_gap
 from particle_methods.sticky.spd import spd_positions, velocities_from_flux, velocities_from_levels
 from particle_methods.validation import ParameterTypeError
 

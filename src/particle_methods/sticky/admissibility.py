@@ -72,11 +72,39 @@ class Admissibility:
         return max(self.rankine_hugoniot, self.entropy)
 
 
-def _flux_values(flux, states: np.ndarray) -> np.ndarray:
+def flux_values(flux, states: np.ndarray) -> np.ndarray:
+    """Lambda at ``states``, checked: finite, one value per state."""
     values = finite_array("flux values", flux(states))
     if values.size != states.size:
         raise ValueError(f"flux must return one value per state ({states.size}), got {values.size}")
-    return values
+    return values.ravel()
+
+
+def checked_sampling(n: int, flux, points: int, fewest_points: int) -> int:
+    """Refuse what a test of n particles against ``flux`` sampled at ``points`` states per level interval
+    cannot take (a flux that is not callable, too many particles or sampled states); returns ``points``."""
+    integer_at_least("number of particles n", n, 1, MAX_POSITIONS)
+    if not callable(flux):
+        raise ParameterTypeError(f"flux must be callable (the flux Lambda of (1.1)), got {flux!r}")
+    points = integer_at_least("points", points, fewest_points, MAX_POINTS)
+    if n * (points + 1) > MAX_POSITIONS:
+        raise ValueError(f"{n} particles with points = {points} give {n * (points + 1):.3g} sampled states, more "
+                         f"than MAX_POSITIONS = {MAX_POSITIONS:.0e}: lower points")
+    return points
+
+
+def mass_levels(masses, particles, order) -> tuple[np.ndarray, np.ndarray]:
+    """The masses (checked: finite, positive, one per particle of ``particles``) in the sorted ``order``, and
+    the levels 0 = c_0 < c_1 < ... < c_n of their partial sums (unscaled: Lambda(c_k) depends on them)."""
+    masses = finite_array("masses", masses)
+    same_length(positions=particles, masses=masses)
+    if not masses.min() > 0:
+        raise ValueError(f"masses must be positive, got {masses.min()} at index {int(masses.argmin())}")
+    masses = masses[order]
+    with np.errstate(over="ignore"):
+        levels = finite_result("the total of the masses", np.concatenate(([0.0], np.cumsum(masses))),
+                               "the masses are too large")
+    return masses, levels
 
 
 def admissibility_violation(positions, velocities, flux, masses=None, points: int = DEFAULT_POINTS) -> Admissibility:
@@ -100,13 +128,7 @@ def admissibility_violation(positions, velocities, flux, masses=None, points: in
     positions = finite_array("positions", positions)
     velocities = finite_array("velocities", velocities)
     n = same_length(positions=positions, velocities=velocities)
-    integer_at_least("number of particles n", n, 1, MAX_POSITIONS)
-    if not callable(flux):
-        raise ParameterTypeError(f"flux must be callable (the flux Lambda of (1.1)), got {flux!r}")
-    points = integer_at_least("points", points, 1, MAX_POINTS)
-    if n * (points + 1) > MAX_POSITIONS:
-        raise ValueError(f"{n} particles with points = {points} give {n * (points + 1):.3g} sampled states, more "
-                         f"than MAX_POSITIONS = {MAX_POSITIONS:.0e}: lower points")
+    points = checked_sampling(n, flux, points, 1)
     order = np.argsort(positions, kind="stable")
     y, w = positions[order], velocities[order]
     starts = np.flatnonzero(np.concatenate(([True], y[1:] > y[:-1])))
@@ -115,15 +137,9 @@ def admissibility_violation(positions, velocities, flux, masses=None, points: in
         levels = np.arange(n + 1) / n  # the levels of velocities_from_flux, so the same flux values
         cluster_mass = (ends - starts) / n
     else:
-        masses = finite_array("masses", masses)
-        same_length(positions=positions, masses=masses)
-        if not masses.min() > 0:
-            raise ValueError(f"masses must be positive, got {masses.min()} at index {int(masses.argmin())}")
-        with np.errstate(over="ignore"):
-            levels = finite_result("the total of the masses", np.concatenate(([0.0], np.cumsum(masses[order]))),
-                                   "the masses are too large")
-        cluster_mass = np.add.reduceat(masses[order], starts)
-    level_values = _flux_values(flux, levels)
+        sorted_masses, levels = mass_levels(masses, positions, order)
+        cluster_mass = np.add.reduceat(sorted_masses, starts)
+    level_values = flux_values(flux, levels)
     lower, upper = levels[starts], levels[ends]
     with np.errstate(over="ignore", invalid="ignore"):
         sigma = finite_result("a Rankine-Hugoniot speed (Lambda(u_+) - Lambda(u_-)) / (u_+ - u_-)",
@@ -142,7 +158,7 @@ def admissibility_violation(positions, velocities, flux, masses=None, points: in
     lo, hi = lower[owner], upper[owner]
     strict = (states > lo) & (states < hi)  # a state rounded onto u_- or u_+ is no state of (E)
     states, owner, lo, hi = states[strict], owner[strict], lo[strict], hi[strict]
-    values = _flux_values(flux, states) if states.size else np.zeros(0)
+    values = flux_values(flux, states) if states.size else np.zeros(0)
     with np.errstate(over="ignore", invalid="ignore"):
         from_left = (values - level_values[starts][owner]) / (states - lo)
         to_right = (level_values[ends][owner] - values) / (hi - states)

@@ -42,14 +42,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..validation import ParameterTypeError, finite_array, finite_number, finite_result, integer_at_least, same_length
-from .spd import MAX_POSITIONS
+from ..validation import finite_array, finite_number, same_length
+from .admissibility import checked_sampling, flux_values, mass_levels
 
 #: Masses sampled strictly inside each interval between levels when the caller gives none.
 DEFAULT_POINTS = 4
-
-#: Most masses per interval: a larger number would only multiply the work.
-MAX_POINTS = 1000
 
 
 def hopf_gap(initial, positions, t: float, flux, masses=None, points: int = DEFAULT_POINTS) -> float:
@@ -75,34 +72,21 @@ def hopf_gap(initial, positions, t: float, flux, masses=None, points: int = DEFA
     x = finite_array("initial", initial)
     y = finite_array("positions", positions)
     n = same_length(initial=x, positions=y)
-    integer_at_least("number of particles n", n, 1, MAX_POSITIONS)
     t = finite_number("t", t)
     if t < 0:
         raise ValueError(f"t must be >= 0, got {t}")
-    if not callable(flux):
-        raise ParameterTypeError(f"flux must be callable (the flux Lambda of (1.1)), got {flux!r}")
-    points = integer_at_least("points", points, 0, MAX_POINTS)
-    if n * (points + 1) > MAX_POSITIONS:
-        raise ValueError(f"{n} particles with points = {points} give {n * (points + 1):.3g} sampled masses, more "
-                         f"than MAX_POSITIONS = {MAX_POSITIONS:.0e}: lower points")
+    points = checked_sampling(n, flux, points, 0)
     order = np.argsort(x, kind="stable")
     x = x[order]
     if masses is None:
         m = np.full(n, 1.0 / n)
         levels = np.arange(n + 1) / n  # exactly the levels of velocities_from_flux
     else:
-        m = finite_array("masses", masses)
-        same_length(initial=x, masses=m)
-        if not m.min() > 0:
-            raise ValueError(f"masses must be positive, got {m.min()} at index {int(m.argmin())}")
-        m = m[order]  # the levels c_k are the masses themselves (Lambda(c_k) depends on them): no scaling
-        with np.errstate(over="ignore"):
-            levels = finite_result("the total of the masses", np.concatenate(([0.0], np.cumsum(m))),
-                                   "the masses are too large")
+        m, levels = mass_levels(masses, x, order)
     y = np.sort(y)
     step = m * (y - x)                                     # G - W_0^* gains m_k (y_(k) - x_k) across level k
-    base = _flux(flux, levels[:1])[0]
-    rise = t * (_flux(flux, levels) - base)                # t (Lambda(c_k) - Lambda(0))
+    base = flux_values(flux, levels[:1])[0]
+    rise = t * (flux_values(flux, levels) - base)                # t (Lambda(c_k) - Lambda(0))
     gap = np.concatenate(([0.0], np.cumsum(step))) - rise  # G(c_k) - f(c_k)
     # Contact at every level c_k between two clusters, weighed so that rounding decides nothing: a corner
     # of G of size delta = y_(k+1) - y_(k) counts at most M delta, the change of G that removes it.
@@ -113,7 +97,7 @@ def hopf_gap(initial, positions, t: float, flux, masses=None, points: int = DEFA
     if points:
         fractions = np.arange(1, points + 1) / (points + 1)
         masses_inside = levels[:-1, None] + fractions[None, :] * m[:, None]
-        inside = t * (_flux(flux, masses_inside.ravel()) - base)
+        inside = t * (flux_values(flux, masses_inside.ravel()) - base)
         between = gap[:-1, None] + rise[:-1, None] + fractions[None, :] * step[:, None] - inside.reshape(n, points)
         violations.append(between.max())
     scale = max(total * float(np.abs(x).max()), total * float(np.abs(y).max()),
@@ -122,9 +106,3 @@ def hopf_gap(initial, positions, t: float, flux, masses=None, points: int = DEFA
         return 0.0
     return float(max(0.0, *violations) / scale)
 
-
-def _flux(flux, states: np.ndarray) -> np.ndarray:
-    values = finite_array("flux values", flux(states))
-    if values.size != states.size:
-        raise ValueError(f"flux must return one value per state ({states.size}), got {values.size}")
-    return values.ravel()
