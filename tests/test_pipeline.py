@@ -142,17 +142,21 @@ def test_another_machine_gives_the_same_verdicts(workdir):
     """The quick run's claims under the robustness run's `combined` variant, as another machine would compute
     them: one thread, OpenBLAS's AVX2 kernels, NumPy's dispatch without AVX-512, numba's code for an AVX2 CPU
     and every initial datum nudged by a few ulps, at once (config.yaml, robustness.variants). Every verdict must
-    be this run's, and every value within its pin's tolerance."""
-    from particle_replication.claims import read_claims, read_spreads, value_differences
+    be this run's, and every value within its pin's tolerance. The wall-clock checks are left out (their pins are
+    exempt for that reason): one thread on a quiet machine moved the quick cost study's time exponent from 1.12 to
+    0.80, across its band's end, and no test may be decided by wall time."""
+    from particle_replication.claims import read_claims, read_spreads, read_values, value_differences
     from particle_replication.robustness import compare
 
     result = snakemake(workdir, "--", "robustness/combined/results/claims.csv")
     assert result.returncode == 0, (result.stdout + result.stderr)[-3000:]
     effective = yaml.safe_load((workdir / "robustness/combined/environment.json").read_text())["effective"]
     assert effective["numba_threads"] == 1 and effective["numba_cpu"] == "haswell", effective
-    baseline = read_claims(workdir / "results/claims.csv")
+    wall_clock = {i for i, why in read_values(ROOT / "config" / "values-quick.yaml")[1].items() if "wall-clock" in why}
+    assert wall_clock >= {"sticky.cost.wall_time", "sticky.beyond.cost.wall_time", "cross.fastest"}, wall_clock
+    baseline = [c for c in read_claims(workdir / "results/claims.csv") if c.id not in wall_clock]
     variant = read_claims(workdir / "robustness/combined/results/claims.csv")
-    assert not compare(baseline, {"combined": variant})
+    assert not compare(baseline, {"combined": [c for c in variant if c.id not in wall_clock]})
     spreads = read_spreads(ROOT / "config" / "spreads.yaml", "quick")
     problems = value_differences(variant, ROOT / "config" / "values-quick.yaml", spreads=spreads, factor=CONFIG_MARGIN)
     assert not problems, "\n".join(problems)
