@@ -52,33 +52,6 @@ RESULTS = (
         ),
     ),
     Result(
-        "results/cross/aggregates.npz",
-        "aggregates_data.py",
-        (
-            "times",
-            "fixed_times",
-            "exact_positions",
-            "exact_masses",
-            "merger",
-            "blowups",
-            "methods",
-            "size",
-            "error",
-            "centre",
-            "method_merger",
-            "spd_difference",
-            "path_times",
-            "path_positions",
-            "path_masses",
-            "spd_clusters",
-        ),
-        Job(
-            "two_bumps: the SPDs, the particle and blob methods, Godunov, LTP and SP against the exact aggregates on a "
-            "time grid",
-            lambda s: {"cfg": s["aggregates"]},
-        ),
-    ),
-    Result(
         "results/cross/behaviour.npz",
         "behaviour_data.py",
         (
@@ -101,6 +74,53 @@ RESULTS = (
     ),
 )
 
+#: The bump data whose aggregates move and merge (config cross.aggregates.cases): one result and one figure each.
+AGGREGATE_CASES = {
+    "two_bumps": "two symmetric bumps, each collapsed before they merge",
+    "skewed": "a skewed bump whose aggregate forms off its centre of mass and merges before it has collapsed",
+}
+AGGREGATE_KEYS = ("data", "times", "fixed_times", "window_times", "exact_positions", "exact_masses", "exact_lowers",
+                  "exact_identity", "merger", "blowups", "methods", "size", "count", "error", "centre", "spread",
+                  "method_merger", "merger_gap", "spd_merger_n", "spd_merger", "spd_difference", "mass", "support",
+                  "path_times", "path_positions", "path_masses", "spd_clusters")
+
+
+def aggregate_settings(aggregates, case: str) -> dict:
+    """The settings of one case of the aggregates study: the common ones with the case's own on top."""
+    common = {key: value for key, value in aggregates.items() if key != "cases"}
+    return {**common, **aggregates["cases"][case]}
+
+
+RESULTS += tuple(
+    Result(
+        f"results/cross/aggregates_{case}.npz",
+        "aggregates_data.py",
+        AGGREGATE_KEYS,
+        Job(f"{case}: the SPDs, the particle and blob methods, Godunov, LTP and SP against the exact aggregates on a "
+            "time grid", lambda s, case=case: {"cfg": aggregate_settings(s["aggregates"], case)}),
+    )
+    for case in AGGREGATE_CASES
+)
+
+
+def _aggregates_figure(case: str, about: str) -> Plot:
+    def caption(s):
+        q = aggregate_settings(s["aggregates"], case)
+        return (f"K = |x|/2 from {q['data']} ({about}): (a) the exact aggregates (lines from their blow-ups, width "
+                f"growing with their mass) and the heavy clusters of the SPD with n = {q['spd_n'][0]} (dots); (b) each "
+                "method's mean distance of the exact aggregates' levels from them, against t, at its largest size; "
+                "(c) W1 to the exact solution against t at each method's largest size (LTP and the particle method "
+                "up to the first blow-up); (d) its largest value over t > 0 against the particles or cells.")
+
+    return Plot(
+        "plot_aggregates.py",
+        (Figure(f"aggregates_{case}", f"{case}: the aggregates' paths, levels and W1 against the exact ones", caption,
+                ours=True),),
+        data={"data": f"results/cross/aggregates_{case}.npz"},
+        params=lambda s: {"cfg": aggregate_settings(s["aggregates"], case)},
+    )
+
+
 PAPER = Paper(
     id="cross",
     plots=(
@@ -122,25 +142,7 @@ PAPER = Paper(
                 f"{listing(s['times'])}."
             ),
         ),
-        Plot(
-            "plot_aggregates.py",
-            (
-                Figure(
-                    "aggregates",
-                    "two_bumps: the aggregates' paths against the exact ones, W1 uniformly in time",
-                    lambda s: (
-                        "K = |x|/2 from the asymmetric two_bumps: (a) the exact aggregates (lines, width growing with "
-                        "their mass) and the equal-mass SPD's heavy clusters (dots), blow-ups at t = 1/2 and 1 and the "
-                        "merger at 1.985; (b) W1 to the exact solution against t at each method's largest size (LTP "
-                        "and the particle method up to the first blow-up); (c) its largest value over t against the "
-                        "size."
-                    ),
-                    ours=True,
-                ),
-            ),
-            data={"data": "results/cross/aggregates.npz"},
-            params=lambda s: {"cfg": s["aggregates"]},
-        ),
+        *(_aggregates_figure(case, about) for case, about in AGGREGATE_CASES.items()),
     ),
     results=RESULTS,
     notebook=("results/cross/study.npz", "results/cross/behaviour.npz"),
