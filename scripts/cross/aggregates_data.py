@@ -119,7 +119,8 @@ def run(p, output):
     # The paths for the figure: the exact aggregates on a finer grid with the blow-ups and the merger, and the heavy
     # clusters of the smallest SPD.
     blowups = np.array([1.0 / b.height for b in bumps.bumps])
-    path_times = np.union1d(np.linspace(0.0, p["t_end"], p["path_steps"] + 1), [*blowups, merger])
+    # (each blow-up a thousandth after it: at the blow-up itself the aggregate has no mass yet)
+    path_times = np.union1d(np.linspace(0.0, p["t_end"], p["path_steps"] + 1), [*(blowups * (1.0 + 1e-3)), merger])
     paths = [HullSolution(data, float(t)).aggregates for t in path_times]
     path_slots = max(path[0].size for path in paths)
     path_positions = np.array([padded(path[0], path_slots) for path in paths])

@@ -1,7 +1,8 @@
-"""two_bumps, whose aggregates move and merge: (a) the exact aggregates' paths (line width growing with the mass),
-the smallest equal-mass SPD's heavy clusters and the blob's, SP's and Godunov's centres of the aggregates' levels;
-(b) W1 against t at each method's largest size (LTP and the particle method only before the first blow-up); (c) the
-largest W1 over t against the size."""
+"""Bump data whose aggregates move and merge: (a) the exact aggregates' paths from their blow-ups (line width growing
+with the mass) and the smallest equal-mass SPD's heavy clusters; (b) each method's mean distance of the exact
+aggregates' levels from them (the measure that tells whether a method holds an aggregate: it is 0 only for the right
+mass at the right place), against t, at its largest size; (c) W1 against t at each method's largest size (LTP and the
+particle method only before the first blow-up); (d) the largest W1 over t > 0 against the particles or cells."""
 
 import numpy as np
 
@@ -13,14 +14,14 @@ STYLES = {"SPD, equal masses": ("C0", "o"), "SPD, grid weights": ("C1", "s"), "G
 BLOB = ("C4", "v")
 
 
+def largest_row(d, name):
+    rows = np.flatnonzero(d["methods"] == name)
+    return rows[np.argmax(d["size"][rows])]
+
+
 def run(d, p, output):
-    fig, grid = new_figure(2, 2, width=11, height=7.0)
-    # (a) across the top, the space-time plot; (b) and (c) below it.
-    spec = grid[0, 0].get_gridspec()
-    for unused in grid[0]:
-        unused.remove()
-    ax = fig.add_subplot(spec[0, :])
-    axes = [ax, *grid[1]]
+    fig, grid = new_figure(2, 2, width=11, height=7.5)
+    ax, spread_ax, time_ax, size_ax = grid.ravel()
     times, positions, masses = d["path_times"], d["path_positions"], d["path_masses"]
     total = float(np.nanmax(masses))
     for slot in range(positions.shape[1]):
@@ -31,45 +32,54 @@ def run(d, p, output):
     ax.plot(np.repeat(times, d["spd_clusters"].shape[1]), d["spd_clusters"].ravel(), "o", color="C0", ms=2.5,
             mfc="none", label=f"SPD clusters, n = {p['spd_n'][0]}")
     ax.plot([], [], color="k", lw=2, label="exact aggregates")
-    # Each method's centres of the exact aggregates' levels at its largest size, on the time grid: hollow markers of
-    # decreasing sizes, so that each stays visible where they coincide.
-    methods, sizes = d["methods"], d["size"]
-    blob = next(str(n) for n in methods if str(n).startswith("blob"))
-    for name, size in (("Godunov for F", 9), ("SP", 6.5), (blob, 4)):
-        rows = np.flatnonzero(methods == name)
-        largest = rows[np.argmax(sizes[rows])]
-        colour, marker = STYLES.get(name, BLOB)
-        for slot in range(d["centre"].shape[2]):
-            ax.plot(d["times"], d["centre"][largest][:, slot], marker, color=colour, ms=size, mfc="none", ls="none",
-                    zorder=3, label=f"{name} ({sizes[largest]}), centres" if slot == 0 else None)
     for t in d["blowups"]:
         ax.axvline(t, color="0.6", lw=0.6, ls=":")
-    ax.axvline(float(d["merger"]), color="C3", lw=0.6, ls="--", label=f"exact merger, t = {float(d['merger']):.4f}")
+    merger = float(d["merger"])
+    ax.axvline(merger, color="C3", lw=0.6, ls="--", label=f"exact merger, t = {merger:.4f}")
     low, high = float(np.nanmin(positions)), float(np.nanmax(positions))
     ax.set(xlabel="t", ylabel="position x", xlim=(0, 1.02 * times[-1]),
            ylim=(low - 0.1 * (high - low), high + 0.1 * (high - low)))
-    ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="small")
+    ax.legend(loc="best", fontsize="small")
     label_panel(ax, "(a) aggregates")
-    errors = d["error"]
+    methods, sizes, errors = d["methods"], d["size"], d["error"]
+    grid_times = d["times"]
+    later = grid_times > 0
+    spreads = d["spread"]
+    positive = spreads[np.isfinite(spreads) & (spreads > 0)]
+    floor = max(float(positive.min()) / 3.0, 1e-16) if positive.size else 1e-16
+    for name in dict.fromkeys(map(str, methods)):
+        colour, marker = STYLES.get(name, BLOB)
+        row = largest_row(d, name)
+        with np.errstate(all="ignore"):
+            worst = np.nanmax(np.where(np.isfinite(spreads[row]), spreads[row], -np.inf), axis=1)
+        shown = np.isfinite(worst) & (worst > -np.inf)
+        if shown.any():
+            spread_ax.plot(grid_times[shown], np.maximum(worst[shown], floor), "-" + marker, color=colour, ms=3,
+                           label=f"{name} ({sizes[row]})")
+    for t in d["blowups"]:
+        spread_ax.axvline(t, color="0.6", lw=0.6, ls=":")
+    spread_ax.axvline(merger, color="C3", lw=0.6, ls="--")
+    spread_ax.set(yscale="log", xlabel="t", ylabel="mean distance of the levels", xlim=(0, 1.02 * times[-1]))
+    spread_ax.legend(loc="best", fontsize="x-small")
+    label_panel(spread_ax, "(b) each exact aggregate's levels")
     floor = max(float(np.nanmin(errors[errors > 0])) / 3.0, 1e-16)
     for name in dict.fromkeys(map(str, methods)):
         rows = np.flatnonzero(methods == name)
         rows = rows[np.argsort(sizes[rows])]
         colour, marker = STYLES.get(name, BLOB)
-        largest = rows[-1]
-        axes[1].plot(d["times"], np.maximum(errors[largest], floor), "-" + marker, color=colour, ms=3)
-        axes[2].plot(sizes[rows], np.nanmax(errors[rows], axis=1), "-" + marker, color=colour, ms=4, label=name)
+        time_ax.plot(grid_times, np.maximum(errors[rows[-1]], floor), "-" + marker, color=colour, ms=3)
+        size_ax.plot(d["count"][rows], np.nanmax(errors[rows][:, later], axis=1), "-" + marker, color=colour, ms=4,
+                     label=name)
     for t in d["blowups"]:
-        axes[1].axvline(t, color="0.6", lw=0.6, ls=":")
-    axes[1].axvline(float(d["merger"]), color="C3", lw=0.6, ls="--")
-    axes[1].set(yscale="log", xlabel="t", ylabel="W1 error", ylim=(floor, None))
-    label_panel(axes[1], "(b) W1 against t")
-    axes[2].set(xscale="log", yscale="log", xlabel="particles, 1/h or cells", ylabel="largest W1 over t")
-    # One legend for (b) and (c), below the panels (inside, it would hide lines of one or the other).
-    handles, labels = axes[2].get_legend_handles_labels()
+        time_ax.axvline(t, color="0.6", lw=0.6, ls=":")
+    time_ax.axvline(merger, color="C3", lw=0.6, ls="--")
+    time_ax.set(yscale="log", xlabel="t", ylabel="W1 error", ylim=(floor, None))
+    label_panel(time_ax, "(c) W1 against t")
+    size_ax.set(xscale="log", yscale="log", xlabel="particles or cells", ylabel="largest W1 over t > 0")
+    handles, labels = size_ax.get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside lower center", ncol=(len(labels) + 1) // 2, fontsize="small")
-    label_panel(axes[2], "(c) W1 uniformly in time")
-    suptitle(fig, "K = |x|/2 from two bumps: aggregates that move and merge, against the exact solution by the hull")
+    label_panel(size_ax, "(d) W1 uniformly in t > 0")
+    suptitle(fig, f"K = |x|/2 from {p['data'].replace('_', ' ')}: aggregates that move and merge, against the exact solution by the hull")
     save_figure(fig, output.pdf, output.png)
 
 

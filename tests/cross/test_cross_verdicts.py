@@ -526,79 +526,128 @@ def test_time_to_error_does_not_extrapolate_a_cost_that_did_not_grow():
     assert math.isnan(v.time_to_error([1e-2, 1e-3], [0.2, 0.15], 1e-6, min_seconds=0.1)[0])
 
 
-# Aggregates that move and merge (two_bumps)
+# Aggregates that move and merge (bump data, one case per data)
 
 AGG = CONFIG["aggregates"]
-AGG_TIMES = np.union1d(np.linspace(0.0, AGG["t_end"], AGG["steps"] + 1), AGG["fixed_times"])
 MERGER = 0.9 / (0.9066666666666667 / 2)
 
 
-def aggregates(spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14, blob_order=4.0, ltp_order=2.0,
-               sp_order=1.0, particle_difference=2e-16, blob_merger_order=0.9, godunov_order=1.0, sp_centre=1e-16,
-               godunov_centre_order=1.0, sp_merger_order=1.0, godunov_merger_order=1.0, **changes):
-    """A two_bumps result as aggregates_data.py saves it: W1 falling in time from c/size^spd_order at t = 0 (times
-    (1 + growth t) if growth; Godunov's c/size^godunov_order), merger errors 1e-1/n^merger_order (the blob's, SP's
-    and Godunov's 0.5/size^their order, early), the centres of the exact aggregates' levels 1/(1/h)^blob_order off
-    for the blob, sp_centre for SP, 0.05/cells^godunov_centre_order for Godunov; LTP's W1 c/size^ltp_order before the
-    first blow-up (NaN after), SP's c/size^sp_order; the particle method (NaN after the first blow-up)
-    particle_difference from the grid SPD."""
-    blob = f"blob, m = {AGG['blob']['order']}"
-    runs = [("SPD, equal masses", n) for n in AGG["spd_n"]] + [("SPD, grid weights", k) for k in AGG["grid_inverse_h"]]
-    runs += [(blob, k) for k in AGG["blob"]["inverse_h"]] + [("Godunov for F", k) for k in AGG["godunov_cells"]]
-    runs += [("LTP", k) for k in AGG["ltp"]["inverse_h"]] + [("SP", k) for k in AGG["ltp"]["sp_inverse_h"]]
-    runs += [("particle method", k) for k in AGG["particle_inverse_h"]]
-    exact = np.full((AGG_TIMES.size, 2), np.nan)
-    exact[(AGG_TIMES > 0.5) & (AGG_TIMES < 1.0), 0] = -0.3
-    exact[(AGG_TIMES > 1.0) & (AGG_TIMES < MERGER)] = [-0.2, 0.02]
-    exact[AGG_TIMES > MERGER, 0] = -0.135
-    errors, centres, mergers = [], [], []
+def aggregates(case="two_bumps", spd_w1=0.25, spd_order=1.0, growth=0.0, merger_order=1.0, grid_merger=1e-14,
+               ltp_order=2.0, sp_order=1.0, godunov_order=1.0, particle_difference=2e-16, levels=None, centres=None,
+               window=None, gap=0.2933, **changes):
+    """An aggregates result as aggregates_data.py saves it, for ``case`` (two_bumps: every aggregate a centre-of-mass
+    identity; skewed: the first aggregate is none): the equal-mass SPD's W1 spd_w1 (M L/2)/n (times (1 + growth t)
+    if growth), the grid SPD's c/size^spd_order, falling in time; Godunov's c/cells^godunov_order; LTP's
+    c/size^ltp_order before the first blow-up (NaN after); SP's c/size^sp_order; the equal-mass SPD's merger errors
+    0.4/n^merger_order alternating in sign over each block, the grid SPD's grid_merger; ``levels``, ``centres`` and
+    ``window``: {method key: order} of the level spreads, centre errors and W1 around the merger (default the
+    expected orders); the blob's gap at the merger over delta ``gap``; the particle method particle_difference from
+    the grid SPD."""
+    q = v.aggregate_settings(AGG, case)
+    times = np.union1d(np.union1d(np.linspace(0.0, q["t_end"], q["steps"] + 1), q["fixed_times"]),
+                       MERGER + np.asarray(q["merger_window"]))
+    blob = f"blob, m = {q['blob']['order']}"
+    keys = {"SPD, equal masses": "spd_equal", "SPD, grid weights": "spd_grid", blob: "blob", "SP": "sp",
+            "Godunov for F": "godunov"}
+    levels = {"spd_equal": 1.0, "spd_grid": 1.0, "blob": 0.9, "sp": 1.0, "godunov": 1.0, **(levels or {})}
+    centres = {"blob": 0.9, "sp": 1.0, "godunov": 1.0, **(centres or {})}
+    window = window or {}
+    runs = [("SPD, equal masses", n) for n in q["spd_n"]] + [("SPD, grid weights", k) for k in q["grid_inverse_h"]]
+    runs += [(blob, k) for k in q["blob"]["inverse_h"]] + [("Godunov for F", k) for k in q["godunov_cells"]]
+    runs += [("LTP", k) for k in q["ltp"]["inverse_h"]] + [("SP", k) for k in q["ltp"]["sp_inverse_h"]]
+    runs += [("particle method", k) for k in q["particle_inverse_h"]]
+    mass, support = 0.9066666666666667, np.array([-0.7, 0.75])
+    exact = np.full((times.size, 2), np.nan)
+    exact[(times > 0.5) & (times < 1.0), 0] = -0.3
+    exact[(times > 1.0) & (times < MERGER)] = [-0.2, 0.02]
+    exact[times > MERGER, 0] = -0.135
+    identity = np.isfinite(exact) if case == "two_bumps" else np.isfinite(exact) & (np.arange(2) == 1)
+    around = np.isin(times, MERGER + np.asarray(q["merger_window"]))
+    errors, centre, spread, mergers, gaps, counts = [], [], [], [], [], []
     for name, size in runs:
+        count = size if name.startswith(("SPD, equal", "Godunov")) else 2 * size + 1
+        counts.append(count)
+        key = keys.get(name)
         if name == "LTP":
-            errors.append(np.where(AGG_TIMES < 0.5, 0.3 * size ** -ltp_order, np.nan))
+            row = np.where(times < 0.5, 0.3 * size ** -ltp_order, np.nan)
         elif name == "particle method":
-            errors.append(np.where(AGG_TIMES < 0.5, 0.3 / size, np.nan))
+            row = np.where(times < 0.5, 0.3 / size, np.nan)
         elif name == "SP":
-            errors.append(np.full(AGG_TIMES.size, 0.3 * size ** -sp_order))
+            row = np.full(times.size, 0.3 * size ** -sp_order)
         elif name.startswith("Godunov"):
-            errors.append(0.3 * size ** -godunov_order * np.exp(-AGG_TIMES))
+            row = 0.3 * size ** -godunov_order * np.exp(-times)
+        elif name == "SPD, equal masses":
+            row = spd_w1 * mass * np.diff(support)[0] / 2 / size * np.exp(-times) * (1.0 + growth * times)
+        elif name == blob:
+            row = 0.3 * count ** -0.9 * np.exp(-times)
         else:
-            errors.append(0.3 * size ** -spd_order * np.exp(-AGG_TIMES) * (1.0 + growth * AGG_TIMES))
-        offset = {blob: size ** -blob_order, "SP": sp_centre, "Godunov for F": 0.05 * size ** -godunov_centre_order}
-        centres.append(exact + offset.get(name, 0.0))
-        merger_orders = {blob: blob_merger_order, "SP": sp_merger_order, "Godunov for F": godunov_merger_order}
-        if name.startswith("SPD"):
-            mergers.append(MERGER + (0.1 * size ** -merger_order if name == "SPD, equal masses" else grid_merger))
-        else:
-            mergers.append(MERGER - 0.5 * size ** -merger_orders[name] if name in merger_orders else np.nan)
-    result = {"times": AGG_TIMES, "fixed_times": np.array(AGG["fixed_times"], float), "exact_positions": exact,
-              "exact_masses": np.where(np.isfinite(exact), 0.3, np.nan), "merger": MERGER,
-              "path_times": AGG_TIMES, "path_positions": exact,
+            row = 0.3 * size ** -spd_order * np.exp(-times) * (1.0 + growth * times)
+        if key in ("spd_grid", "blob", "sp", "godunov"):
+            # W1 around the merger: the row's own order unless changed (a merger a fixed time off raises it there).
+            usual = {"spd_grid": spd_order, "blob": 0.9, "sp": sp_order, "godunov": godunov_order}[key]
+            row = np.where(around, row * count ** (usual - window.get(key, usual)), row)
+        errors.append(row)
+        centre_offset = 0.05 * count ** -centres[key] if key in centres else 0.0
+        # (SP's centre-of-mass identities are exact to rounding)
+        centre.append(exact + np.where(identity & (key == "sp"), 1e-16, centre_offset))
+        spread.append(np.where(np.isfinite(exact), 0.05 * count ** -levels[key] if key else np.nan, np.nan))
+        # The grid SPD's merger: exact to rounding on two_bumps (an identity), O(h) on skewed data.
+        late = grid_merger if case == "two_bumps" else grid_merger + 0.3 / count
+        mergers.append(MERGER + late if name == "SPD, grid weights" else np.nan)
+        gaps.append(gap if name == blob else np.nan)
+    block = np.array([[n + j for j in range(q["spd_merger_block"])] for n in q["spd_n"]])
+    signs = np.where(np.arange(q["spd_merger_block"]) % 2 == 0, 1.0, -0.5)
+    spd_mergers = MERGER + 0.4 * block[:, :1] ** -merger_order * signs
+    result = {"data": np.array(q["data"]), "times": times, "fixed_times": np.array(q["fixed_times"], float),
+              "window_times": MERGER + np.asarray(q["merger_window"], float), "exact_positions": exact,
+              "exact_masses": np.where(np.isfinite(exact), mass / 2, np.nan),
+              "exact_lowers": np.where(np.isfinite(exact), [0.0, mass / 2], np.nan), "exact_identity": identity,
+              "merger": MERGER, "path_times": times, "path_positions": exact,
               "path_masses": np.where(np.isfinite(exact), 0.3, np.nan),
-              "spd_clusters": np.full((AGG_TIMES.size, 4), np.nan), "blowups": np.array([0.5, 1.0]),
+              "spd_clusters": np.full((times.size, 4), np.nan), "blowups": np.array([0.5, 1.0]),
               "methods": np.array([name for name, _ in runs]), "size": np.array([size for _, size in runs]),
-              "error": np.array(errors), "centre": np.array(centres),
-              "method_merger": np.array(mergers),
+              "count": np.array(counts), "error": np.array(errors), "centre": np.array(centre),
+              "spread": np.array(spread), "method_merger": np.array(mergers), "merger_gap": np.array(gaps),
+              "spd_merger_n": block, "spd_merger": spd_mergers,
               "spd_difference": np.array([particle_difference if name == "particle method" else np.nan
-                                          for name, _ in runs])}
+                                          for name, _ in runs]), "mass": mass, "support": support}
     return result | changes
 
 
-def run_aggregates(a):
-    return v.aggregate_claims(a, Recorder(lambda *_: None), CONFIG)
+def run_aggregates(a, case="two_bumps"):
+    return v.aggregate_claims(a, Recorder(lambda *_: None), CONFIG, v.aggregate_settings(AGG, case), case)
 
 
 def test_aggregate_results_have_the_keys_the_script_saves():
     assert set(aggregates()) == saved_keys("aggregates_data.py")
 
 
-def test_aggregate_claims_pass_on_the_expected_outcome(tmp_path):
-    save_results(tmp_path / "aggregates.npz", **aggregates())
-    assert not failing(run_aggregates(load_results(tmp_path / "aggregates.npz")))
+@pytest.mark.parametrize("case", list(AGG["cases"]))
+def test_aggregate_claims_pass_on_the_expected_outcome(tmp_path, case):
+    save_results(tmp_path / "aggregates.npz", **aggregates(case))
+    assert not failing(run_aggregates(load_results(tmp_path / "aggregates.npz"), case))
 
 
-def test_spd_at_order_one_half_uniformly_in_time_fails():
-    only_failing(run_aggregates(aggregates(spd_order=0.5)), "two_bumps.spd_order.equal_masses",
-                 "two_bumps.spd_order.grid_weights")
+def test_identities_are_checks_on_two_bumps_and_claims_on_skewed_data():
+    kinds = {case: {claim.id.split(".", 2)[2]: claim.kind for claim in run_aggregates(aggregates(case), case)}
+             for case in AGG["cases"]}
+    for key in ("blob_centres", "sp_centres", "godunov_centres"):
+        assert kinds["two_bumps"][f"aggregate.{key}"] == "check"
+        assert kinds["skewed"][f"aggregate.{key}"] == "derived"
+    assert kinds["two_bumps"]["spd_merger.grid_weights"] == "check"
+    assert kinds["skewed"]["spd_merger.grid_weights"] == "derived"
+    # The two-body prediction of the blob's gap holds only where the two aggregates hold all the mass.
+    assert "aggregate.blob_merger_gap" in kinds["two_bumps"]
+
+
+def test_an_equal_mass_spd_off_by_twice_its_discretisation_fails():
+    """W1 above (M/n) L/2: particles not at the medians of their levels, or a wrong speed."""
+    only_failing(run_aggregates(aggregates(spd_w1=2.0)), "two_bumps.spd_w1.equal_masses")
+
+
+def test_a_grid_spd_at_order_one_half_after_t_0_fails():
+    only_failing(run_aggregates(aggregates(spd_order=0.5)), "two_bumps.spd_order.grid_weights",
+                 "two_bumps.merger_w1.spd_grid")
 
 
 def test_spd_error_growing_after_the_start_breaks_the_contraction():
@@ -606,27 +655,56 @@ def test_spd_error_growing_after_the_start_breaks_the_contraction():
     only_failing(run_aggregates(aggregates(growth=2.0)), "two_bumps.spd_contraction")
 
 
-def test_an_spd_merging_at_a_time_that_does_not_converge_fails():
-    only_failing(run_aggregates(aggregates(merger_order=0.0)), "aggregate.spd_merger.equal_masses")
-
-
-def test_a_grid_spd_merging_1e_6_late_fails():
-    only_failing(run_aggregates(aggregates(grid_merger=1e-6)), "aggregate.spd_merger.grid_weights")
-
-
 @pytest.mark.parametrize("merger_order", [0.0, 0.5])
-def test_a_blob_merger_not_converging_at_order_q_fails(merger_order):
-    """A merger a fixed time off (order 0), or off by sqrt(h) (the clusters' gap read at sqrt(delta))."""
-    only_failing(run_aggregates(aggregates(blob_merger_order=merger_order)), "aggregate.blob_merger")
+def test_an_equal_mass_spd_merger_whose_envelope_does_not_fall_as_1_over_n_fails(merger_order):
+    only_failing(run_aggregates(aggregates(merger_order=merger_order)), "two_bumps.spd_merger.equal_masses")
+
+
+def test_a_grid_spd_merging_1e_6_late_fails_the_identity():
+    only_failing(run_aggregates(aggregates(grid_merger=1e-6)), "two_bumps.spd_merger.grid_weights")
+
+
+def test_a_grid_spd_merging_a_fixed_time_late_fails_on_skewed_data():
+    only_failing(run_aggregates(aggregates("skewed", grid_merger=1e-2), "skewed"), "skewed.spd_merger.grid_weights")
+
+
+@pytest.mark.parametrize("case", list(AGG["cases"]))
+@pytest.mark.parametrize("key", ["spd_equal", "spd_grid", "blob", "sp", "godunov"])
+def test_aggregates_whose_levels_stay_a_fixed_distance_away_fail(case, key):
+    """A method that holds the wrong mass (or the right mass at the wrong place) at a distance that does not shrink."""
+    only_failing(run_aggregates(aggregates(case, levels={key: 0.0}), case), f"{case}.aggregate.{key}_levels")
+
+
+@pytest.mark.parametrize("key", ["blob", "sp", "godunov"])
+def test_skewed_aggregates_off_their_position_by_a_fixed_offset_fail(key):
+    only_failing(run_aggregates(aggregates("skewed", centres={key: 0.0}), "skewed"), f"skewed.aggregate.{key}_centres")
+
+
+def test_sp_aggregates_1e_6_off_fail_the_identity():
+    a = aggregates()
+    a["centre"][a["methods"] == "SP"] += 1e-6
+    only_failing(run_aggregates(a), "two_bumps.aggregate.sp_centres")
+
+
+@pytest.mark.parametrize("case", list(AGG["cases"]))
+@pytest.mark.parametrize("key, uniform", [("spd_grid", ["spd_order.grid_weights", "spd_contraction"]), ("blob", []),
+                                          ("sp", ["sp_order_after"]), ("godunov", ["godunov_order"])])
+def test_a_merger_a_fixed_time_off_fails_w1_around_it(case, key, uniform):
+    """W1 around the merger that does not fall: the method merges a fixed time early or late (which the orders of W1
+    over every t > 0, where a method has one, see too)."""
+    only_failing(run_aggregates(aggregates(case, window={key: 0.0}), case), f"{case}.merger_w1.{key}",
+                 *(f"{case}.{name}" for name in uniform))
+
+
+@pytest.mark.parametrize("gap", [0.2787, 0.1, 1.0])
+def test_a_blob_gap_at_the_merger_off_the_two_body_prediction_fails(gap):
+    """The m = 6 mollifier's gap (0.2787), a merger read when the gap is delta/10 or delta."""
+    only_failing(run_aggregates(aggregates(gap=gap)), "two_bumps.aggregate.blob_merger_gap")
 
 
 def test_a_particle_method_apart_from_the_grid_spd_before_its_first_collision_fails():
     """A particle 1e-6 off the SPD: the method would not move the grid particles at (mass right - mass left)/2."""
     only_failing(run_aggregates(aggregates(particle_difference=1e-6)), "two_bumps.particle_spd")
-
-
-def test_blob_aggregates_off_by_a_fixed_offset_fail():
-    only_failing(run_aggregates(aggregates(blob_order=0.0)), "aggregate.blob_centres")
 
 
 def test_ltp_at_first_order_before_the_blowup_fails():
@@ -638,19 +716,13 @@ def test_sp_at_second_order_after_the_blowup_fails():
     only_failing(run_aggregates(aggregates(sp_order=2.0)), "two_bumps.sp_order_after")
 
 
-def test_godunov_at_order_one_half_uniformly_in_time_fails():
-    only_failing(run_aggregates(aggregates(godunov_order=0.5)), "two_bumps.godunov_order")
+def test_godunov_at_order_one_half_after_t_0_fails():
+    only_failing(run_aggregates(aggregates(godunov_order=0.5)), "two_bumps.godunov_order",
+                 "two_bumps.merger_w1.godunov")
 
 
-def test_sp_aggregates_1e_6_off_fail():
-    """SP's pull between the bumps not exactly mass/2 (a far field off, or the bumps within reach of eps)."""
-    only_failing(run_aggregates(aggregates(sp_centre=1e-6)), "aggregate.sp_centres")
-
-
-def test_godunov_aggregates_converging_at_order_one_half_fail():
-    only_failing(run_aggregates(aggregates(godunov_centre_order=0.5)), "aggregate.godunov_centres")
-
-
-@pytest.mark.parametrize("method", ["sp", "godunov"])
-def test_sp_or_godunov_merging_at_a_time_that_does_not_converge_fails(method):
-    only_failing(run_aggregates(aggregates(**{f"{method}_merger_order": 0.0})), f"aggregate.{method}_merger")
+def test_an_error_at_t_0_alone_decides_no_order():
+    """The data's discretisation at t = 0 is left out: a large W1 at t = 0 only changes no verdict."""
+    a = aggregates()
+    a["error"][:, 0] *= 1e3
+    assert not failing(run_aggregates(a))

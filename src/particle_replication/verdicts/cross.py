@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import claims as c
 from ..rates import Recorder, order
-from ..registry.cross import aggregate_settings
+from ..registry.cross import aggregate_settings  # noqa: F401 (the tests read the settings through it)
 from ..workflow import disturbance
 
 PAPER = "cross"
