@@ -63,6 +63,20 @@ def symmetric_bump(bump):
     return getattr(bump, "right_radius", bump.radius) == bump.radius
 
 
+def centre_of_mass_offsets(solution):
+    """For each aggregate of ``solution``: its distance from the centre of mass of the bump that holds its middle level,
+    which moves at M/2 - (mass before the bump) - (the bump's mass)/2 (the mean of the levels' speeds M/2 - w)."""
+    data, t = solution.data, solution.t
+    masses = np.array([b.mass for b in data.bumps])
+    starts = np.concatenate(([0.0], np.cumsum(masses)[:-1]))
+    initial = HullSolution(data, 0.0)
+    centres = (initial.quantile_integral(starts + masses) - initial.quantile_integral(starts)) / masses
+    paths = centres + t * (0.5 * data.mass - starts - 0.5 * masses)
+    positions, aggregate_masses, lowers = solution.aggregates
+    bump = np.clip(np.searchsorted(starts, lowers + 0.5 * aggregate_masses, side="right") - 1, 0, len(masses) - 1)
+    return np.abs(positions - paths[bump])
+
+
 def atoms(name, out, mass):
     """A method's output as (positions, masses) of point masses (see particle_methods.cross.aggregates)."""
     if name.startswith("Godunov"):
@@ -113,6 +127,7 @@ def run(p, output):
     exact_masses = np.array([pad(s.aggregates[1]) for s in solutions])
     exact_lowers = np.array([pad(s.aggregates[2]) for s in solutions])
     exact_identity = np.array([pad(identities(s)) for s in solutions]) == 1.0
+    exact_offsets = np.array([pad(centre_of_mass_offsets(s)) for s in solutions])
     # The two aggregates just before the merger: their levels, for the blob's gap at the merger.
     before = HullSolution(data, merger * (1.0 - 1e-9))
     merging = agg.level_ranges(before)
@@ -216,7 +231,7 @@ def run(p, output):
     progress(f"equal-mass SPD merger errors: largest n |t_n - t*| per block {np.nanmax(np.abs(spd_mergers - merger) * block, axis=1)}")
     save_results(output, data=np.array(data), times=times, fixed_times=np.array(p["fixed_times"], float),
                  window_times=window, exact_positions=exact_positions, exact_masses=exact_masses,
-                 exact_lowers=exact_lowers, exact_identity=exact_identity, merger=merger, path_times=path_times,
+                 exact_lowers=exact_lowers, exact_identity=exact_identity, exact_offsets=exact_offsets, merger=merger, path_times=path_times,
                  path_positions=path_positions, path_masses=path_masses, spd_clusters=np.array(cluster_rows),
                  blowups=blowups, methods=np.array(names), size=np.array(sizes), count=np.array(counts),
                  error=np.array(errors), centre=np.array(centres), spread=np.array(spreads),

@@ -600,8 +600,11 @@ def aggregates(case="two_bumps", spd_w1=0.25, spd_order=1.0, growth=0.0, merger_
     spd_mergers = MERGER + 0.4 * block[:, :1] ** -merger_order * signs
     result = {"data": np.array(q["data"]), "times": times, "fixed_times": np.array(q["fixed_times"], float),
               "window_times": MERGER + np.asarray(q["merger_window"], float), "exact_positions": exact,
-              "exact_masses": np.where(np.isfinite(exact), mass / 2, np.nan),
+              # (skewed: a quarter of the mass still free as the aggregates merge)
+              "exact_masses": np.where(np.isfinite(exact), [mass / 2, mass / 2 if case == "two_bumps" else mass / 4],
+                                       np.nan),
               "exact_lowers": np.where(np.isfinite(exact), [0.0, mass / 2], np.nan), "exact_identity": identity,
+              "exact_offsets": np.where(np.isfinite(exact), 0.0 if case == "two_bumps" else 0.02, np.nan),
               "merger": MERGER, "path_times": times, "path_positions": exact,
               "path_masses": np.where(np.isfinite(exact), 0.3, np.nan),
               "spd_clusters": np.full((times.size, 4), np.nan), "blowups": np.array([0.5, 1.0]),
@@ -726,3 +729,15 @@ def test_an_error_at_t_0_alone_decides_no_order():
     a = aggregates()
     a["error"][:, 0] *= 1e3
     assert not failing(run_aggregates(a))
+
+
+def test_skewed_data_whose_aggregates_sit_at_their_bumps_centres_of_mass_fail_the_data_check():
+    a = aggregates("skewed")
+    a["exact_offsets"] = np.where(np.isfinite(a["exact_offsets"]), 1e-3, np.nan)
+    only_failing(run_aggregates(a, "skewed"), "skewed.data.off_centre")
+
+
+def test_skewed_data_collapsed_before_the_merger_fail_the_data_check():
+    a = aggregates("skewed")
+    a["exact_masses"] = np.where(np.isfinite(a["exact_masses"]), a["mass"] / 2, np.nan)
+    only_failing(run_aggregates(a, "skewed"), "skewed.data.free_at_merger")

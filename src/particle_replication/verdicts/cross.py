@@ -653,9 +653,30 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
             f"exact merger t* = {merger:.6g} (no threshold: a merger early or late by more than the method's error "
             f"raises it; values {_listed(largest)}): order in the particles (cells) at least {minimum:g}", minimum,
             fitted(f"merger_w1.{key}", method, largest)))
-    # The blob's gap at the merger, where the two aggregates hold all the mass (a two-body problem).
+    # What the data test: aggregates off their bumps' centres of mass, mass still free when they merge.
+    before = times < merger
+    offset = float(np.nanmax(a["exact_offsets"][before]))
     merging = a["exact_masses"][np.searchsorted(times, merger) - 1]
-    if abs(np.nansum(merging) - mass) <= 1e-9 * mass:
+    free_share = 1.0 - float(np.nansum(merging)) / mass
+    if free.any():
+        out += [
+            claim(c.at_least, f"{case}.data.off_centre", "check", SOURCE_AGGREGATES, "aggregates",
+                  f"{case}, exact: the largest distance of an aggregate from the centre of mass of the bump that holds "
+                  "its middle level (which moves at the mean speed of its levels), on the time grid before the "
+                  "merger: the data make the aggregates' positions more than a centre-of-mass identity",
+                  rules["off_centre_min"], offset),
+            claim(c.at_least, f"{case}.data.free_at_merger", "check", SOURCE_AGGREGATES, "aggregates",
+                  f"{case}, exact: the share of the mass outside the two aggregates just before they merge (the "
+                  "merger is then no meeting of two bumps' centres of mass)", rules["free_share_min"], free_share),
+        ]
+    else:
+        out.append(claim(
+            c.at_most, f"{case}.data.off_centre", "check", SOURCE_AGGREGATES, "aggregates",
+            f"{case}, exact: the largest distance of an aggregate from the centre of mass of the bump that holds its "
+            "middle level, on the time grid before the merger: 0 to rounding, so every aggregate's position is a "
+            "centre-of-mass identity on these data", c.ROUNDING * LENGTH, offset))
+    # The blob's gap at the merger, where the two aggregates hold all the mass (a two-body problem).
+    if free_share <= 1e-9:
         from particle_methods.cross.aggregates import two_body_gap
 
         predicted = two_body_gap(int(q["blob"]["order"]))
