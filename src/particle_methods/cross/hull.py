@@ -23,7 +23,12 @@ stable recurrence of :class:`~particle_methods.blob.initial.Data1D` and in close
 
 The data of issue 29, ``two_bumps``, 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2 (mass
 0.9067, not normalised), blows up in its left bump at t = 1/2 and in its right one at t = 1; the two
-aggregates move towards each other and merge.
+aggregates move towards each other and merge. Each bump is symmetric and one aggregate before the merger, so
+every aggregate's position and the merger time follow from the conservation of each bump's centre of mass.
+
+The data of issue 44, ``skewed_bumps`` (:data:`SKEWED_BUMPS`), are made so that they do not: a skewed bump whose
+aggregate forms at its peak, off its centre of mass, and meets the other bump's aggregate while part of its mass is
+still outside (the facts are listed there).
 """
 
 from __future__ import annotations
@@ -180,12 +185,29 @@ class BumpData:
 
 TWO_BUMPS = BumpData("two bumps 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2",
                      (Bump(2.0, -0.4, 0.3, 2), Bump(1.0, 0.5, 0.25, 2)))
+#: A skewed bump 1.3 (1 - s^2)_+^2 peaked at -0.1 (radius 0.8 on the left, 0.1 on the right: support [-0.9, 0])
+#: and the symmetric 1.8 (1 - ((x - 0.25)/0.2)^2)_+^2 on [0.05, 0.45]. Facts of the exact solution (this module,
+#: checked in tests/cross/test_cross_hull.py against a discrete hull and the SPD):
+#:
+#: - masses 0.624 (skewed), 0.384, total M = 1.008; the skewed bump's centre of mass starts at -0.31875 (its peak
+#:   is 0.21875 to the right of it) and moves at M/2 - 0.624/2 = 0.192 until the merger;
+#: - blow-ups at 1/1.8 = 0.5556 (right bump, at x = 0.25 + 0.5556 (M/2 - 0.624 - 0.192) = 0.0767) and
+#:   1/1.3 = 0.7692 (skewed bump, at its peak's free flight x = -0.1390);
+#: - the skewed bump's aggregate forms 0.0321 to the right of the centre-of-mass path and, at first, moves 0.2425
+#:   slower than it (the mean velocity of the levels absorbed at the peak against that of the whole bump); the
+#:   offset is 0.0148 at t = 0.9, 0.0083 at t = 1 and 0.0040 at the merger;
+#: - alone, each bump would be one aggregate once its farthest end reaches its centre of mass: at
+#:   2 (0.58125)/0.624 = 1.8630 (skewed, left end) and 2 (0.2)/0.384 = 1.0417 (right bump);
+#: - the two aggregates merge at t = 1.1205477 (x = -0.09961), when the skewed bump's aggregate holds 0.57367 of
+#:   its 0.624: 0.05033 of its mass (its left tail) is still outside.
+SKEWED_BUMPS = BumpData("skewed bumps 1.3 (1 - s^2)_+^2 on [-0.9, 0] peaked at -0.1 + 1.8 (1 - ((x - 0.25)/0.2)^2)_+^2",
+                        (Bump(1.3, -0.1, 0.8, 2, right_radius=0.1), Bump(1.8, 0.25, 0.2, 2)))
 #: Data that only the hull solves (asymmetric); the symmetric data of :mod:`.profiles` are bumps too.
-BUMP_DATA = {"two_bumps": TWO_BUMPS}
+BUMP_DATA = {"two_bumps": TWO_BUMPS, "skewed_bumps": SKEWED_BUMPS}
 
 
 def bump_data(data) -> BumpData:
-    """``data`` itself, or the data named by it: 'two_bumps', or a symmetric polynomial datum of
+    """``data`` itself, or the data named by it: 'two_bumps', 'skewed_bumps', or a symmetric polynomial datum of
     :data:`~particle_methods.blob.initial.DATA_1D` ('smooth20', 'indicator', 'smooth10') as one bump."""
     if isinstance(data, BumpData):
         return data
