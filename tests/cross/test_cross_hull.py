@@ -6,11 +6,13 @@ import math
 
 import numpy as np
 import pytest
+from scipy.integrate import quad
 from scipy.optimize import brentq
+from scipy.spatial import ConvexHull
 
 from particle_methods.cross import AggregationSolution, HullSolution, exact_mass_function, merger_time, methods
 from particle_methods.cross.distances import w1_atoms
-from particle_methods.cross.hull import TWO_BUMPS, Bump, BumpData, aggregate_paths
+from particle_methods.cross.hull import SKEWED_BUMPS, TWO_BUMPS, Bump, BumpData, aggregate_paths
 
 MASS_A, MASS_B = 0.64, 0.8 / 3.0  # 2 * 0.3 * 16/15 and 0.25 * 16/15
 MASS = MASS_A + MASS_B
@@ -96,3 +98,149 @@ def test_bad_bumps_and_times_are_refused():
         aggregate_paths("two_bumps", [])
     assert math.isfinite(HullSolution("two_bumps", 1e6).dirac_mass)
 
+
+
+# --- skewed bumps (issue 44) ----------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("bump", [Bump(1.3, -0.1, 0.8, 2, right_radius=0.1), Bump(0.7, 0.2, 0.15, 3, right_radius=0.45),
+                                  Bump(2.0, 0.0, 0.3, 0, right_radius=0.6)])
+def test_skewed_bump_integrals_agree_with_quadrature(bump):
+    low, high = bump.centre - bump.radius, bump.centre + bump.right_radius
+
+    def rho(x):
+        radius = bump.radius if x < bump.centre else bump.right_radius
+        return bump.height * (1.0 - ((x - bump.centre) / radius) ** 2) ** bump.power if low <= x <= high else 0.0
+
+    assert (bump.left_end, bump.right_end) == (low, high)
+    for a in np.linspace(low - 0.1, high + 0.1, 23):
+        mass, moment = bump.left_integrals(np.array([a]))
+        options = {"points": [bump.centre], "epsabs": 1e-14, "epsrel": 1e-13} if low < a else {}
+        assert mass[0] == pytest.approx(quad(rho, low, max(a, low), **options)[0], abs=1e-13)
+        assert moment[0] == pytest.approx(quad(lambda x: x * rho(x), low, max(a, low), **options)[0], abs=1e-13)
+        assert bump.density(np.array([a]))[0] == pytest.approx(rho(a), abs=1e-15)
+    assert bump.mass == pytest.approx(quad(rho, low, high, points=[bump.centre])[0], rel=1e-13)
+    t = 2.0 / bump.height
+    dense = bump.dense_interval(t)
+    assert t * rho(dense[0]) == pytest.approx(1.0, abs=1e-12) if bump.power else dense == (low, high)
+    if bump.power:
+        assert t * rho(dense[1]) == pytest.approx(1.0, abs=1e-12)
+    assert bump.dense_interval(0.99 / bump.height) is None
+
+
+def test_the_symmetric_bump_is_unchanged():
+    # The closed forms of the symmetric bump (before skewed bumps existed), to the bit.
+    bump = Bump(2.0, -0.4, 0.3, 2)
+    assert bump == Bump(2.0, -0.4, 0.3, 2, right_radius=0.3) and bump.right_radius == 0.3
+    a = np.linspace(-0.8, 0.0, 1001)
+    s = np.clip((a + 0.4) / 0.3, -1.0, 1.0)
+    left = 0.5 * bump.unit.mass + bump.unit.mass_from_origin(s)
+    mass, moment = bump.left_integrals(a)
+    np.testing.assert_array_equal(mass, 2.0 * 0.3 * left)
+    np.testing.assert_array_equal(moment, 2.0 * 0.3 * (-0.4 * left + 0.3 * bump.unit.moment_from_left(s)))
+    assert bump.mass == 2.0 * 0.3 * bump.unit.mass
+
+
+def test_bad_right_radii_are_refused():
+    with pytest.raises(ValueError, match="right_radius"):
+        Bump(1.0, 0.0, 1.0, 2, right_radius=-0.5)
+    with pytest.raises(TypeError, match="right_radius"):
+        Bump(1.0, 0.0, 1.0, 2, right_radius="wide")
+    with pytest.raises(ValueError, match="disjoint"):  # the right radius counts in the supports
+        BumpData("overlap", (Bump(1.0, 0.0, 0.5, 2, right_radius=1.0), Bump(1.0, 1.2, 0.25, 2)))
+
+
+# The independent computation: the lower convex hull (Qhull) of the points (w, Psi_t(w)) at the levels of a fine grid
+# of initial positions, with w = F_0 and int x rho0 by 3-point Gauss-Legendre quadrature on each cell (exact for
+# (1 - s^2)^2 between the grid's nodes, which hold the peaks and the ends) instead of the hull module's closed forms.
+# An aggregate is an edge of the hull spanning a jump in w; its end levels are grid levels, so its mass is within
+# two level spacings (< 2 max(rho0) max(da) = 2.1e-5 at HALF_CELLS = 1e5) of the exact one, and its position (the
+# edge's slope) within the quadrature's rounding and a second-order term in the spacing (measured 3e-12).
+HALF_CELLS = 10**5
+
+
+def _discrete_curve(data):
+    nodes, weights = np.polynomial.legendre.leggauss(3)
+    levels, moments, w0, m0 = [], [], 0.0, 0.0
+    for b in data.bumps:
+        a = np.concatenate((np.linspace(b.centre - b.radius, b.centre, HALF_CELLS + 1)[:-1],
+                            np.linspace(b.centre, b.centre + b.right_radius, HALF_CELLS + 1)))
+        mid, half = 0.5 * (a[1:] + a[:-1]), 0.5 * np.diff(a)
+        x = mid[:, None] + half[:, None] * nodes[None, :]
+        s = (x - b.centre) / np.where(x < b.centre, b.radius, b.right_radius)
+        rho = b.height * np.clip(1.0 - s * s, 0.0, None) ** b.power
+        w = w0 + np.concatenate(([0.0], np.cumsum((rho @ weights) * half)))
+        m = m0 + np.concatenate(([0.0], np.cumsum(((x * rho) @ weights) * half)))
+        levels.append(w[1:] if levels else w)  # across the gap between bumps (w, Psi) stays one point
+        moments.append(m[1:] if moments else m)
+        w0, m0 = w[-1], m[-1]
+    return np.concatenate(levels), np.concatenate(moments)
+
+
+def _discrete_aggregates(curve, t):
+    w, moment = curve
+    psi = moment + t * (0.5 * w[-1] * w - 0.5 * w * w)  # Psi_t = int_0^w (X_0 + t (M/2 - u)) du
+    vertices = ConvexHull(np.column_stack((w, psi))).vertices  # counterclockwise in 2D
+    vertices = np.roll(vertices, -np.argmin(w[vertices]))
+    lower = vertices[: np.argmax(w[vertices]) + 1]  # from the leftmost point to the rightmost: the lower chain
+    big = np.nonzero(np.diff(w[lower]) > 1e-3 * w[-1])[0]
+    i, j = lower[big], lower[big + 1]
+    return (psi[j] - psi[i]) / (w[j] - w[i]), w[j] - w[i]
+
+
+@pytest.fixture(scope="module")
+def skewed_curve():
+    return _discrete_curve(SKEWED_BUMPS)
+
+
+@pytest.fixture(scope="module")
+def skewed_merger():
+    return merger_time("skewed_bumps", 1.1, 1.14)
+
+
+@pytest.mark.parametrize("t", [0.6, 0.8, 1.0, 1.12, 1.3, 2.0])
+def test_skewed_aggregates_agree_with_a_discrete_hull(skewed_curve, t):
+    positions, masses = _discrete_aggregates(skewed_curve, t)
+    exact = HullSolution("skewed_bumps", t)
+    assert positions.size == exact.aggregates[0].size == (1 if t < 1 / 1.3 or t > 1.13 else 2)
+    np.testing.assert_allclose(positions, exact.aggregates[0], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(masses, exact.aggregates[1], rtol=0, atol=2.1e-5)
+    assert skewed_curve[0][-1] == pytest.approx(exact.mass, abs=1e-13)
+
+
+def test_skewed_merger_time_agrees_with_a_discrete_hull(skewed_curve, skewed_merger):
+    # The aggregates close in at about 0.5, so 1e-6 before the merger they are 5e-7 apart: far above the discrete
+    # hull's position error (1e-9).
+    merger = skewed_merger
+    assert merger == pytest.approx(1.1205477, abs=1e-7)
+    assert _discrete_aggregates(skewed_curve, merger - 1e-6)[0].size == 2
+    assert _discrete_aggregates(skewed_curve, merger + 1e-6)[0].size == 1
+
+
+@pytest.mark.parametrize("t", [0.9, 1.3])
+def test_skewed_hull_agrees_with_the_spd_of_many_particles(t):
+    solution = HullSolution("skewed_bumps", t)
+    errors = [w1_atoms(solution, *methods.spd_equal("skewed_bumps", n, t)) for n in (4000, 16000)]
+    assert errors[1] < 5e-5 and errors[1] < errors[0]
+
+
+def test_skewed_aggregate_is_off_its_centre_of_mass_and_merges_before_it_has_collapsed(skewed_merger):
+    skewed, other = SKEWED_BUMPS.bumps
+    mass = skewed.mass + other.mass
+    low, high = skewed.left_end, skewed.right_end
+    centre = quad(lambda x: x * skewed.density(x), low, high, points=[-0.1])[0] / skewed.mass  # -0.31875
+    speed = mass / 2 - skewed.mass / 2  # the mean speed M/2 - w of the skewed bump's levels [0, m]
+    positions, masses = aggregate_paths("skewed_bumps", [0.78, 0.8, 0.9])
+    offsets = [x[0] - (centre + t * speed) for x, t in zip(positions, (0.78, 0.8, 0.9))]
+    assert min(offsets) > 0.01  # 0.0304, 0.0263, 0.0148: the aggregate forms at the peak, right of the centre
+    merger = skewed_merger
+    before = HullSolution("skewed_bumps", merger * (1 - 1e-9))
+    assert before.aggregates[0].size == 2  # the other bump's aggregate is there too (it formed at 1/1.8)
+    outside = skewed.mass - before.aggregates[1][0]
+    assert outside > 0.05  # 0.0503 of the skewed bump's 0.624 is still outside at the merger
+    # Alone, it would be one aggregate once its left end (moving at m/2 relative to its centre of mass) got there.
+    assert 2 * (centre - low) / skewed.mass > merger + 0.7
+    # The centres of mass of the two bumps, moving freely, would meet at another time and place.
+    other_centre, other_speed = other.centre, mass / 2 - skewed.mass - other.mass / 2
+    meeting = (other_centre - centre) / (speed - other_speed)
+    assert abs(meeting - merger) > 5e-3  # 1.1285 against 1.1205
+    assert abs(centre + meeting * speed - HullSolution("skewed_bumps", merger).aggregates[0][0]) > 2e-3

@@ -7,7 +7,7 @@ solution, known exactly (:mod:`.exact`). Public entry points:
 
 - :func:`exact_mass_function`, :class:`AggregationSolution`: the exact solution, before and after
   the blow-up (:mod:`.exact`); :class:`HullSolution` for asymmetric data whose aggregates move and merge
-  ('two_bumps', :mod:`.hull`);
+  ('two_bumps', 'skewed_bumps', :mod:`.hull`);
 - :mod:`.methods`: every method's output at time t;
 - :mod:`.distances`: W1 distances computed on each output;
 - :mod:`.aggregates`: a method's aggregates read on its output (the mean of its quantile over an exact
@@ -16,8 +16,8 @@ solution, known exactly (:mod:`.exact`). Public entry points:
 """
 
 from .exact import AggregationSolution, exact_mass_function, solution
-from .hull import TWO_BUMPS, BumpData, HullSolution, aggregate_paths, merger_time
+from .hull import SKEWED_BUMPS, TWO_BUMPS, BumpData, HullSolution, aggregate_paths, merger_time
 from .profiles import PROFILES, Profile, profile
 
-__all__ = ["PROFILES", "TWO_BUMPS", "AggregationSolution", "BumpData", "HullSolution", "Profile", "aggregate_paths",
-           "exact_mass_function", "merger_time", "profile", "solution"]
+__all__ = ["PROFILES", "SKEWED_BUMPS", "TWO_BUMPS", "AggregationSolution", "BumpData", "HullSolution", "Profile",
+           "aggregate_paths", "exact_mass_function", "merger_time", "profile", "solution"]

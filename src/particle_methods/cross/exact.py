@@ -162,7 +162,8 @@ class AggregationSolution:
 
 def solution(data, t: float):
     """The exact solution at time t: :class:`~particle_methods.cross.hull.HullSolution` for the asymmetric bump data
-    ('two_bumps', a :class:`~particle_methods.cross.hull.BumpData`), :class:`AggregationSolution` otherwise."""
+    ('two_bumps', 'skewed_bumps', a :class:`~particle_methods.cross.hull.BumpData`), :class:`AggregationSolution`
+    otherwise."""
     if isinstance(data, BumpData) or (isinstance(data, str) and data in BUMP_DATA):
         return HullSolution(data, t)
     return AggregationSolution(data, t)
@@ -170,7 +171,8 @@ def solution(data, t: float):
 
 def exact_mass_function(data, t: float, x):
     """F(t, x), the mass left of x at time t, of the entropy solution of the aggregation equation
-    with K = |x|/2 from ``data`` (a name: 'smooth20', 'indicator', 'smooth10', 'laplace', 'two_bumps'; a
-    :class:`~particle_methods.blob.initial.Data1D` or a :class:`~particle_methods.cross.hull.BumpData`),
-    before and after the blow-ups and mergers (see :func:`solution`)."""
+    with K = |x|/2 from ``data`` (a name: 'smooth20', 'indicator', 'smooth10', 'laplace', 'two_bumps',
+    'skewed_bumps'; a :class:`~particle_methods.blob.initial.Data1D` or a
+    :class:`~particle_methods.cross.hull.BumpData`), before and after the blow-ups and mergers (see
+    :func:`solution`)."""
     return solution(data, t).cdf(x)

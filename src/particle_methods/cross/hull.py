@@ -23,7 +23,12 @@ stable recurrence of :class:`~particle_methods.blob.initial.Data1D` and in close
 
 The data of issue 29, ``two_bumps``, 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2 (mass
 0.9067, not normalised), blows up in its left bump at t = 1/2 and in its right one at t = 1; the two
-aggregates move towards each other and merge.
+aggregates move towards each other and merge. Each bump is symmetric and one aggregate before the merger, so
+every aggregate's position and the merger time follow from the conservation of each bump's centre of mass.
+
+The data of issue 44, ``skewed_bumps`` (:data:`SKEWED_BUMPS`), are made so that they do not: a skewed bump whose
+aggregate forms at its peak, off its centre of mass, and meets the other bump's aggregate while part of its mass is
+still outside (the facts are listed there).
 """
 
 from __future__ import annotations
@@ -58,48 +63,75 @@ JUMP_SHARE = 1e-13
 
 @dataclass(frozen=True)
 class Bump:
-    """height (1 - ((x - centre)/radius)^2)_+^power: power 0 is the indicator of [centre - radius, centre + radius]."""
+    """height (1 - s^2)_+^power with s = (x - centre)/radius left of the centre and (x - centre)/right_radius right
+    of it (right_radius defaults to radius: the symmetric bump). Power 0 is the indicator of
+    [centre - radius, centre + right_radius]; for power >= 1 the two halves meet with zero slope at the peak
+    ``centre`` (the bump is C^1 there and at its ends), and the mass is height (radius + right_radius) M_1 / 2, M_1
+    the unit bump's mass int_{-1}^1 (1 - u^2)^power du. A skewed bump's centre of mass is not its peak: it lies
+    (right_radius - radius) / ((power + 1) M_1) to the right of it."""
 
     height: float
     centre: float
     radius: float
     power: int
+    right_radius: float | None = None
 
     def __post_init__(self):
         positive("height", self.height)
         finite_number("centre", self.centre)
         positive("radius", self.radius)
+        if self.right_radius is None:
+            object.__setattr__(self, "right_radius", self.radius)
+        positive("right_radius", self.right_radius)
         unit = Data1D("unit bump", self.power)
         object.__setattr__(self, "unit", unit)
         # The unit bump's mass, once: every level of a root iteration needs it.
         object.__setattr__(self, "_unit_mass", unit.mass)
 
     @property
+    def left_end(self) -> float:
+        return self.centre - self.radius
+
+    @property
+    def right_end(self) -> float:
+        return self.centre + self.right_radius
+
+    @property
     def mass(self) -> float:
-        return self.height * self.radius * self._unit_mass
+        # (height/2) (radius + right_radius) is height radius to the last bit when the two radii agree.
+        return self.height * 0.5 * (self.radius + self.right_radius) * self._unit_mass
 
     def scaled(self, a):
-        return (np.asarray(a, dtype=np.float64) - self.centre) / self.radius
+        """s = (a - centre)/radius left of the centre, (a - centre)/right_radius from it on."""
+        offset = np.asarray(a, dtype=np.float64) - self.centre
+        return offset / np.where(offset < 0.0, self.radius, self.right_radius)
 
     def density(self, a):
         return self.height * self.unit(self.scaled(a))
 
     def left_integrals(self, a):
-        """(int_{-inf}^a of the bump, int_{-inf}^a x times the bump), with s = (a - centre)/radius:
-        c r (M_1/2 + m_1(s)) and c r (centre (M_1/2 + m_1(s)) + r int_{-1}^s u (1 - u^2)^p du)."""
+        """(int_{-inf}^a of the bump, int_{-inf}^a x times the bump), with s = scaled(a), r = radius and
+        k = right_radius/r right of the centre (k = 1 left of it), m_1(s) = int_0^s (1 - u^2)^p du and
+        I(s) = int_{-1}^s u (1 - u^2)^p du: c r (M_1/2 + k m_1(s)) and
+        c r (centre (M_1/2 + k m_1(s)) + r (k^2 I(s) + (1 - k^2) I(0))) (the right half is the unit bump
+        stretched by right_radius: its mass and first moment about the centre scale by k and k^2). For the
+        symmetric bump k = 1 and the two are c r (M_1/2 + m_1(s)) and c r (centre (M_1/2 + m_1(s)) + r I(s))."""
         s = np.clip(self.scaled(a), -1.0, 1.0)
-        left = 0.5 * self._unit_mass + self.unit.mass_from_origin(s)
+        stretch = np.where(s > 0.0, self.right_radius / self.radius, 1.0)
+        left = 0.5 * self._unit_mass + stretch * self.unit.mass_from_origin(s)
+        square = stretch * stretch
+        moment = square * self.unit.moment_from_left(s) + (1.0 - square) * self.unit.moment_from_left(0.0)
         scale = self.height * self.radius
-        return scale * left, scale * (self.centre * left + self.radius * self.unit.moment_from_left(s))
+        return scale * left, scale * (self.centre * left + self.radius * moment)
 
     def dense_interval(self, t: float):
         """The a where t rho0(a) > 1, as (low, high), or None:
-        (1 - s^2)^p > 1/(c t) for |s| < sqrt(1 - (c t)^(-1/p))."""
+        (1 - s^2)^p > 1/(c t) for |s| < sqrt(1 - (c t)^(-1/p)), scaled by each side's radius."""
         ct = self.height * t
         if ct <= 1.0:
             return None
         half = 1.0 if self.power == 0 else math.sqrt(-math.expm1(-math.log(ct) / self.power))
-        return self.centre - half * self.radius, self.centre + half * self.radius
+        return self.centre - half * self.radius, self.centre + half * self.right_radius
 
 
 @dataclass(frozen=True)
@@ -113,13 +145,13 @@ class BumpData:
         instance("name", self.name, str)
         if not isinstance(self.bumps, tuple) or not self.bumps or not all(isinstance(b, Bump) for b in self.bumps):
             raise ParameterTypeError("bumps must be a non-empty tuple of Bump")
-        ends = [(b.centre - b.radius, b.centre + b.radius) for b in self.bumps]
+        ends = [(b.left_end, b.right_end) for b in self.bumps]
         if any(right > left for (_, right), (left, _) in zip(ends, ends[1:])):
             raise ValueError("bumps must be sorted left to right with disjoint supports")
         masses = np.array([b.mass for b in self.bumps])
         object.__setattr__(self, "_before", np.concatenate(([0.0], np.cumsum(masses)[:-1])))
         object.__setattr__(self, "_moments_before", np.concatenate(
-            ([0.0], np.cumsum([b.left_integrals(b.centre + b.radius)[1] for b in self.bumps])[:-1])))
+            ([0.0], np.cumsum([b.left_integrals(b.right_end)[1] for b in self.bumps])[:-1])))
 
     @property
     def mass(self) -> float:
@@ -127,7 +159,7 @@ class BumpData:
 
     @property
     def support(self) -> tuple[float, float]:
-        return self.bumps[0].centre - self.bumps[0].radius, self.bumps[-1].centre + self.bumps[-1].radius
+        return self.bumps[0].left_end, self.bumps[-1].right_end
 
     @property
     def peak(self) -> float:
@@ -142,7 +174,7 @@ class BumpData:
         x = limited("x", finite_values("x", x))
         value = np.zeros(x.shape)
         for index, bump in enumerate(self.bumps):
-            value = np.where(x >= bump.centre - bump.radius, self._before[index] + bump.left_integrals(x)[0], value)
+            value = np.where(x >= bump.left_end, self._before[index] + bump.left_integrals(x)[0], value)
         return value
 
     def in_bump(self, index: int, a):
@@ -153,12 +185,29 @@ class BumpData:
 
 TWO_BUMPS = BumpData("two bumps 2 (1 - ((x + 0.4)/0.3)^2)_+^2 + (1 - ((x - 0.5)/0.25)^2)_+^2",
                      (Bump(2.0, -0.4, 0.3, 2), Bump(1.0, 0.5, 0.25, 2)))
+#: A skewed bump 1.3 (1 - s^2)_+^2 peaked at -0.1 (radius 0.8 on the left, 0.1 on the right: support [-0.9, 0])
+#: and the symmetric 1.8 (1 - ((x - 0.25)/0.2)^2)_+^2 on [0.05, 0.45]. Facts of the exact solution (this module,
+#: checked in tests/cross/test_cross_hull.py against a discrete hull and the SPD):
+#:
+#: - masses 0.624 (skewed), 0.384, total M = 1.008; the skewed bump's centre of mass starts at -0.31875 (its peak
+#:   is 0.21875 to the right of it) and moves at M/2 - 0.624/2 = 0.192 until the merger;
+#: - blow-ups at 1/1.8 = 0.5556 (right bump, at x = 0.25 + 0.5556 (M/2 - 0.624 - 0.192) = 0.0767) and
+#:   1/1.3 = 0.7692 (skewed bump, at its peak's free flight x = -0.1390);
+#: - the skewed bump's aggregate forms 0.0321 to the right of the centre-of-mass path and, at first, moves 0.2425
+#:   slower than it (the mean velocity of the levels absorbed at the peak against that of the whole bump); the
+#:   offset is 0.0148 at t = 0.9, 0.0083 at t = 1 and 0.0040 at the merger;
+#: - alone, each bump would be one aggregate once its farthest end reaches its centre of mass: at
+#:   2 (0.58125)/0.624 = 1.8630 (skewed, left end) and 2 (0.2)/0.384 = 1.0417 (right bump);
+#: - the two aggregates merge at t = 1.1205477 (x = -0.09961), when the skewed bump's aggregate holds 0.57367 of
+#:   its 0.624: 0.05033 of its mass (its left tail) is still outside.
+SKEWED_BUMPS = BumpData("skewed bumps 1.3 (1 - s^2)_+^2 on [-0.9, 0] peaked at -0.1 + 1.8 (1 - ((x - 0.25)/0.2)^2)_+^2",
+                        (Bump(1.3, -0.1, 0.8, 2, right_radius=0.1), Bump(1.8, 0.25, 0.2, 2)))
 #: Data that only the hull solves (asymmetric); the symmetric data of :mod:`.profiles` are bumps too.
-BUMP_DATA = {"two_bumps": TWO_BUMPS}
+BUMP_DATA = {"two_bumps": TWO_BUMPS, "skewed_bumps": SKEWED_BUMPS}
 
 
 def bump_data(data) -> BumpData:
-    """``data`` itself, or the data named by it: 'two_bumps', or a symmetric polynomial datum of
+    """``data`` itself, or the data named by it: 'two_bumps', 'skewed_bumps', or a symmetric polynomial datum of
     :data:`~particle_methods.blob.initial.DATA_1D` ('smooth20', 'indicator', 'smooth10') as one bump."""
     if isinstance(data, BumpData):
         return data
@@ -212,7 +261,7 @@ class HullSolution:
     def _increasing_pieces(self):
         pieces = []
         for index, bump in enumerate(self.data.bumps):
-            low, high = bump.centre - bump.radius, bump.centre + bump.radius
+            low, high = bump.left_end, bump.right_end
             dense = bump.dense_interval(self.t)
             if dense is None:
                 pieces.append(_Piece(index, low, high))
@@ -313,7 +362,7 @@ class HullSolution:
             mine = index == b
             if not np.any(mine):
                 continue
-            low, high = bump.centre - bump.radius, bump.centre + bump.radius
+            low, high = bump.left_end, bump.right_end
             level = w[mine]
             a = monotone_root(lambda s, b=b: data.in_bump(b, s)[0], bump.density, level, np.full(level.size, low),
                               np.full(level.size, high))

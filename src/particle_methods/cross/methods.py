@@ -1,6 +1,6 @@
 """Every method of the three papers applied to one equation: rho_t + (rho v)_x = 0, v = -K' * rho,
 K = |x|/2 (so v = (M - 2F)/2), from the symmetric data of :mod:`.profiles` and (SPDs, blob method,
-Godunov) the asymmetric bump data of :mod:`.hull` ('two_bumps').
+Godunov) the asymmetric bump data of :mod:`.hull` ('two_bumps', 'skewed_bumps').
 
 Each function returns the method's own output at time t, the object W1 is measured on
 (:mod:`.distances`): positions and masses of point masses, cell values of F, or LTP/SP particles.
@@ -98,7 +98,7 @@ def grid_particles(data, h: float):
     """(positions, densities rho0(jh), masses) of the grid particles jh in [-1, 1] with positive
     mass; masses rho0(jh) h, halved at the two ends (trapezoid rule, total mass exact for (4.4)).
     1/h must be a whole number k (the grid then holds +-1); at most MAX_POSITIONS = 2k + 1 points.
-    For bump data (two_bumps) the masses are scaled to the exact total: c (1 - s^2)^2 is only C^1 at the
+    For bump data (two_bumps, skewed_bumps) the masses are scaled to the exact total: c (1 - s^2)^2 is only C^1 at the
     ends of its support, where the trapezoid rule then errs by O(h^2) (6e-5 of the mass at h = 1/20), and W1
     between measures of different masses is infinite; for (4.3)-(4.5) the sum is exact to rounding."""
     density_of = _grid_density(data)
