@@ -656,7 +656,8 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
     # What the data test: aggregates off their bumps' centres of mass, mass still free when they merge.
     before = times < merger
     offset = float(np.nanmax(a["exact_offsets"][before]))
-    merging = a["exact_masses"][np.searchsorted(times, merger) - 1]
+    last = np.searchsorted(times, merger) - 1  # the last time of the grid before the merger
+    merging = a["exact_masses"][last]
     free_share = 1.0 - float(np.nansum(merging)) / mass
     if free.any():
         out += [
@@ -666,8 +667,9 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
                   "merger: the data make the aggregates' positions more than a centre-of-mass identity",
                   rules["off_centre_min"], offset),
             claim(c.at_least, f"{case}.data.free_at_merger", "check", SOURCE_AGGREGATES, "aggregates",
-                  f"{case}, exact: the share of the mass outside the two aggregates just before they merge (the "
-                  "merger is then no meeting of two bumps' centres of mass)", rules["free_share_min"], free_share),
+                  f"{case}, exact: the share of the mass outside the two aggregates at t = {float(times[last]):.4g}, the "
+                  "last time of the grid before they merge (the merger is then no meeting of two bumps' centres of "
+                  "mass)", rules["free_share_min"], free_share),
         ]
     else:
         out.append(claim(
