@@ -26,7 +26,8 @@ RESOLUTION_TIME = 0.8  # Figures 1B and 3B: the densities are compared with the 
 # Kind and source of every claim (see particle_replication.claims): "paper" for what the paper
 # states (where), "derived" for what we derive from its theory, "check" for our own checks.
 FIG4_RATE = ("paper", "Figure 4, section 4.3")
-FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates not as good as m q")
+FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates not as good as m q (cannot fail in practice: see "
+                "fig4.m6_rates_approach_mq)")
 #: Our readings of section 4.3's "the m = 6 blob method shows even greater improvement" (K = (-Delta)^-1):
 #: applied to each of the trajectory and density errors, and to their rates.
 FIG4_M6_READING = ("derived", "our reading of section 4.3 ('even greater improvement' with m = 6)")
@@ -116,7 +117,12 @@ KINDS = {
     "fig4.repulsive_same_quadrature": ("derived", "(4.1): m = 4 and m = 6 share the narrowest Gaussian"),
     "fig4.repulsive_quadrature_prediction": ("derived", "(4.1), (4.5), section 4.1: Poisson summation of the narrowest "
                                              "Gaussian along the exact flow, no fitted parameter"),
-    "fig4.repulsive_extended_order": ("check", "Figure 4, K = -|x|/2, runs extended to finer h (not in the paper)"),
+    "fig4.repulsive_error_prediction": ("derived", "(4.1), (4.5), section 4.1: the predicted quadrature part plus "
+                                        "the regularisation part, runs extended to finer h (not in the paper)"),
+    "fig4.repulsive_m6_quadrature": ("derived", "(4.1): m = 6's narrowest Gaussian is 16/15 times m = 4's; its "
+                                     "density error is its quadrature part"),
+    "fig4.m6_rates_approach_mq": ("derived", "Corollary 3.10 with exact kernels (section 4.3: m = 6 rates not as "
+                                  "good as m q, which we do not reproduce)"),
     "fig4.repulsive_coarse_window": ("check", "Figure 4: dependence on the unstated h range"),
 }
 
@@ -227,13 +233,16 @@ def fig4_claims(d, rules, recorder: Recorder):
                              f"rate close to m q = {rate4:g}", rate4, m4, band))
             out.append(claim(c.at_most, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate "
                              f"not as good as m q = {rate6:g} (the paper blames other error sources; our kernels are "
-                             "exact)", rate6, m6, published=f"< {rate6:g}"))
+                             "exact). This cannot fail in practice: any rate fitted before the asymptotic range "
+                             "passes. The shortfall is not reproduced, only not contradicted: our rates approach m q "
+                             "(fig4.m6_rates_approach_mq)", rate6, m6, published=f"< {rate6:g}"))
             out.append(claim(c.at_least, f"fig4.m6_rate_above_m4_{kernel}_{part}", "4", f"K = {names[kernel]}: the "
                              f"m = 6 {part} rate at least m = 4's ({m4:.3g})", m4, m6, published="better"))
             ratio = d[f"{kernel}_blob6_{part}"][-1] / d[f"{kernel}_blob4_{part}"][-1]
             out.append(claim(c.at_most, f"fig4.m6_better_{kernel}_{part}", "4", f"K = {names[kernel]}: m = 6 "
                              f"beats m = 4 ({part}): ratio of the finest errors", 1.0, float(ratio),
                              published="better"))
+    out.append(m6_approach_claim(d, band))
     particle_x, particle_rho = d["cubic_particle_trajectory"][-1], d["cubic_particle_density"][-1]
     m4_x, m4_rho = d["cubic_blob4_trajectory"][-1], d["cubic_blob4_density"][-1]
     # m = 6 error over the best other method's, worst of trajectory and density, at every h (the claim: the finest)
@@ -278,6 +287,27 @@ def fig4_claims(d, rules, recorder: Recorder):
     return out
 
 
+#: The m = 6 errors whose rate the regularisation sets (Corollary 3.10): every error of Figure 4 but the repulsive
+#: density, which its quadrature part limits over the paper's range (repulsive_claims).
+M6_REGULARISED = (("newtonian_repulsive", "trajectory"), ("cubic", "trajectory"), ("cubic", "density"))
+
+
+def m6_approach_claim(d, band: float):
+    """Derived: with exact kernels the m = 6 errors set by the regularisation approach the order m q. Its error is
+    C delta^m (1 + O(delta^2)), so the pairwise order of the two finest h tends to m q and is the measure nearest
+    to it; the claim takes the one farthest from m q over :data:`M6_REGULARISED`, within ``band`` (the
+    repository's "close to"). A shortfall like the paper's (rates visibly below m q) fails it."""
+    h, rate6 = d["h_values"], 6 * float(d["q"])
+    orders = {f"{kernel} {part}": float(np.log(d[f"{kernel}_blob6_{part}"][-1] / d[f"{kernel}_blob6_{part}"][-2])
+                                        / np.log(h[-1] / h[-2])) for kernel, part in M6_REGULARISED}
+    farthest = max(orders.values(), key=lambda value: abs(value - rate6))
+    return claim(c.close_to, "fig4.m6_rates_approach_mq", "4", f"with exact kernels our m = 6 rates approach m q = "
+                 f"{rate6:g}, so the paper's shortfall is not reproduced: pairwise order between h = 1/{1 / h[-2]:.0f} "
+                 f"and 1/{1 / h[-1]:.0f} of the errors the regularisation sets "
+                 f"({', '.join(f'{name}: {value:.3f}' for name, value in orders.items())}), the one farthest from "
+                 f"{rate6:g}", rate6, farthest, band)
+
+
 def fig4log_claims(d_log, d, rules, recorder: Recorder):
     """Figure 4's row label reads K = -log|x|/(2 pi); its caption and text say (-Delta)^{-1}, -|x|/2 in
     1D. Which reading do the published m = 4 rates (m q = 3.6) fit? For trajectory and density: the
@@ -305,19 +335,25 @@ def fig4log_claims(d_log, d, rules, recorder: Recorder):
 
 
 def repulsive_claims(d, p, rules, recorder: Recorder):
-    """Figure 4, K = -|x|/2: where the slow density rate comes from, and whether the quadrature part is the
-    aliasing predicted without fitted parameters (particle_methods.blob.aliasing)."""
+    """Figure 4, K = -|x|/2: where the slow density rate comes from, whether the quadrature part is the
+    aliasing predicted without fitted parameters (particle_methods.blob.aliasing), and whether that prediction,
+    added to the regularisation part, gives the runs' error beyond the paper's range of h."""
     n, base = d["inverse_h"], int(d["base_count"])
     h, q, k = 1.0 / n, float(d["q"]), int(p["fit_points"])
     band = float(rules["rate_tolerance"])
     out = []
-    mismatch = max(float(np.abs(d[f"m{m}_combined"] / d[f"m{m}_total"] - 1).max()) for m in (4, 6))
+    # the decomposition's sizes: where the quadrature part is most of the error (h <= 1/decomposition_from)
+    counted = n >= int(rules["decomposition_from"])
+    gaps = {m: np.abs(d[f"m{m}_combined"] / d[f"m{m}_total"] - 1) for m in (4, 6)}
+    mismatch = max(float(gaps[m][counted].max()) for m in (4, 6))
     share = min(float(d[f"m{m}_quadrature"][base - 1] / d[f"m{m}_combined"][base - 1]) for m in (4, 6))
     out += [
         claim(c.at_most, "fig4.repulsive_decomposition", "4", "K = -|x|/2: the quadrature and regularisation parts, "
               "integrated along the exact trajectories, account for the measured density error: largest relative "
-              "gap between their sum and the blob runs' error, m = 4 and 6, every h",
-              float(rules["decomposition_gap"]), mismatch),
+              f"gap between their sum and the blob runs' error, m = 4 and 6, h = 1/{n[counted][0]} to 1/{n[-1]} "
+              f"(coarser: {', '.join(f'1/{v}: {max(gaps[4][i], gaps[6][i]):.3g}' for i, v in enumerate(n) if not counted[i])}"
+              ", where the regularisation part, and with it the neglected displacement of the particles by their "
+              "trajectory error, dominates)", float(rules["decomposition_gap"]), mismatch),
         claim(c.at_least, "fig4.repulsive_quadrature_dominates", "4", f"K = -|x|/2 at h = 1/{n[base - 1]}: the "
               "quadrature part (particle sum against the exact mollified convolution) is most of the density error: "
               "its share, smallest of m = 4 and 6", float(rules["quadrature_share_min"]), share),
@@ -328,21 +364,80 @@ def repulsive_claims(d, p, rules, recorder: Recorder):
         out.append(claim(c.close_to, f"fig4.repulsive_regularisation_m{m}", "4", f"K = -|x|/2, m = {m}: the "
                          f"regularisation part alone converges at m q = {m * q:g}: order on the {k} finest h of the "
                          "paper's range", m * q, slope, band))
-    ratio = float(d["m6_quadrature"][base - 1] / d["m4_quadrature"][base - 1])
-    out.append(claim(c.between, "fig4.repulsive_same_quadrature", "4", "m = 4 and m = 6 share the narrowest Gaussian "
-                     "of (4.1), which sets the quadrature error, so their density errors coincide: m = 6 over m = 4 "
-                     f"quadrature part at h = 1/{n[base - 1]}", *map(float, rules["same_quadrature_band"]), ratio,
-                     published="(our derivation)"))
+    ratios = d["m6_quadrature"][:base] / d["m4_quadrature"][:base]
+    farthest = float(ratios[np.argmax(np.abs(ratios / SAME_QUADRATURE - 1))])
+    out.append(claim(c.relatively_close_to, "fig4.repulsive_same_quadrature", "4", "(4.1) gives m = 6 the narrowest "
+                     "Gaussian of m = 4 with 16/15 its weight, and that Gaussian sets the quadrature error (the next "
+                     "one aliases exp(-3c/J^2) times less): m = 6 over m = 4 quadrature part, the one farthest from "
+                     f"16/15 over the paper's range (h = 1/{n[0]} to 1/{n[base - 1]})", SAME_QUADRATURE, farthest,
+                     float(rules["same_quadrature_tolerance"])))
     out.append(quadrature_prediction_claim(d, p, rules))
-    extended = recorder.add(rates.order(f"{PAPER}.fig4.repulsive_extended_order", "h", h, d["m4_total"], k,
-                                     "m = 4 density, extended"))
-    out.append(claim(c.close_to, "fig4.repulsive_extended_order", "4", f"K = -|x|/2, m = 4: density order on the {k} "
-                     f"finest h of the extended runs (to h = 1/{n[-1]})", 4 * q, extended, band))
+    out.append(error_prediction_claim(d, rules))
+    out.append(m6_quadrature_claim(d, p, rules))
     coarse = float(np.polyfit(np.log(h[:k]), np.log(d["m4_total"][:k]), 1)[0])
     out.append(claim(c.close_to, "fig4.repulsive_coarse_window", "4", f"K = -|x|/2, m = 4: density order on the {k} "
                      f"coarsest h of the paper's range (h = 1/{n[0]} to 1/{n[k - 1]}): the verdict depends on the "
                      "unstated h range", 4 * q, coarse, band))
     return out
+
+
+#: m = 6 over m = 4 weight of the narrowest Gaussian of (4.1): psi6 = (16/15) psi4(x) - (1/30) psi4(x/2), and
+#: psi4(x/2) holds only wider Gaussians (particle_methods.blob.aliasing.quadrature_prediction).
+SAME_QUADRATURE = 16.0 / 15.0
+
+
+def local_orders(n, errors) -> str:
+    """Pairwise orders of ``errors`` between successive 1/h in ``n``, as text."""
+    orders = np.diff(np.log(errors)) / np.diff(np.log(1.0 / n))
+    return ", ".join(f"{order:.2f} ({a}-{b})" for order, a, b in zip(orders, n[:-1], n[1:]))
+
+
+def error_prediction_claim(d, rules):
+    """Derived: beyond the paper's range (the extended runs, out of sample), the m = 4 run's density error is the
+    L1_h norm of P + R, particle by particle: P the quadrature part predicted with no fitted parameter, R the
+    regularisation part computed along the exact trajectories (from the exact solution and the mollifier, no run,
+    nothing fitted). The crossover from P to R is where the order of the error moves towards m q."""
+    n, base = d["inverse_h"], int(d["base_count"])
+    extended = slice(base, None)
+    gaps = d["m4_total"][extended] / d["m4_predicted"][extended] - 1.0
+    crossing = np.flatnonzero(d["m4_regularisation"] > d["m4_quadrature"])
+    crossing = crossing[crossing >= base - 1]
+    crossover = f"the regularisation part exceeds the quadrature part from 1/h = {n[crossing[0]]}" if crossing.size \
+        else "the quadrature part dominates at every h"
+    return claim(c.at_most, "fig4.repulsive_error_prediction", "4", "K = -|x|/2, m = 4, runs extended beyond the "
+                 f"paper's range (1/h = {', '.join(str(v) for v in n[extended])}): the density error equals P + R "
+                 "(L1_h norm of their sum particle by particle; P the aliasing prediction with no fitted parameter, R "
+                 "the regularisation part along the exact trajectories): largest |error / (P + R) - 1|, "
+                 f"{', '.join(f'{g:+.3g} (1/{v})' for g, v in zip(gaps, n[extended]))}; {crossover}; pairwise orders "
+                 f"of the error {local_orders(n, d['m4_total'])}", float(rules["error_prediction_gap"]),
+                 float(np.abs(gaps).max()), published="(our derivation)")
+
+
+def m6_quadrature_claim(d, p, rules):
+    """Derived: the m = 6 run's density error is its quadrature part, 16/15 times the m = 4 prediction P (its
+    regularisation part falls at h^5.4), at the h where P's neglected terms, of order the square of the saddle
+    ratio (:func:`~particle_methods.blob.aliasing.saddle_ratio`), are below the tolerance, and where the predicted
+    error stays above the integrator's floor, rtol times the mass, by the tolerance's inverse."""
+    from particle_methods.blob.aliasing import quadrature_prediction, saddle_ratio
+    from particle_methods.blob.initial import data_1d, grid_1d
+
+    n, q, t, data = d["inverse_h"], float(d["q"]), float(d["t"]), data_1d(p["data"])
+    tolerance = float(rules["m6_quadrature_gap"])
+    predicted = SAME_QUADRATURE * np.array([quadrature_prediction(data, 1.0 / v, q, t) for v in n])
+    expansion = np.array([saddle_ratio(data, 1.0 / v, q) for v in n]) ** 2
+    finest = 1.0 / n.max()
+    mass = float(finest * data(grid_1d(finest)[:, 0]).sum())
+    floor = float(p["rtol"]) * mass
+    held = (expansion <= tolerance) & (predicted * tolerance >= floor)
+    ratios = d["m6_total"] / predicted
+    text = ", ".join(f"{r:.5g} (1/{v})" for r, v in zip(ratios, n))
+    return claim(c.relatively_close_to, "fig4.repulsive_m6_quadrature", "4", "K = -|x|/2, m = 6: the density error "
+                 "is the quadrature part of the narrowest Gaussian, 16/15 times the m = 4 prediction P (no fitted "
+                 f"parameter): error / ((16/15) P) at every h, {text}; the one farthest from 1 where P's neglected "
+                 f"terms (saddle ratio squared) are at most the tolerance and (16/15) P is at least the integrator's "
+                 f"floor (rtol {float(p['rtol']):g} times the mass {mass:.4g}) over the tolerance (h = "
+                 f"{', '.join(f'1/{v}' for v in n[held])})", 1.0,
+                 float(ratios[held][np.argmax(np.abs(ratios[held] - 1))]) if held.any() else np.nan, tolerance)
 
 
 def quadrature_prediction_claim(d, p, rules):
