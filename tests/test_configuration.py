@@ -68,7 +68,7 @@ def edited(path, value):
         ("sticky.fig3.decay_window", 16, "longer than sticky.fig3.error_p + sticky.fig3.rate_p"),
         ("blob.fig1.zoom", [-0.06, 0.06, 1.0, 0.8], "low < high"),
         ("sticky.cost.band", [1.2, 0.8], "low < high"),
-        ("blob.claims.same_quadrature_band", [2.0, 0.5], "low < high"),
+        ("sticky.beyond.events_band", [2.0, 0.5], "low < high"),
         ("ltp.claims.dt_order_band", [1.2, 0.8], "low < high"),
         ("ltp.quadratic.eps_scan.eps_min", 0.2, "must be below ltp.quadratic.eps_scan.eps_max"),
         ("blob.fig2.density_times", [0.0, 0.4, 1.5], "beyond blob.fig2.t_max"),

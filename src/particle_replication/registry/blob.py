@@ -136,6 +136,7 @@ RESULTS = (
             "m*_quadrature",
             "m*_regularisation",
             "m*_combined",
+            "m*_predicted",
         ),
         Job(
             "Figure 4, K = -|x|/2: the density error split into quadrature and regularisation parts, the runs "

@@ -26,7 +26,8 @@ RESOLUTION_TIME = 0.8  # Figures 1B and 3B: the densities are compared with the 
 # Kind and source of every claim (see particle_replication.claims): "paper" for what the paper
 # states (where), "derived" for what we derive from its theory, "check" for our own checks.
 FIG4_RATE = ("paper", "Figure 4, section 4.3")
-FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates not as good as m q")
+FIG4_M6_RATE = ("paper", "Figure 4, section 4.3: m = 6 rates not as good as m q (cannot fail in practice: see "
+                "fig4.m6_rates_approach_mq)")
 #: Our readings of section 4.3's "the m = 6 blob method shows even greater improvement" (K = (-Delta)^-1):
 #: applied to each of the trajectory and density errors, and to their rates.
 FIG4_M6_READING = ("derived", "our reading of section 4.3 ('even greater improvement' with m = 6)")
@@ -116,7 +117,12 @@ KINDS = {
     "fig4.repulsive_same_quadrature": ("derived", "(4.1): m = 4 and m = 6 share the narrowest Gaussian"),
     "fig4.repulsive_quadrature_prediction": ("derived", "(4.1), (4.5), section 4.1: Poisson summation of the narrowest "
                                              "Gaussian along the exact flow, no fitted parameter"),
-    "fig4.repulsive_extended_order": ("check", "Figure 4, K = -|x|/2, runs extended to finer h (not in the paper)"),
+    "fig4.repulsive_error_prediction": ("derived", "(4.1), (4.5), section 4.1: the predicted quadrature part plus "
+                                        "the regularisation part, runs extended to finer h (not in the paper)"),
+    "fig4.repulsive_m6_quadrature": ("derived", "(4.1): m = 6's narrowest Gaussian is 16/15 times m = 4's; its "
+                                     "density error is its quadrature part"),
+    "fig4.m6_rates_approach_mq": ("derived", "Corollary 3.10 with exact kernels (section 4.3: m = 6 rates not as "
+                                  "good as m q, which we do not reproduce)"),
     "fig4.repulsive_coarse_window": ("check", "Figure 4: dependence on the unstated h range"),
 }
 
@@ -227,13 +233,16 @@ def fig4_claims(d, rules, recorder: Recorder):
                              f"rate close to m q = {rate4:g}", rate4, m4, band))
             out.append(claim(c.at_most, f"fig4.m6_{kernel}_{part}", "4", f"K = {names[kernel]}, m = 6: {part} rate "
                              f"not as good as m q = {rate6:g} (the paper blames other error sources; our kernels are "
-                             "exact)", rate6, m6, published=f"< {rate6:g}"))
+                             "exact). This cannot fail in practice: any rate fitted before the asymptotic range "
+                             "passes. The shortfall is not reproduced, only not contradicted: our rates approach m q "
+                             "(fig4.m6_rates_approach_mq)", rate6, m6, published=f"< {rate6:g}"))
             out.append(claim(c.at_least, f"fig4.m6_rate_above_m4_{kernel}_{part}", "4", f"K = {names[kernel]}: the "
                              f"m = 6 {part} rate at least m = 4's ({m4:.3g})", m4, m6, published="better"))
             ratio = d[f"{kernel}_blob6_{part}"][-1] / d[f"{kernel}_blob4_{part}"][-1]
             out.append(claim(c.at_most, f"fig4.m6_better_{kernel}_{part}", "4", f"K = {names[kernel]}: m = 6 "
                              f"beats m = 4 ({part}): ratio of the finest errors", 1.0, float(ratio),
                              published="better"))
+    out.append(m6_approach_claim(d, band))
     particle_x, particle_rho = d["cubic_particle_trajectory"][-1], d["cubic_particle_density"][-1]
     m4_x, m4_rho = d["cubic_blob4_trajectory"][-1], d["cubic_blob4_density"][-1]
     # m = 6 error over the best other method's, worst of trajectory and density, at every h (the claim: the finest)
@@ -268,14 +277,60 @@ def fig4_claims(d, rules, recorder: Recorder):
                         d["cubic_reference_error"][1] / d["cubic_blob6_density"][-1])),
               published="n/a"),
     ]
-    q = float(d["diagnostic_q"])
-    for m in (4, 6):
-        rate = order(recorder, d, f"diagnostic_m{m}_density", f"fig4.repulsive_density_q{q:g}_m{m}")
-        out.append(claim(c.close_to, f"fig4.repulsive_density_q{q:g}_m{m}", "4 (diagnostic)",
-                         f"K = -|x|/2, m = {m}, with q = {q:g} instead of 0.9: the density rate reaches m q, so the "
-                         "slow density rate at q = 0.9 is the quadrature error of the spreading particles, not the "
-                         "regularisation", m * q, rate, band))
+    out += [diagnostic_claim(d, m, band, recorder) for m in (4, 6)]
     return out
+
+
+def diagnostic_claim(d, m: int, band: float, recorder: Recorder):
+    """Check: with q = ``diagnostic_q`` (a larger delta / h, the quadrature error negligible) the repulsive density
+    error is the regularisation part and converges at m q. The h range is not stated, so the claim is stated on
+    every window of ``fit_points`` successive h: the fit farthest from m q, within ``band``; the text gives every
+    window's fit and the pairwise orders, and which windows would pass alone. (The aliasing prediction that
+    decides the m = 6 error at q = 0.9 does not apply here: its expansion parameter, the saddle ratio, is not
+    small at q = 0.75; config/config.yaml.)"""
+    q = float(d["diagnostic_q"])
+    name, key = f"fig4.repulsive_density_q{q:g}_m{m}", f"diagnostic_m{m}_density"
+    order(recorder, d, key, name)  # the table with its pairwise orders, in the claims' log
+    h, errors, k = d["h_values"], d[key], int(d["fit_points"])
+    fits = np.array([np.polyfit(np.log(h[i:i + k]), np.log(errors[i:i + k]), 1)[0] for i in range(h.size - k + 1)])
+    held = np.abs(fits - m * q) <= band
+    windows = ", ".join(f"{fit:.2f} (1/h = {1 / h[i]:.0f}-{1 / h[i + k - 1]:.0f})" for i, fit in enumerate(fits))
+    flips = (f"{int(held.sum())} of {fits.size} windows would pass alone" if 0 < held.sum() < fits.size else
+             f"{'every' if held.all() else 'no'} window would pass alone")
+    # the regularisation error C delta^m (1 + a delta^2 + ...) (psi even): the gap m q - pairwise order shrinks by
+    # 2^(2q) per halving of h once the first correction dominates
+    pairwise = np.diff(np.log(errors)) / np.diff(np.log(h))
+    gaps = m * q - pairwise
+    shrink = ", ".join(f"{a / b:.2f}" for a, b in zip(gaps[:-1], gaps[1:])) if np.all(gaps > 0) else "not all positive"
+    return claim(c.close_to, name, "4 (diagnostic)", f"K = -|x|/2, m = {m}, with q = {q:g} instead of 0.9: the "
+                 "density rate reaches m q on every window of the (unstated) h range, so the slow density rate at "
+                 "q = 0.9 is the quadrature error of the spreading particles, not the regularisation: the "
+                 f"{k}-point fit farthest from m q = {m * q:g} over every window ({windows}; {flips}); pairwise "
+                 f"orders {local_orders(np.rint(1.0 / h).astype(int), errors)}; their gaps to m q shrink by {shrink} "
+                 f"per halving of h (2^(2q) = {2 ** (2 * q):.2f} once the delta^2 correction of the regularisation "
+                 "error dominates)", m * q,
+                 float(fits[np.argmax(np.abs(fits - m * q))]), band)
+
+
+#: The m = 6 errors whose rate the regularisation sets (Corollary 3.10): every error of Figure 4 but the repulsive
+#: density, which its quadrature part limits over the paper's range (repulsive_claims).
+M6_REGULARISED = (("newtonian_repulsive", "trajectory"), ("cubic", "trajectory"), ("cubic", "density"))
+
+
+def m6_approach_claim(d, band: float):
+    """Derived: with exact kernels the m = 6 errors set by the regularisation approach the order m q. Its error is
+    C delta^m (1 + O(delta^2)), so the pairwise order of the two finest h tends to m q and is the measure nearest
+    to it; the claim takes the one farthest from m q over :data:`M6_REGULARISED`, within ``band`` (the
+    repository's "close to"). A shortfall like the paper's (rates visibly below m q) fails it."""
+    h, rate6 = d["h_values"], 6 * float(d["q"])
+    orders = {f"{kernel} {part}": float(np.log(d[f"{kernel}_blob6_{part}"][-1] / d[f"{kernel}_blob6_{part}"][-2])
+                                        / np.log(h[-1] / h[-2])) for kernel, part in M6_REGULARISED}
+    farthest = max(orders.values(), key=lambda value: abs(value - rate6))
+    return claim(c.close_to, "fig4.m6_rates_approach_mq", "4", f"with exact kernels our m = 6 rates approach m q = "
+                 f"{rate6:g}, so the paper's shortfall is not reproduced: pairwise order between h = 1/{1 / h[-2]:.0f} "
+                 f"and 1/{1 / h[-1]:.0f} of the errors the regularisation sets "
+                 f"({', '.join(f'{name}: {value:.3f}' for name, value in orders.items())}), the one farthest from "
+                 f"{rate6:g}", rate6, farthest, band)
 
 
 def fig4log_claims(d_log, d, rules, recorder: Recorder):
@@ -305,19 +360,26 @@ def fig4log_claims(d_log, d, rules, recorder: Recorder):
 
 
 def repulsive_claims(d, p, rules, recorder: Recorder):
-    """Figure 4, K = -|x|/2: where the slow density rate comes from, and whether the quadrature part is the
-    aliasing predicted without fitted parameters (particle_methods.blob.aliasing)."""
+    """Figure 4, K = -|x|/2: where the slow density rate comes from, whether the quadrature part is the
+    aliasing predicted without fitted parameters (particle_methods.blob.aliasing), and whether that prediction,
+    added to the regularisation part, gives the runs' error beyond the paper's range of h."""
     n, base = d["inverse_h"], int(d["base_count"])
     h, q, k = 1.0 / n, float(d["q"]), int(p["fit_points"])
     band = float(rules["rate_tolerance"])
     out = []
-    mismatch = max(float(np.abs(d[f"m{m}_combined"] / d[f"m{m}_total"] - 1).max()) for m in (4, 6))
+    # the decomposition's sizes: where the quadrature part is most of the error (h <= 1/decomposition_from)
+    counted = n >= int(rules["decomposition_from"])
+    gaps = {m: np.abs(d[f"m{m}_combined"] / d[f"m{m}_total"] - 1) for m in (4, 6)}
+    mismatch = max(float(gaps[m][counted].max()) for m in (4, 6)) if counted.any() else np.nan  # nan: unmeasured
     share = min(float(d[f"m{m}_quadrature"][base - 1] / d[f"m{m}_combined"][base - 1]) for m in (4, 6))
     out += [
         claim(c.at_most, "fig4.repulsive_decomposition", "4", "K = -|x|/2: the quadrature and regularisation parts, "
               "integrated along the exact trajectories, account for the measured density error: largest relative "
-              "gap between their sum and the blob runs' error, m = 4 and 6, every h",
-              float(rules["decomposition_gap"]), mismatch),
+              f"gap between their sum and the blob runs' error, m = 4 and 6, 1/h from {int(rules['decomposition_from'])} "
+              f"to {n[-1]} "
+              f"(coarser: {', '.join(f'1/{v}: {max(gaps[4][i], gaps[6][i]):.3g}' for i, v in enumerate(n) if not counted[i])}"
+              ", where the regularisation part, and with it the neglected displacement of the particles by their "
+              "trajectory error, dominates)", float(rules["decomposition_gap"]), mismatch),
         claim(c.at_least, "fig4.repulsive_quadrature_dominates", "4", f"K = -|x|/2 at h = 1/{n[base - 1]}: the "
               "quadrature part (particle sum against the exact mollified convolution) is most of the density error: "
               "its share, smallest of m = 4 and 6", float(rules["quadrature_share_min"]), share),
@@ -328,21 +390,85 @@ def repulsive_claims(d, p, rules, recorder: Recorder):
         out.append(claim(c.close_to, f"fig4.repulsive_regularisation_m{m}", "4", f"K = -|x|/2, m = {m}: the "
                          f"regularisation part alone converges at m q = {m * q:g}: order on the {k} finest h of the "
                          "paper's range", m * q, slope, band))
-    ratio = float(d["m6_quadrature"][base - 1] / d["m4_quadrature"][base - 1])
-    out.append(claim(c.between, "fig4.repulsive_same_quadrature", "4", "m = 4 and m = 6 share the narrowest Gaussian "
-                     "of (4.1), which sets the quadrature error, so their density errors coincide: m = 6 over m = 4 "
-                     f"quadrature part at h = 1/{n[base - 1]}", *map(float, rules["same_quadrature_band"]), ratio,
-                     published="(our derivation)"))
+    ratios = d["m6_quadrature"][:base] / d["m4_quadrature"][:base]
+    farthest = float(ratios[np.argmax(np.abs(ratios / SAME_QUADRATURE - 1))])
+    out.append(claim(c.relatively_close_to, "fig4.repulsive_same_quadrature", "4", "(4.1) gives m = 6 the narrowest "
+                     "Gaussian of m = 4 with 16/15 its weight, and that Gaussian sets the quadrature error (the next "
+                     "one aliases exp(-3c/J^2) times less): m = 6 over m = 4 quadrature part, the one farthest from "
+                     f"16/15 over the paper's range (h = 1/{n[0]} to 1/{n[base - 1]})", SAME_QUADRATURE, farthest,
+                     float(rules["same_quadrature_tolerance"])))
     out.append(quadrature_prediction_claim(d, p, rules))
-    extended = recorder.add(rates.order(f"{PAPER}.fig4.repulsive_extended_order", "h", h, d["m4_total"], k,
-                                     "m = 4 density, extended"))
-    out.append(claim(c.close_to, "fig4.repulsive_extended_order", "4", f"K = -|x|/2, m = 4: density order on the {k} "
-                     f"finest h of the extended runs (to h = 1/{n[-1]})", 4 * q, extended, band))
+    out.append(error_prediction_claim(d, rules))
+    out.append(m6_quadrature_claim(d, p, rules))
     coarse = float(np.polyfit(np.log(h[:k]), np.log(d["m4_total"][:k]), 1)[0])
     out.append(claim(c.close_to, "fig4.repulsive_coarse_window", "4", f"K = -|x|/2, m = 4: density order on the {k} "
                      f"coarsest h of the paper's range (h = 1/{n[0]} to 1/{n[k - 1]}): the verdict depends on the "
                      "unstated h range", 4 * q, coarse, band))
     return out
+
+
+#: m = 6 over m = 4 weight of the narrowest Gaussian of (4.1): psi6 = (16/15) psi4(x) - (1/30) psi4(x/2), and
+#: psi4(x/2) holds only wider Gaussians (particle_methods.blob.aliasing.quadrature_prediction).
+SAME_QUADRATURE = 16.0 / 15.0
+
+
+def local_orders(n, errors) -> str:
+    """Pairwise orders of ``errors`` between successive 1/h in ``n``, as text."""
+    orders = np.diff(np.log(errors)) / np.diff(np.log(1.0 / n))
+    return ", ".join(f"{order:.2f} ({a}-{b})" for order, a, b in zip(orders, n[:-1], n[1:]))
+
+
+def error_prediction_claim(d, rules):
+    """Derived: beyond the paper's range (the extended runs, out of sample), the m = 4 run's density error is the
+    L1_h norm of P + R, particle by particle: P the quadrature part predicted with no fitted parameter, R the
+    regularisation part computed along the exact trajectories (from the exact solution and the mollifier, no run,
+    nothing fitted). The crossover from P to R is where the order of the error moves towards m q."""
+    n, base = d["inverse_h"], int(d["base_count"])
+    extended = slice(base, None)
+    gaps = d["m4_total"][extended] / d["m4_predicted"][extended] - 1.0
+    crossing = np.flatnonzero(d["m4_regularisation"] > d["m4_quadrature"])
+    crossing = crossing[crossing >= base - 1]
+    crossover = f"the regularisation part exceeds the quadrature part from 1/h = {n[crossing[0]]}" if crossing.size \
+        else "the quadrature part dominates at every h"
+    shares = ", ".join(f"{a / b:.3g} (1/{v})" for a, b, v in zip(d["m4_quadrature"][base - 1:],
+                                                              d["m4_regularisation"][base - 1:], n[base - 1:]))
+    windows = ", ".join(f"{np.polyfit(np.log(1.0 / n[i:i + 3]), np.log(d['m4_total'][i:i + 3]), 1)[0]:.2f} "
+                        f"({n[i]}-{n[i + 2]})" for i in range(n.size - 2))
+    return claim(c.at_most, "fig4.repulsive_error_prediction", "4", "K = -|x|/2, m = 4, runs extended beyond the "
+                 f"paper's range (1/h = {', '.join(str(v) for v in n[extended])}): the density error equals P + R "
+                 "(L1_h norm of their sum particle by particle; P the aliasing prediction with no fitted parameter, R "
+                 "the regularisation part along the exact trajectories): largest |error / (P + R) - 1|, "
+                 f"{', '.join(f'{g:+.3g} (1/{v})' for g, v in zip(gaps, n[extended]))}; quadrature over "
+                 f"regularisation part {shares}: {crossover}; pairwise orders of the error "
+                 f"{local_orders(n, d['m4_total'])}; three-point fits {windows}", float(rules["error_prediction_gap"]),
+                 float(np.abs(gaps).max()), published="(our derivation)")
+
+
+def m6_quadrature_claim(d, p, rules):
+    """Derived: the m = 6 run's density error is its quadrature part, 16/15 times the m = 4 prediction P (its
+    regularisation part falls at h^5.4), at the h where P's neglected terms, of order the square of the saddle
+    ratio (:func:`~particle_methods.blob.aliasing.saddle_ratio`), are below the tolerance, and where the predicted
+    error stays above the integrator's floor, rtol times the mass, by the tolerance's inverse."""
+    from particle_methods.blob.aliasing import quadrature_prediction, saddle_ratio
+    from particle_methods.blob.initial import data_1d, grid_1d
+
+    n, q, t, data = d["inverse_h"], float(d["q"]), float(d["t"]), data_1d(p["data"])
+    tolerance = float(rules["m6_quadrature_gap"])
+    predicted = SAME_QUADRATURE * np.array([quadrature_prediction(data, 1.0 / v, q, t) for v in n])
+    expansion = np.array([saddle_ratio(data, 1.0 / v, q) for v in n]) ** 2
+    finest = 1.0 / n.max()
+    mass = float(finest * data(grid_1d(finest)[:, 0]).sum())
+    floor = float(p["rtol"]) * mass
+    held = (expansion <= tolerance) & (predicted * tolerance >= floor)
+    ratios = d["m6_total"] / predicted
+    text = ", ".join(f"{r:.5g} (1/{v})" for r, v in zip(ratios, n))
+    return claim(c.relatively_close_to, "fig4.repulsive_m6_quadrature", "4", "K = -|x|/2, m = 6: the density error "
+                 "is the quadrature part of the narrowest Gaussian, 16/15 times the m = 4 prediction P (no fitted "
+                 f"parameter): error / ((16/15) P) at every h, {text}; the one farthest from 1 where P's neglected "
+                 f"terms (saddle ratio squared) are at most the tolerance and (16/15) P is at least the integrator's "
+                 f"floor (rtol {float(p['rtol']):g} times the mass {mass:.4g}) over the tolerance (h = "
+                 f"{', '.join(f'1/{v}' for v in n[held])})", 1.0,
+                 float(ratios[held][np.argmax(np.abs(ratios[held] - 1))]) if held.any() else np.nan, tolerance)
 
 
 def quadrature_prediction_claim(d, p, rules):
@@ -417,19 +543,75 @@ def spread(values) -> float:
     return float((values.max() - values.min()) / values.max())
 
 
-def fig6_claims(d, rules):
-    from particle_methods.blob.initial import data_2d
+def blowup_claim(d, p, rules):
+    """Derived: the blob density at the peak blows up at the exact time 1/rho0(0) while the peak is resolved.
 
+    Along the exact trajectories of section 4.1 the density at the origin is 1/(1/rho0(0) - t), so the
+    extrapolated blow-up time T(t) = t + 1/rho(0, t) is 1/rho0(0) at every t before it. The blob density of the
+    particle at the origin obeys d log rho/dt = S(t) = sum_j m_j psi_delta(X_j) (the mollified density there)
+    instead of rho(0, t), so dT/dt = 1 - S / rho~ (rho~ the blob density there), to first order 1 - S / rho: T
+    drifts by the integral of the relative rate error 1 - S / rho, which for m = 4 is O((delta / w)^4), w = 1 - t rho0(0) the width of the
+    narrowing peak. Computed along the exact trajectories (the data, h and delta; no run), its integral of
+    absolute values up to the last record where it is at most ``blowup_rate_error`` (the first-order expansion
+    holds) gives the band, ``blowup_allowance`` times it: the particles' displacement by their own O(delta^4)
+    trajectory error, not computed, changes S by a term of the same order. T is read at the records themselves
+    (no interpolation): the time grid only places the last record. Measured: T at the record farthest from
+    1/rho0(0) up to that one; NaN (a failure) when no record after t = 0 qualifies."""
+    from scipy import integrate
+
+    from particle_methods.blob.initial import data_2d
+    from particle_methods.blob.mollifiers import mollifier
+
+    top, times = p["top"], d["times"]
+    h, delta, data = float(top["h"]), float(top["h"]) ** float(p["q"]), data_2d(top["data"])
+    # the grid from the run, the initial density from the data (the run's first record is a state it computed)
+    points, blob = d["newtonian_positions"][0], d["newtonian_densities"]
+    rho0 = data(points)
+    peak = int(np.argmax(rho0))
+    rho00 = float(rho0[peak])
+    if np.linalg.norm(points[peak]) > 1e-9 * h:
+        raise ValueError("the Newtonian bump run of Figure 6 has no particle at the origin, where the peak stays")
+    blowup = 1.0 / rho00
+    before = times < blowup
+    r0 = np.linalg.norm(points, axis=1)
+    # exact trajectories (section 4.1, d = 2): |X|^2 = r0^2 - 2 t m(r0), m(r) = int_0^r s rho0(s) ds
+    mass = np.array([integrate.quad(lambda s: s * float(data(np.array([s, 0.0]))), 0.0, r, epsabs=1e-14)[0]
+                     for r in r0])
+    psi = mollifier(4, 2)
+    masses = rho0 * h * h
+    mollified = np.array([(masses * psi(np.sqrt(np.maximum(r0**2 - 2.0 * t * mass, 0.0)), delta)).sum()
+                          for t in times[before]])
+    rate_error = np.abs(1.0 - mollified * (blowup - times[before]))
+    beyond = np.flatnonzero(rate_error > float(rules["blowup_rate_error"]))
+    last = (int(beyond[0]) if beyond.size else int(before.sum())) - 1
+    drift = integrate.cumulative_trapezoid(rate_error, times[before], initial=0.0)
+    band = float(rules["blowup_allowance"]) * float(drift[max(last, 0)])
+    extrapolated = times[: last + 1] + 1.0 / blob[: last + 1, peak]
+    # the regularisation part alone: the origin particle's density grown at the mollified exact density
+    growth = integrate.cumulative_trapezoid(mollified, times[before], initial=0.0)
+    predicted = times[before] + np.exp(-growth) / rho00 - blowup
+    farthest = int(np.argmax(np.abs(extrapolated - blowup))) if last > 0 else -1
+    shown = np.unique(np.linspace(0, max(last, 0), 5).round().astype(int))
+    text = ", ".join(f"{extrapolated[i] - blowup:+.2e} (t = {times[i]:g})" for i in shown) if last > 0 else "none"
+    return claim(c.close_to, "fig6.newtonian_blowup", "6", f"K = log|x|/(2 pi), delta = {delta:.4g}: the blob density "
+                 f"at the peak blows up at the exact time 1/rho0(0) = {blowup:.4f} while the peak is resolved: "
+                 "extrapolated blow-up time t + 1/rho(0, t) (1/rho0(0) at every t for the exact density of section "
+                 "4.1), the record farthest from 1/rho0(0) up to the last one where the relative rate error of the "
+                 f"mollified exact density at the peak is at most {float(rules['blowup_rate_error']):g} (t = "
+                 f"{times[max(last, 0)]:g}, peak {blob[max(last, 0), peak] / rho00:.3g} times rho0(0); beyond it the "
+                 "peak narrows to delta and the drift becomes O(delta)); minus 1/rho0(0) there: " + text +
+                 f"; tolerance {float(rules['blowup_allowance']):g} times that rate error's integral "
+                 f"({float(drift[max(last, 0)]):.2e}, computed along the exact trajectories; the regularisation "
+                 f"part alone predicts {float(predicted[max(last, 0)]):+.2e} at the last record)", blowup,
+                 float(extrapolated[farthest]) if last > 0 else np.nan, band)
+
+
+def fig6_claims(d, p, rules):
     times = d["times"]
     quadratic = np.linalg.norm(d["quadratic_positions"], axis=-1)
     centre = float(rules["centre_radius"])
     cubic_start, cubic_end = (ring_radii(d["cubic_positions"][0], centre),
                               ring_radii(d["cubic_positions"][-1], centre))
-    peak = d["newtonian_densities"].max(axis=1)
-    target = 10 * peak[0]
-    k = int(np.argmax(peak >= target))
-    reached = np.interp(target, peak[k - 1:k + 1], times[k - 1:k + 1]) if k > 0 else np.inf  # never reached
-    rho00 = float(data_2d("bump")(np.zeros((1, 2)))[0])
     rises = [np.diff(d[f"{k}_energies"]).max() / abs(d[f"{k}_energies"][0]) for k in ("newtonian", "quadratic")]
     return [
         claim(c.at_most, "fig6.quadratic_point", "6", "K = |x|^2/2: particles converge to a point: final over initial "
@@ -451,9 +633,7 @@ def fig6_claims(d, rules):
               "psi of order m = 4 reproduces polynomials of degree < 4 (grad K, Delta K): (max - min) / max of the "
               f"density at t = {float(d['star_t']):g}", c.ROUNDING, spread(d["quadratic_star_densities"]),
               published="no rounding"),  # an identity; the spread is relative (scale 1)
-        claim(c.close_to, "fig6.newtonian_blowup", "6", "K = log|x|/(2 pi): concentration near the blow-up time "
-              f"1/rho0(0) = {1 / rho00:.3f}: time at which the peak density reaches ten times its initial value, "
-              "against the exact 0.9/rho0(0)", 0.9 / rho00, float(reached), float(rules["blowup_tolerance"])),
+        blowup_claim(d, p, rules),
         claim(c.at_most, "energy.decrease_2d", "section 2.2", "2D: E_delta decreases along the blob particle system "
               "(log and quadratic kernels): largest relative increase", float(rules["energy_rise_2d"]),
               float(max(rises)), published="decreasing"),
@@ -499,10 +679,10 @@ def fig7_claims(d, p, rules):
         times = d[f"case{case['quartic_power']}_times{suffix}"]
         return float(times[np.argmin(np.abs(times - 8.0))])
 
-    def at_time(method, suffix):
-        """The quartic power kernel's state at :func:`time_8`, all particles (the one at the origin included)."""
+    def at_time(method, suffix, when=8.0):
+        """The quartic power kernel's state at the record nearest ``when`` (t = 8: :func:`time_8`), all particles."""
         times = d[f"case{case['quartic_power']}_times{suffix}"]
-        return d[f"case{case['quartic_power']}_{method}{suffix}"][int(np.argmin(np.abs(times - 8.0)))]
+        return d[f"case{case['quartic_power']}_{method}{suffix}"][int(np.argmin(np.abs(times - when)))]
 
     def septic_by_end(suffix):
         """Clusters of the septic blob end state for runs ending at every 20 time units from 40 ('-': not steady)."""
@@ -554,8 +734,17 @@ def _ring_claims(state, suffix, rules, criterion, hold, septic_ends, resolution,
     ring = ring_radii(power_blob, centre)
     radius = uniform_ring_radius(4.0, 1.5)
 
-    def ring_distance(points):
-        return float(np.abs(np.linalg.norm(points, axis=-1) - radius).mean())
+    def way_left(method):
+        """How far the quartic power kernel's state of ``method`` still is from its own end state at t = 8: mean
+        |difference| of the sorted radii from those of its end state (measured once steady), over the same at
+        t = 0 (both methods start from the same data; each converges to its own ring)."""
+        end = np.sort(np.linalg.norm(state("quartic_power", method, suffix=suffix)[0], axis=-1))
+        start = np.sort(np.linalg.norm(at_time(method, suffix, 0.0), axis=-1))
+        now = np.sort(np.linalg.norm(at_time(method, suffix), axis=-1))
+        return float(np.abs(now - end).mean() / np.abs(start - end).mean())
+
+    steady_both = np.isfinite([power_blob_t, power_particle_t]).all()
+    left = {method: way_left(method) for method in ("blob", "particle")} if steady_both else {}
     return [
         claim(c.relatively_close_to, f"{prefix}delta_ring_radius", "7", "K = |x|^4/4 - |x|^1.5/1.5: the blob end "
               "state is a delta ring of the stationary radius (B_1.5/B_4)^(1/2.5)/2 derived for a uniform ring: mean "
@@ -569,11 +758,12 @@ def _ring_claims(state, suffix, rules, criterion, hold, septic_ends, resolution,
               f"stable delta ring: coefficient of variation of the radii, once {criterion} (from t = "
               f"{power_particle_t:g}){grid}", thin,
               _when_steady(variation(ring_radii(power_particle, centre)), power_particle_t), published="a delta ring"),
-        claim(c.at_most, f"{prefix}blob_closer_at_8", "7", "at t = 8 the blob solution is nearer the ring than the "
-              f"particle solution (the paper's comparison): mean distance of the radii to the stationary radius "
-              f"{radius:.4g}, blob over particle, at t = {time_8:g}{grid}", 1.0,
-              float(ring_distance(at_time("blob", suffix)) / ring_distance(at_time("particle", suffix))),
-              published="converges more quickly"),
+        claim(c.at_most, f"{prefix}blob_closer_at_8", "7", "at t = 8 the blob solution has come nearer its ring than "
+              "the particle solution has to its own (the paper's comparison): each state's mean |difference| of the "
+              "sorted radii from those of its own end state (once steady), over the same at t = 0 (blob "
+              f"{left.get('blob', np.inf):.3g}, particle {left.get('particle', np.inf):.3g}), blob over particle, at "
+              f"t = {time_8:g}{grid}", 1.0,
+              left["blob"] / left["particle"] if steady_both else float("inf"), published="converges more quickly"),
         claim(c.at_least, f"{prefix}blob_ring_faster", "7", "the blob method reaches the ring faster than the "
               f"particle method: first time the particle state is steady for {hold:g} time units minus that of the "
               f"blob state ({reached_particle:g} - {reached_blob:g}), at least one record interval (both times lie "
@@ -701,7 +891,7 @@ def claims(results, p, recorder: Recorder) -> list:
         *fig4log_claims(results["fig4log"], results["fig4"], rules, recorder),
         *repulsive_claims(results["repulsive"], p["fig4"], rules, recorder),
         *fig5_claims(results["fig5"], rules, recorder),
-        *fig6_claims(results["fig6"], rules),
+        *fig6_claims(results["fig6"], p["fig6"], rules),
         *fig7_claims(results["fig7"], p["fig7"], rules),
         *fig8_claims(results["fig8"], p["fig8"], rules),
     ]
