@@ -197,8 +197,8 @@ def run(p, output):
             at = own.get(t, t)  # SP: its own step nearest to t
             exact = solution if at == t else HullSolution(data, float(at))
             row.append(w1(name, exact, out))
-            x, weights = atoms(name, out, solution.mass)
             if ranges.size and at == t:
+                x, weights = atoms(name, out, solution.mass)
                 centre_row.append(pad(agg.level_centres(x, weights, ranges)))
                 spread_row.append(pad(agg.level_spreads(x, weights, ranges, solution.aggregates[0])))
             else:
