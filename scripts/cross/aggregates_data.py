@@ -228,7 +228,12 @@ def run(p, output):
     block = np.array([[n + j for j in range(p["spd_merger_block"])] for n in p["spd_n"]])
     spd_mergers = np.array([[merger_or_nan(agg.spd_merger, *spd_start(data, int(n)), *p["merger_bracket"],
                                            p["cluster_share"]) for n in ns] for ns in block])
-    progress(f"equal-mass SPD merger errors: largest n |t_n - t*| per block {np.nanmax(np.abs(spd_mergers - merger) * block, axis=1)}")
+    progress(f"equal-mass SPD merger errors: largest n |t_n - t*| per block "
+             f"{np.nanmax(np.abs(spd_mergers - merger) * block, axis=1)}")
+    # Its levels' distance from the exact aggregates at the fixed times, largest over them, at every n of the blocks.
+    fixed = [solutions[int(np.argmin(np.abs(times - t)))] for t in p["fixed_times"]]
+    fixed = [s for s in fixed if s.aggregates[0].size]
+    spd_levels = np.array([[spd_levels_at(data, int(n), fixed) for n in ns] for ns in block])
     save_results(output, data=np.array(data), times=times, fixed_times=np.array(p["fixed_times"], float),
                  window_times=window, exact_positions=exact_positions, exact_masses=exact_masses,
                  exact_lowers=exact_lowers, exact_identity=exact_identity, exact_offsets=exact_offsets, merger=merger, path_times=path_times,
@@ -236,8 +241,16 @@ def run(p, output):
                  blowups=blowups, methods=np.array(names), size=np.array(sizes), count=np.array(counts),
                  error=np.array(errors), centre=np.array(centres), spread=np.array(spreads),
                  method_merger=np.array(mergers), merger_gap=np.array(gaps), spd_merger_n=block,
-                 spd_merger=spd_mergers, spd_difference=np.array(differences), mass=bumps.mass,
+                 spd_merger=spd_mergers, spd_levels=spd_levels, spd_difference=np.array(differences), mass=bumps.mass,
                  support=np.array(bumps.support))
+
+
+def spd_levels_at(data, n, solutions):
+    """The equal-mass SPD with n particles: the largest mean distance of the exact aggregates' levels from them over
+    ``solutions`` (exact solutions at times with aggregates)."""
+    x0, velocities, masses = spd_start(data, n)
+    return max(float(np.max(agg.level_spreads(spd_positions(x0, velocities, s.t), masses, agg.level_ranges(s),
+                                              s.aggregates[0]))) for s in solutions)
 
 
 def spd_start(data, n):

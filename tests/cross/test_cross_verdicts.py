@@ -612,6 +612,7 @@ def aggregates(case="two_bumps", spd_w1=0.25, spd_order=1.0, growth=0.0, merger_
               "count": np.array(counts), "error": np.array(errors), "centre": np.array(centre),
               "spread": np.array(spread), "method_merger": np.array(mergers), "merger_gap": np.array(gaps),
               "spd_merger_n": block, "spd_merger": spd_mergers,
+              "spd_levels": 0.05 * block[:, :1] ** -levels["spd_equal"] * (1.0 + 0.5 * signs),
               "spd_difference": np.array([particle_difference if name == "particle method" else np.nan
                                           for name, _ in runs]), "mass": mass, "support": support}
     return result | changes

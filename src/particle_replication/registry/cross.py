@@ -81,7 +81,7 @@ AGGREGATE_CASES = {
 }
 AGGREGATE_KEYS = ("data", "times", "fixed_times", "window_times", "exact_positions", "exact_masses", "exact_lowers",
                   "exact_identity", "exact_offsets", "merger", "blowups", "methods", "size", "count", "error", "centre", "spread",
-                  "method_merger", "merger_gap", "spd_merger_n", "spd_merger", "spd_difference", "mass", "support",
+                  "method_merger", "merger_gap", "spd_merger_n", "spd_merger", "spd_levels", "spd_difference", "mass", "support",
                   "path_times", "path_positions", "path_masses", "spd_clusters")
 
 

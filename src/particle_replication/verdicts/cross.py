@@ -610,6 +610,20 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
         rows = _method_rows(a, name)
         spreads = np.array([np.nanmax(a["spread"][r][fixed]) for r in rows])
         minimum = rules["levels_order_min"][key]
+        if key == "spd_equal":
+            # As its merger: the share of the particle straddling the bumps' boundary level sets the constant, so
+            # the envelope over a block of consecutive n.
+            envelope = np.max(a["spd_levels"], axis=1)
+            out.append(claim(
+                c.at_least, f"{case}.aggregate.spd_equal_levels", "derived", SOURCE_AGGREGATES, "aggregates",
+                f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the SPD "
+                f"(W1 per unit mass on those levels: a wrong position and a wrong mass both raise it), largest over "
+                f"the aggregates at t = {at} and over the {block.shape[1]} consecutive n from each n = "
+                f"{_listed(block[:, 0])} (the particle straddling the bumps' boundary level sets its constant; values "
+                f"{_listed(envelope)}): order in n at least {minimum:g}", minimum,
+                -rates.add(order(f"{PAPER}.{case}.aggregate.spd_equal_levels", "n", block[:, 0].astype(float),
+                                 np.maximum(envelope, 1e-300), window, name))))
+            continue
         out.append(claim(
             c.at_least, f"{case}.aggregate.{key}_levels", "derived", SOURCE_AGGREGATES, "aggregates",
             f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the method's "
