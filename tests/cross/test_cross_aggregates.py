@@ -38,6 +38,16 @@ def test_the_spread_of_a_level_range_is_its_mean_distance_from_the_target():
                                [[0.0, 0.0], [0.0, 2.0]])
 
 
+def test_a_range_ending_at_the_total_mass_of_many_particles_is_read():
+    """The running sum of 64007 equal masses misses their total by about 1e-12 of it: a range ending at the exact
+    total (one aggregate holding everything) is still read, and one a thousandth beyond is refused."""
+    total = 0.9066666666666667
+    masses = np.full(64007, total / 64007)
+    assert agg.level_spreads(np.zeros(masses.size), masses, [[0.0, total]], [0.0])[0] == 0.0
+    with pytest.raises(ValueError, match="above the total mass"):
+        agg.level_centres(np.zeros(masses.size), masses, [[0.0, 1.001 * total]])
+
+
 def test_the_spd_holds_the_exact_aggregates_levels_and_a_wrong_state_does_not():
     """The SPD at t = 1.5 holds each exact aggregate's levels within O(1/n) of it; the same SPD at the wrong time (t =
     1.4), or with twice the speeds, leaves them far off (the measure of the claims aggregate.spd_*_levels)."""

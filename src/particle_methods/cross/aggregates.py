@@ -101,7 +101,8 @@ def _level_means(values, rows, masses, level_range):
         raise ValueError(f"ranges must hold levels 0 <= lo < hi, got {list(level_range)}")
     order = np.argsort(rows, axis=1, kind="stable")
     levels = np.concatenate((np.zeros((rows.shape[0], 1)), np.cumsum(masses[order], axis=1)), axis=1)
-    if hi > levels[:, -1].min() * (1.0 + 1e-12):
+    # (a range may end at the total mass, which the running sum of n masses reaches only to n rounding errors)
+    if hi > levels[:, -1].min() * (1.0 + max(1e-12, 4.0 * masses.size * np.finfo(float).eps)):
         raise ValueError(f"ranges reach above the total mass {levels[0, -1]!r}: {list(level_range)}")
     overlap = np.clip(np.minimum(levels[:, 1:], hi) - np.maximum(levels[:, :-1], lo), 0.0, None)
     with np.errstate(over="ignore", invalid="ignore"):
