@@ -244,3 +244,12 @@ def test_skewed_aggregate_is_off_its_centre_of_mass_and_merges_before_it_has_col
     meeting = (other_centre - centre) / (speed - other_speed)
     assert abs(meeting - merger) > 5e-3  # 1.1285 against 1.1205
     assert abs(centre + meeting * speed - HullSolution("skewed_bumps", merger).aggregates[0][0]) > 2e-3
+
+
+def test_no_false_aggregate_at_the_gap_between_the_skewed_bumps():
+    """Between the skewed bump's right end and the other bump, F_0 is flat: Brent's x once stopped a rounding error
+    inside the other bump's free tail and reported a third aggregate of 1e-12 of the mass there (at t* - 0.2 and
+    t* - 0.1). Two aggregates from the second blow-up to the merger, at every time of a fine grid."""
+    merger = merger_time("skewed_bumps", 0.9, 1.5)
+    for t in np.concatenate((np.linspace(0.78, merger - 1e-3, 60), merger - np.array([0.2, 0.1, 0.05]))):
+        assert HullSolution("skewed_bumps", float(t)).aggregates[0].size == 2, t
