@@ -24,10 +24,18 @@ def run(d, p, output):
     ax, spread_ax, time_ax, size_ax = grid.ravel()
     times, positions, masses = d["path_times"], d["path_positions"], d["path_masses"]
     total = float(np.nanmax(masses))
-    for slot in range(positions.shape[1]):
-        for i in range(times.size - 1):
-            if np.isfinite(positions[i, slot]) and np.isfinite(positions[i + 1, slot]):
-                ax.plot(times[i:i + 2], positions[i:i + 2, slot], color="k", lw=0.8 + 3.0 * masses[i, slot] / total,
+    # Each aggregate joined to the nearest one at the next time: an aggregate moves at most M/2 per unit time (its
+    # levels' speeds M/2 - w lie in [-M/2, M/2]), and a new one to the left shifts the slots, which hold positions
+    # in increasing order.
+    reach = 0.5 * float(d["mass"])
+    for i in range(times.size - 1):
+        now, later = positions[i][np.isfinite(positions[i])], positions[i + 1][np.isfinite(positions[i + 1])]
+        for slot, x in enumerate(now):
+            if later.size == 0:
+                continue
+            nearest = later[np.argmin(np.abs(later - x))]
+            if abs(nearest - x) <= 1.01 * reach * (times[i + 1] - times[i]):
+                ax.plot(times[i:i + 2], [x, nearest], color="k", lw=0.8 + 3.0 * masses[i, slot] / total,
                         solid_capstyle="butt")
     ax.plot(np.repeat(times, d["spd_clusters"].shape[1]), d["spd_clusters"].ravel(), "o", color="C0", ms=2.5,
             mfc="none", label=f"SPD clusters, n = {p['spd_n'][0]}")
@@ -39,7 +47,6 @@ def run(d, p, output):
     low, high = float(np.nanmin(positions)), float(np.nanmax(positions))
     ax.set(xlabel="t", ylabel="position x", xlim=(0, 1.02 * times[-1]),
            ylim=(low - 0.1 * (high - low), high + 0.1 * (high - low)))
-    ax.legend(loc="best", fontsize="small")
     label_panel(ax, "(a) aggregates")
     methods, sizes, errors = d["methods"], d["size"], d["error"]
     grid_times = d["times"]
@@ -54,13 +61,11 @@ def run(d, p, output):
             worst = np.nanmax(np.where(np.isfinite(spreads[row]), spreads[row], -np.inf), axis=1)
         shown = np.isfinite(worst) & (worst > -np.inf)
         if shown.any():
-            spread_ax.plot(grid_times[shown], np.maximum(worst[shown], floor), "-" + marker, color=colour, ms=3,
-                           label=f"{name} ({sizes[row]})")
+            spread_ax.plot(grid_times[shown], np.maximum(worst[shown], floor), "-" + marker, color=colour, ms=3)
     for t in d["blowups"]:
         spread_ax.axvline(t, color="0.6", lw=0.6, ls=":")
     spread_ax.axvline(merger, color="C3", lw=0.6, ls="--")
-    spread_ax.set(yscale="log", xlabel="t", ylabel="mean distance of the levels", xlim=(0, 1.02 * times[-1]))
-    spread_ax.legend(loc="best", fontsize="x-small")
+    spread_ax.set(yscale="log", xlabel="t", ylabel="levels' distance", xlim=(0, 1.02 * times[-1]))
     label_panel(spread_ax, "(b) each exact aggregate's levels")
     floor = max(float(np.nanmin(errors[errors > 0])) / 3.0, 1e-16)
     for name in dict.fromkeys(map(str, methods)):
@@ -76,8 +81,10 @@ def run(d, p, output):
     time_ax.set(yscale="log", xlabel="t", ylabel="W1 error", ylim=(floor, None))
     label_panel(time_ax, "(c) W1 against t")
     size_ax.set(xscale="log", yscale="log", xlabel="particles or cells", ylabel="largest W1 over t > 0")
-    handles, labels = size_ax.get_legend_handles_labels()
-    fig.legend(handles, labels, loc="outside lower center", ncol=(len(labels) + 1) // 2, fontsize="small")
+    # One legend below the panels for (a), (c) and (d) (inside, it would hide lines).
+    handles, labels = [sum(pair, []) for pair in zip(ax.get_legend_handles_labels(),
+                                                     size_ax.get_legend_handles_labels())]
+    fig.legend(handles, labels, loc="outside lower center", ncol=(len(labels) + 1) // 3, fontsize="small")
     label_panel(size_ax, "(d) W1 uniformly in t > 0")
     suptitle(fig, f"K = |x|/2 from {p['data'].replace('_', ' ')}: aggregates that move and merge, against the exact solution by the hull")
     save_figure(fig, output.pdf, output.png)
