@@ -14,6 +14,8 @@ solution by the continuous hull.
 - the particle method: its largest distance to the grid SPD of the same particles (NaN for the other methods).
 """
 
+from fractions import Fraction
+
 import numpy as np
 
 from particle_methods.cross import HullSolution, merger_time
@@ -225,7 +227,9 @@ def run(p, output):
                  f"merger {merged!r}; blob gap at the merger / delta {gap!r}")
     # The equal-mass SPD's merger: the fraction of a particle's mass on either side of the gap between the bumps
     # follows n m_1 / M, so the error changes sign and size from one n to the next: every n of a block above each size.
-    block = np.array([[n + j for j in range(p["spd_merger_block"])] for n in p["spd_n"]])
+    period = merger_period(bumps, p["spd_merger_block_max"])
+    progress(f"equal-mass SPD: blocks of {period} consecutive n (the period of n m_1/M mod 1)")
+    block = np.array([[n + j for j in range(period)] for n in p["spd_n"]])
     spd_mergers = np.array([[merger_or_nan(agg.spd_merger, *spd_start(data, int(n)), *p["merger_bracket"],
                                            p["cluster_share"]) for n in ns] for ns in block])
     progress(f"equal-mass SPD merger errors: largest n |t_n - t*| per block "
@@ -243,6 +247,12 @@ def run(p, output):
                  method_merger=np.array(mergers), merger_gap=np.array(gaps), spd_merger_n=block,
                  spd_merger=spd_mergers, spd_levels=spd_levels, spd_difference=np.array(differences), mass=bumps.mass,
                  support=np.array(bumps.support))
+
+
+def merger_period(bumps, largest):
+    """The period of n m_1/M mod 1, m_1 the first bump's mass and M the total: the denominator of m_1/M as a fraction
+    with a denominator at most ``largest`` (the closest one, where the ratio is not such a fraction)."""
+    return Fraction(bumps.bumps[0].mass / bumps.mass).limit_denominator(largest).denominator
 
 
 def spd_levels_at(data, n, solutions):

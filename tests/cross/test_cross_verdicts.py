@@ -549,8 +549,9 @@ def aggregates(case="two_bumps", spd_w1=0.25, spd_order=1.0, growth=0.0, merger_
     blob = f"blob, m = {q['blob']['order']}"
     keys = {"SPD, equal masses": "spd_equal", "SPD, grid weights": "spd_grid", blob: "blob", "SP": "sp",
             "Godunov for F": "godunov"}
-    levels = {"spd_equal": 1.0, "spd_grid": 1.0, "blob": 0.9, "sp": 1.0, "godunov": 1.0, **(levels or {})}
-    centres = {"blob": 0.9, "sp": 1.0, "godunov": 1.0, **(centres or {})}
+    levels = {"spd_equal": 1.0, "spd_grid": 2.0, "blob": 0.9, "sp": 1.0, "godunov": 1.0, **(levels or {})}
+    # (the blob's centres where they are identities: the trapezoid rule's O(h^4))
+    centres = {"blob": 4.0 if case == "two_bumps" else 0.9, "sp": 1.0, "godunov": 1.0, **(centres or {})}
     window = window or {}
     runs = [("SPD, equal masses", n) for n in q["spd_n"]] + [("SPD, grid weights", k) for k in q["grid_inverse_h"]]
     runs += [(blob, k) for k in q["blob"]["inverse_h"]] + [("Godunov for F", k) for k in q["godunov_cells"]]
@@ -595,8 +596,8 @@ def aggregates(case="two_bumps", spd_w1=0.25, spd_order=1.0, growth=0.0, merger_
         late = grid_merger if case == "two_bumps" else grid_merger + 0.3 / count
         mergers.append(MERGER + late if name == "SPD, grid weights" else np.nan)
         gaps.append(gap if name == blob else np.nan)
-    block = np.array([[n + j for j in range(q["spd_merger_block"])] for n in q["spd_n"]])
-    signs = np.where(np.arange(q["spd_merger_block"]) % 2 == 0, 1.0, -0.5)
+    block = np.array([[n + j for j in range(17)] for n in q["spd_n"]])  # two_bumps' period of n m_1/M mod 1
+    signs = np.where(np.arange(17) % 2 == 0, 1.0, -0.5)
     spd_mergers = MERGER + 0.4 * block[:, :1] ** -merger_order * signs
     result = {"data": np.array(q["data"]), "times": times, "fixed_times": np.array(q["fixed_times"], float),
               "window_times": MERGER + np.asarray(q["merger_window"], float), "exact_positions": exact,
@@ -635,9 +636,13 @@ def test_aggregate_claims_pass_on_the_expected_outcome(tmp_path, case):
 def test_identities_are_checks_on_two_bumps_and_claims_on_skewed_data():
     kinds = {case: {claim.id.split(".", 2)[2]: claim.kind for claim in run_aggregates(aggregates(case), case)}
              for case in AGG["cases"]}
-    for key in ("blob_centres", "sp_centres", "godunov_centres"):
+    for key in ("blob_centres", "sp_centres"):
         assert kinds["two_bumps"][f"aggregate.{key}"] == "check"
         assert kinds["skewed"][f"aggregate.{key}"] == "derived"
+    # Godunov has no pair forces: its centres are its numerical diffusion on both data.
+    assert kinds["two_bumps"]["aggregate.godunov_centres"] == kinds["skewed"]["aggregate.godunov_centres"] == "derived"
+    # Identities: the particle method as the grid SPD, and the equal-mass SPD's W1 bound (construction + contraction).
+    assert kinds["two_bumps"]["particle_spd"] == kinds["two_bumps"]["spd_w1.equal_masses"] == "check"
     assert kinds["two_bumps"]["spd_merger.grid_weights"] == "check"
     assert kinds["skewed"]["spd_merger.grid_weights"] == "derived"
     # The two-body prediction of the blob's gap holds only where the two aggregates hold all the mass.
@@ -742,3 +747,14 @@ def test_skewed_data_collapsed_before_the_merger_fail_the_data_check():
     a = aggregates("skewed")
     a["exact_masses"] = np.where(np.isfinite(a["exact_masses"]), a["mass"] / 2, np.nan)
     only_failing(run_aggregates(a, "skewed"), "skewed.data.free_at_merger")
+
+
+@pytest.mark.parametrize("case", list(AGG["cases"]))
+def test_a_grid_spd_whose_aggregates_are_first_order_fails(case):
+    """Grid particles off their trapezoid masses or centres by O(h) (e.g. at x_j + h/2): first order, not second."""
+    only_failing(run_aggregates(aggregates(case, levels={"spd_grid": 1.0}), case), f"{case}.aggregate.spd_grid_levels")
+
+
+def test_blob_centres_at_first_order_fail_the_identity_on_two_bumps():
+    """On two_bumps the blob's centres carry only the trapezoid rule's O(h^4): an O(h) error is a wrong method."""
+    only_failing(run_aggregates(aggregates(centres={"blob": 1.0})), "two_bumps.aggregate.blob_centres")

@@ -78,8 +78,9 @@ def level_centres(positions, masses, ranges) -> np.ndarray:
 def level_spreads(positions, masses, ranges, targets) -> np.ndarray:
     """Mean distance (1/m) int_c^{c+m} |X_h(w) - x_a| dw of the quantile of sum_k masses[k] delta_{positions[k]}
     from ``targets`` x_a over each level range [c, c + m] of ``ranges``: the W1 distance, per unit mass, between the
-    method's mass on an exact aggregate's levels and the aggregate (0 only when the method holds exactly those levels
-    at exactly x_a; a wrong position and a wrong mass both raise it). One value per range (``positions`` of shape
+    method's mass on an exact aggregate's levels and the aggregate (0 when the method holds those levels at x_a; a
+    wrong position, or part of those levels held elsewhere, raises it; mass the method gathers from other levels onto
+    x_a does not, which W1 over all levels sees). One value per range (``positions`` of shape
     (n,)) or per time and range (shape (times, n)); ``targets`` one value per range."""
     x, m = _atoms(positions, masses)
     ranges = _ranges(ranges)
