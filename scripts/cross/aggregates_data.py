@@ -240,7 +240,8 @@ def run(p, output):
     spd_levels = np.array([[spd_levels_at(data, int(n), fixed) for n in ns] for ns in block])
     save_results(output, data=np.array(data), times=times, fixed_times=np.array(p["fixed_times"], float),
                  window_times=window, exact_positions=exact_positions, exact_masses=exact_masses,
-                 exact_lowers=exact_lowers, exact_identity=exact_identity, exact_offsets=exact_offsets, merger=merger, path_times=path_times,
+                 exact_lowers=exact_lowers, exact_identity=exact_identity, exact_offsets=exact_offsets,
+                 merger=merger, path_times=path_times,
                  path_positions=path_positions, path_masses=path_masses, spd_clusters=np.array(cluster_rows),
                  blowups=blowups, methods=np.array(names), size=np.array(sizes), count=np.array(counts),
                  error=np.array(errors), centre=np.array(centres), spread=np.array(spreads),

@@ -86,7 +86,8 @@ def run(d, p, output):
                                                      size_ax.get_legend_handles_labels())]
     fig.legend(handles, labels, loc="outside lower center", ncol=(len(labels) + 1) // 3, fontsize="small")
     label_panel(size_ax, "(d) W1 uniformly in t > 0")
-    suptitle(fig, f"K = |x|/2 from {p['data'].replace('_', ' ')}: aggregates that move and merge, against the exact solution by the hull")
+    suptitle(fig, f"K = |x|/2 from {p['data'].replace('_', ' ')}: aggregates that move and merge, against the exact "
+             "solution by the hull")
     save_figure(fig, output.pdf, output.png)
 
 

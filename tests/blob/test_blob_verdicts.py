@@ -172,7 +172,8 @@ PARTS = ("trajectory", "density")
 
 def fig4(**errors):
     """Errors (coefficient, order) per key ``<kernel>_<method>_<part>``; the defaults give m q = 3.6 for m = 4,
-    5.3 for m = 6 (below m q = 5.4, as ours), order 2 for the particle method with -|x|/2, and for |x|^3/3 a particle method at order 4 on
+    5.3 for m = 6 (below m q = 5.4, as ours), order 2 for the particle method with -|x|/2, and for |x|^3/3 a particle
+    method at order 4 on
     trajectories (better than m = 4, worse than m = 6) and order 2 on the density."""
     shapes = {f"{kernel}_blob4_{part}": (0.5, 4 * Q) for kernel in KERNELS for part in PARTS}
     shapes |= {f"{kernel}_blob6_{part}": (0.5, 5.3) for kernel in KERNELS for part in PARTS}

@@ -73,8 +73,11 @@ def test_the_two_body_gap_solves_the_blob_pair_from_far_away():
 
     for order in (4, 6):
         psi = mollifier(order, 1)
-        f = lambda u: sum(a * erf(u / s) for a, s in zip(psi.weights, psi.widths))  # noqa: E731
-        end = solve_ivp(lambda t, g: -f(g), (0.0, 20.0), [20.0], rtol=1e-12, atol=1e-14).y[0, -1]
+
+        def closing(t, g, psi=psi):
+            return -sum(a * erf(g / s) for a, s in zip(psi.weights, psi.widths))
+
+        end = solve_ivp(closing, (0.0, 20.0), [20.0], rtol=1e-12, atol=1e-14).y[0, -1]
         assert end == pytest.approx(agg.two_body_gap(order), rel=1e-8)
     assert agg.two_body_gap(4) == pytest.approx(0.29326, abs=1e-5)
 

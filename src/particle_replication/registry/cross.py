@@ -80,9 +80,9 @@ AGGREGATE_CASES = {
     "skewed": "a skewed bump whose aggregate forms off its centre of mass and merges before it has collapsed",
 }
 AGGREGATE_KEYS = ("data", "times", "fixed_times", "window_times", "exact_positions", "exact_masses", "exact_lowers",
-                  "exact_identity", "exact_offsets", "merger", "blowups", "methods", "size", "count", "error", "centre", "spread",
-                  "method_merger", "merger_gap", "spd_merger_n", "spd_merger", "spd_levels", "spd_difference", "mass", "support",
-                  "path_times", "path_positions", "path_masses", "spd_clusters")
+                  "exact_identity", "exact_offsets", "merger", "blowups", "methods", "size", "count", "error", "centre",
+                  "spread", "method_merger", "merger_gap", "spd_merger_n", "spd_merger", "spd_levels", "spd_difference",
+                  "mass", "support", "path_times", "path_positions", "path_masses", "spd_clusters")
 
 
 def aggregate_settings(aggregates, case: str) -> dict:

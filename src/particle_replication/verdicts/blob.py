@@ -375,9 +375,9 @@ def repulsive_claims(d, p, rules, recorder: Recorder):
     out += [
         claim(c.at_most, "fig4.repulsive_decomposition", "4", "K = -|x|/2: the quadrature and regularisation parts, "
               "integrated along the exact trajectories, account for the measured density error: largest relative "
-              f"gap between their sum and the blob runs' error, m = 4 and 6, 1/h from {int(rules['decomposition_from'])} "
-              f"to {n[-1]} "
-              f"(coarser: {', '.join(f'1/{v}: {max(gaps[4][i], gaps[6][i]):.3g}' for i, v in enumerate(n) if not counted[i])}"
+              f"gap between their sum and the blob runs' error, m = 4 and 6, 1/h from "
+              f"{int(rules['decomposition_from'])} to {n[-1]} (coarser: "
+              f"{', '.join(f'1/{v}: {max(gaps[4][i], gaps[6][i]):.3g}' for i, v in enumerate(n) if not counted[i])}"
               ", where the regularisation part, and with it the neglected displacement of the particles by their "
               "trajectory error, dominates)", float(rules["decomposition_gap"]), mismatch),
         claim(c.at_least, "fig4.repulsive_quadrature_dominates", "4", f"K = -|x|/2 at h = 1/{n[base - 1]}: the "
@@ -546,16 +546,16 @@ def spread(values) -> float:
 def blowup_claim(d, p, rules):
     """Derived: the blob density at the peak blows up at the exact time 1/rho0(0) while the peak is resolved.
 
-    Along the exact trajectories of section 4.1 the density at the origin is 1/(1/rho0(0) - t), so the
-    extrapolated blow-up time T(t) = t + 1/rho(0, t) is 1/rho0(0) at every t before it. The blob density of the
-    particle at the origin obeys d log rho/dt = S(t) = sum_j m_j psi_delta(X_j) (the mollified density there)
-    instead of rho(0, t), so dT/dt = 1 - S / rho~ (rho~ the blob density there), to first order 1 - S / rho: T
-    drifts by the integral of the relative rate error 1 - S / rho, which for m = 4 is O((delta / w)^4), w = 1 - t rho0(0) the width of the
-    narrowing peak. Computed along the exact trajectories (the data, h and delta; no run), its integral of
-    absolute values up to the last record where it is at most ``blowup_rate_error`` (the first-order expansion
-    holds) gives the band, ``blowup_allowance`` times it: the particles' displacement by their own O(delta^4)
-    trajectory error, not computed, changes S by a term of the same order. T is read at the records themselves
-    (no interpolation): the time grid only places the last record. Measured: T at the record farthest from
+    Along the exact trajectories of section 4.1 the density at the origin is 1/(1/rho0(0) - t), so the extrapolated
+    blow-up time T(t) = t + 1/rho(0, t) is 1/rho0(0) at every t before it. The blob density of the particle at the
+    origin obeys d log rho/dt = S(t) = sum_j m_j psi_delta(X_j) (the mollified density there) instead of rho(0, t),
+    so dT/dt = 1 - S / rho~ (rho~ the blob density there), to first order 1 - S / rho: T drifts by the integral of
+    the relative rate error 1 - S / rho, which for m = 4 is O((delta / w)^4), w = 1 - t rho0(0) the width of the
+    narrowing peak. Computed along the exact trajectories (the data, h and delta; no run), its integral of absolute
+    values up to the last record where it is at most ``blowup_rate_error`` (the first-order expansion holds) gives
+    the band, ``blowup_allowance`` times it: the particles' displacement by their own O(delta^4) trajectory error,
+    not computed, changes S by a term of the same order. T is read at the records themselves (no interpolation): the
+    time grid only places the last record. Measured: T at the record farthest from
     1/rho0(0) up to that one; NaN (a failure) when no record after t = 0 qualifies."""
     from scipy import integrate
 

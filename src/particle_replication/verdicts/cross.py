@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import claims as c
 from ..rates import Recorder, order
-from ..registry.cross import aggregate_settings  # noqa: F401 (the tests read the settings through it)
+from ..registry.cross import aggregate_settings
 from ..workflow import disturbance
 
 PAPER = "cross"
@@ -481,8 +481,10 @@ def behaviour_claims(b, p):
 SOURCE_AGGREGATES = ("sticky paper Remark 3.3 and section 1.1.3 (a cluster moves at (mass right - mass left)/2); "
                      "the exact solution by the continuous hull (particle_methods.cross.hull)")
 IDENTITY = ("Every aggregate here holds whole bumps, or levels symmetric about a symmetric bump's middle level, so it "
-            "sits at their centre of mass, which any method with odd pair forces moves at the exact speed: an identity, "
-            "not a test of the method's aggregates.")
+            "sits at their centre of mass, which any method with odd pair forces moves at the exact speed: an "
+            "identity, not a test of the method's aggregates.")
+LEVELS = ("W1 per unit mass on those levels: raised by a wrong position and by any of those levels held elsewhere; "
+          "mass gathered from beyond them is seen by W1")
 #: The methods whose aggregates are measured, with the key of their claims.
 AGGREGATE_METHODS = {"SPD, equal masses": "spd_equal", "SPD, grid weights": "spd_grid", "blob": "blob", "SP": "sp",
                      "Godunov for F": "godunov"}
@@ -619,7 +621,7 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
             out.append(claim(
                 c.at_least, f"{case}.aggregate.spd_equal_levels", "derived", SOURCE_AGGREGATES, "aggregates",
                 f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the SPD "
-                f"(W1 per unit mass on those levels: raised by a wrong position and by any of those levels held elsewhere; mass gathered from beyond them is seen by W1), largest over "
+                f"({LEVELS}), largest over "
                 f"the aggregates at t = {at} and over the {block.shape[1]} consecutive n from each n = "
                 f"{_listed(block[:, 0])} (the particle straddling the bumps' boundary level sets its constant; values "
                 f"{_listed(envelope)}): order in n at least {minimum:g}", minimum,
@@ -629,7 +631,7 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
         out.append(claim(
             c.at_least, f"{case}.aggregate.{key}_levels", "derived", SOURCE_AGGREGATES, "aggregates",
             f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the method's "
-            f"output (W1 per unit mass on those levels: raised by a wrong position and by any of those levels held elsewhere; mass gathered from beyond them is seen by W1), largest over "
+            f"output ({LEVELS}), largest over "
             f"the aggregates at t = {at} (values {_listed(spreads)}): order in the particles (cells) at least "
             f"{minimum:g}", minimum, fitted(f"aggregate.{key}_levels", name, spreads)))
         if key.startswith("spd"):
@@ -654,9 +656,9 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
         elif key == "sp":
             out.append(claim(
                 c.at_most, f"{case}.aggregate.sp_centres", "check", SOURCE_AGGREGATES, "aggregates",
-                f"{measured}, largest over h (errors {_listed(errors)}): exact to rounding. {IDENTITY} SP's pair forces "
-                "(W' * phi_eps, odd) cancel within a bump, and the other bump, more than 4 eps away, pulls it with "
-                "exactly its mass/2 (B3 has compact support)", c.ROUNDING * LENGTH, float(np.max(errors))))
+                f"{measured}, largest over h (errors {_listed(errors)}): exact to rounding. {IDENTITY} SP's pair "
+                "forces (W' * phi_eps, odd) cancel within a bump, and the other bump, more than 4 eps away, pulls it "
+                "with exactly its mass/2 (B3 has compact support)", c.ROUNDING * LENGTH, float(np.max(errors))))
         else:
             out.append(claim(
                 c.at_least, f"{case}.aggregate.blob_centres", "check", SOURCE_AGGREGATES, "aggregates",
@@ -690,8 +692,8 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
                   "merger: the data make the aggregates' positions more than a centre-of-mass identity",
                   rules["off_centre_min"], offset),
             claim(c.at_least, f"{case}.data.free_at_merger", "check", SOURCE_AGGREGATES, "aggregates",
-                  f"{case}, exact: the share of the mass outside the two aggregates at t = {float(times[last]):.4g}, the "
-                  "last time of the grid before they merge (the merger is then no meeting of two bumps' centres of "
+                  f"{case}, exact: the share of the mass outside the two aggregates at t = {float(times[last]):.4g}, "
+                  "the last time of the grid before they merge (the merger is then no meeting of two bumps' centres of "
                   "mass)", rules["free_share_min"], free_share),
         ]
     else:
