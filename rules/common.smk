@@ -50,4 +50,3 @@ def imports(script):
 
 # The report's caption of a figure: its plot job's caption param (see report/caption.rst).
 CAPTION = str(ROOT / "report" / "caption.rst")
-

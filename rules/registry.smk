@@ -3,7 +3,6 @@ file that has a job, named data_<paper>_<file>, one plot rule per plot job, name
 plot_<paper>_<figures>, drawing the registered figures with their captions and titles, and each
 paper's claims rule, <paper>_claims, measuring every registered result file of the paper."""
 
-
 # What the report says of a figure of our own studies, not of the paper (the registry's `ours`).
 OURS = "our own study, not a figure of the paper"
 

@@ -155,11 +155,11 @@ rule report_page:
         ),
     log:
         "logs/report_page_{page}.log",
+    wildcard_constraints:
+        page="|".join(REPORT_PAGES),
     conda:
         ENVIRONMENT
     threads: 1
-    wildcard_constraints:
-        page="|".join(REPORT_PAGES),
     params:
         title=lambda wildcards: REPORT_PAGES[wildcards.page],
     shell:
@@ -249,7 +249,9 @@ rule manuscript:
         figures=registry.figure_outputs(),
         tables=["results/cross/table.tex", "results/blob/fig5_orders.tex"],
     output:
-        report("paper/ms.pdf", caption=str(ROOT / "report" / "manuscript.rst"), category="Documents"),
+        report(
+            "paper/ms.pdf", caption=str(ROOT / "report" / "manuscript.rst"), category="Documents"
+        ),
     log:
         "logs/manuscript.log",
     benchmark:
