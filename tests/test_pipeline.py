@@ -245,7 +245,8 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     plan = planned_rules(snakemake(workdir, "--dry-run"))
     assert "plot_blob_fig8" in plan
     assert plan <= {"data_blob_fig7", "data_blob_fig8", "plot_blob_fig7", "plot_blob_fig8", "blob_claims",
-                    "claims_table", "report_snippets", "notebook", "manuscript", "verdicts", "all"}
+                    "claims_table", "report_snippets", "notebook", "manuscript", "verdicts", "report_page",
+                    "notebook_page", "all"}
     assert snakemake(workdir).returncode == 0
     resumed = snakemake(workdir, "--dry-run")
     assert "Nothing to be done" in resumed.stdout + resumed.stderr
@@ -258,7 +259,8 @@ def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
     assert result.returncode == 0, result.stderr[-2000:]
     import shutil
 
-    expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "verdicts", "all"}
+    expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "verdicts", "report_page",
+                "notebook_page", "all"}
     if shutil.which("latexmk") and shutil.which("pdflatex"):  # the snippets are made for the report alone
         expected |= {"report_snippets", "manuscript"}
     assert planned_rules(result) == expected
