@@ -5,6 +5,7 @@ snakemake --cores 2 sticky                              # one part: sticky, ltp,
 snakemake --cores 2 --configfile config/quick.yaml      # coarse, for tests and CI (in runs/quick)
 snakemake verify                                        # fails when a verdict differs from the expected one
 snakemake --cores 2 robustness                          # the claims under variants of threads, kernels, data, load
+snakemake --report report.zip                           # the browsable report, after a run
 
 A configuration file given with --configfile is laid over config/config.yaml (Snakemake merges it
 mapping by mapping; a list replaces the whole list), so it holds only what differs, as
@@ -37,7 +38,8 @@ include: "rules/robustness.smk"
 
 
 rule all:
-    """Every figure, the claims table, its Markdown summary and the executed notebooks."""
+    """Every figure, the claims table, its Markdown summary, the executed notebooks, the PDF and the pages
+    of the browsable report (`snakemake --report report.zip`)."""
     default_target: True
     input:
         STICKY_FIGURES,
@@ -49,6 +51,9 @@ rule all:
         NOTEBOOKS,
         "results/versions.md",
         MANUSCRIPT,
+        REPORT_PAGE_FILES,
+        NOTEBOOK_PAGES,
+        REPORT_DOCUMENTS,
         "results/verdicts.txt",
 
 

@@ -48,11 +48,5 @@ def imports(script):
     return code_inputs(ROOT / "scripts" / script)
 
 
+# The report's caption of a figure: its plot job's caption param (see report/caption.rst).
 CAPTION = str(ROOT / "report" / "caption.rst")
-
-
-def rst(text):
-    """Escape the characters reStructuredText would read as markup (|x|, delta_1, a*b)."""
-    for character in "|_*":
-        text = text.replace(character, f"\\{character}")
-    return text

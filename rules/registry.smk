@@ -3,26 +3,38 @@ file that has a job, named data_<paper>_<file>, one plot rule per plot job, name
 plot_<paper>_<figures>, drawing the registered figures with their captions and titles, and each
 paper's claims rule, <paper>_claims, measuring every registered result file of the paper."""
 
+# What the report says of a figure of our own studies, not of the paper (the registry's `ours`).
+OURS = "our own study, not a figure of the paper"
+
 
 def plot_outputs(paper, plot):
     """PDF and PNG of each figure of a plot job (``pdf``/``png``, or ``<figure>_pdf``/``<figure>_png``
-    for a job that draws several); each PNG goes to the Snakemake report with its caption."""
+    for a job that draws several); each PNG goes to the Snakemake report with its caption, under its
+    paper's figures, its own figures marked "(ours)"."""
     outputs = {}
     for entry in plot.figures:
         prefix = "" if len(plot.figures) == 1 else f"{entry.name}_"
         path = f"figures/{paper.id}/{entry.name}"
         outputs[f"{prefix}pdf"] = f"{path}.pdf"
         outputs[f"{prefix}png"] = report(
-            f"{path}.png", caption=CAPTION, category=paper.id, subcategory=entry.name
+            f"{path}.png",
+            caption=CAPTION,
+            category=f"Figures ({paper.id})",
+            subcategory=f"{entry.name} (ours)" if entry.ours else entry.name,
         )
     return outputs
 
 
 def plot_parameters(paper, plot):
-    """The plot job's params: the captions (for the report), the figure's name and title when it
-    draws one figure, and the job's own parameters from the paper's section of the config."""
+    """The plot job's params: the captions (for the report, each of our own figures saying so), the
+    figure's name and title when it draws one figure, and the job's own parameters from the paper's
+    section of the config."""
     section = config[paper.id]
-    parameters = {"caption": " ".join(rst(entry.caption(section)) for entry in plot.figures)}
+    captions = [
+        f"{entry.name} ({OURS}): {entry.caption(section)}" if entry.ours else entry.caption(section)
+        for entry in plot.figures
+    ]
+    parameters = {"caption": " ".join(captions)}
     if len(plot.figures) == 1:
         parameters["figure"] = plot.figures[0].name
         if plot.figures[0].title is not None:

@@ -125,6 +125,67 @@ rule versions:
         "python -m particle_replication.environment {output} > {log} 2>&1"
 
 
+# The browsable report (`snakemake --report report.zip`) carries, besides the figures, the claims table
+# and the versions as HTML pages, the executed notebooks as HTML, and the PDFs.
+REPORT_PAGES = {
+    "claims": "Checked claims",
+    "versions": "Software versions",
+}
+REPORT_PAGE_FILES = expand("results/report/{page}.html", page=REPORT_PAGES)
+NOTEBOOK_PAGES = expand("notebooks/executed/{paper}.html", paper=NOTEBOOK_INPUTS)
+# The supplement joins the report where the run has built it (a file marked for the report must exist).
+SUPPLEMENT = "paper/supplement.pdf"
+REPORT_DOCUMENTS = (
+    [report(SUPPLEMENT, caption=str(ROOT / "report" / "supplement.rst"), category="Documents")]
+    if os.path.exists(SUPPLEMENT)
+    else []
+)
+
+
+rule report_page:
+    """A Markdown result of the run (the claims table, the versions) as an HTML page of the report."""
+    input:
+        source="results/{page}.md",
+        code=[source(REPLICATION / "report_pages.py")],
+    output:
+        report(
+            "results/report/{page}.html",
+            caption=str(ROOT / "report" / "page.rst"),
+            category="Claims and versions",
+        ),
+    log:
+        "logs/report_page_{page}.log",
+    wildcard_constraints:
+        page="|".join(REPORT_PAGES),
+    conda:
+        ENVIRONMENT
+    threads: 1
+    params:
+        title=lambda wildcards: REPORT_PAGES[wildcards.page],
+    shell:
+        "python -m particle_replication.report_pages {input.source} {output} "
+        "--title '{params.title}' > {log} 2>&1"
+
+
+rule notebook_page:
+    """An executed notebook as a standalone HTML page, for the report."""
+    input:
+        "notebooks/executed/{paper}.ipynb",
+    output:
+        report(
+            "notebooks/executed/{paper}.html",
+            caption=str(ROOT / "report" / "notebook.rst"),
+            category="Notebooks",
+        ),
+    log:
+        "logs/notebooks/{paper}_html.log",
+    conda:
+        ENVIRONMENT
+    threads: 1
+    shell:
+        "jupyter nbconvert --to html --output-dir notebooks/executed {input} > {log} 2>&1"
+
+
 SNIPPETS = expand(
     "paper/build/generated/{name}.tex",
     name=[
@@ -188,7 +249,9 @@ rule manuscript:
         figures=registry.figure_outputs(),
         tables=["results/cross/table.tex", "results/blob/fig5_orders.tex"],
     output:
-        "paper/ms.pdf",
+        report(
+            "paper/ms.pdf", caption=str(ROOT / "report" / "manuscript.rst"), category="Documents"
+        ),
     log:
         "logs/manuscript.log",
     benchmark:

@@ -245,7 +245,8 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     plan = planned_rules(snakemake(workdir, "--dry-run"))
     assert "plot_blob_fig8" in plan
     assert plan <= {"data_blob_fig7", "data_blob_fig8", "plot_blob_fig7", "plot_blob_fig8", "blob_claims",
-                    "claims_table", "report_snippets", "notebook", "manuscript", "verdicts", "all"}
+                    "claims_table", "report_snippets", "notebook", "manuscript", "verdicts", "report_page",
+                    "notebook_page", "all"}
     assert snakemake(workdir).returncode == 0
     resumed = snakemake(workdir, "--dry-run")
     assert "Nothing to be done" in resumed.stdout + resumed.stderr
@@ -258,7 +259,8 @@ def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
     assert result.returncode == 0, result.stderr[-2000:]
     import shutil
 
-    expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "verdicts", "all"}
+    expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "verdicts", "report_page",
+                "notebook_page", "all"}
     if shutil.which("latexmk") and shutil.which("pdflatex"):  # the snippets are made for the report alone
         expected |= {"report_snippets", "manuscript"}
     assert planned_rules(result) == expected
@@ -427,6 +429,75 @@ def test_browsable_report_has_every_figure_with_its_caption(workdir):
     shown = {name for name in EXPECTED_FIGURES if name.endswith(".png") and name in html}
     assert shown == {name for name in EXPECTED_FIGURES if name.endswith(".png")}
     assert "Morse kernels" in html and "Brenier-Grenier hull" in html
+
+
+# Clicks through the browsable report as its reader does: a menu entry by its label, a result's eye button.
+NAVIGATION = """
+const sleep = ms => new Promise(resolve => setTimeout(resolve, ms));
+async function find(pick, what) {
+  for (let i = 0; i < 100; i++) { const found = pick(); if (found) return found; await sleep(100); }
+  throw new Error('not shown: ' + what);
+}
+async function menu(label) {
+  (await find(() => [...document.querySelectorAll('li > a')].find(a => a.textContent.trim() === label), label)).click();
+  await sleep(300);
+}
+async function view(name) {
+  const row = await find(() => [...document.querySelectorAll('tr')].find(
+    row => row.cells.length && row.cells[0].textContent.trim().endsWith(name)), name);
+  row.querySelector('a').click();
+  await sleep(500);
+}
+"""
+
+
+def test_browsable_report_shows_the_claims_table_and_a_figure_in_chromium(workdir, tmp_path):
+    """The report a user gets (report.zip) opened in headless Chromium: the claims table shows every claim as a
+    table, and our own figures are marked and shown."""
+    import zipfile
+
+    import chromium
+
+    if chromium.executable() is None:
+        pytest.skip(chromium.MISSING)
+    archive = tmp_path / "report.zip"
+    result = snakemake(workdir, "--report", str(archive))
+    assert result.returncode == 0, result.stderr[-2000:]
+    with zipfile.ZipFile(archive) as opened:
+        opened.extractall(tmp_path)
+        names = opened.namelist()
+    latex = shutil.which("latexmk") and shutil.which("pdflatex")
+    for shipped in ("claims.html", "versions.html", "sticky.html", *(["ms.pdf"] if latex else [])):
+        assert any(name.endswith(shipped) for name in names), shipped
+    page = (tmp_path / "report" / "report.html").as_uri()
+    claims = list(csv.DictReader((workdir / "results" / "claims.csv").open()))
+    ours = next(f"{entry.name} (ours)" for entry in registry.PAPERS["blob"].figures if entry.ours)
+    with chromium.Browser() as browser:
+        browser.open(page)
+        landing = browser.evaluate("document.body.innerText")
+        assert "results/claims.md" not in landing and "three papers" in landing and "claims.html" in landing
+        browser.evaluate(f"(async () => {{ {NAVIGATION} await menu('Claims and versions'); "
+                         "await view('claims.html'); })()")
+        width, height = browser.evaluate(
+            "(r => [r.width, r.height])(document.querySelector('iframe').getBoundingClientRect())")
+        assert width > 500 and height > 500
+        (frame,) = browser.frames()
+        rows, shown = browser.evaluate(
+            "(table => [table.rows.length, table.getBoundingClientRect().height])(document.querySelector('table'))",
+            frame=frame["id"])
+        assert rows == len(claims) + 1 and shown > 1000  # the heading and one row a claim, laid out
+        text = browser.evaluate("document.body.innerText", frame=frame["id"])
+        assert claims[0]["id"] in text and "\\|" not in text
+        browser.screenshot(tmp_path / "claims.png")
+        browser.open(page)
+        figure = ours.split(" ")[0] + ".png"
+        browser.evaluate(f"(async () => {{ {NAVIGATION} await menu('Figures (blob)'); await menu('{ours}'); "
+                         f"await view('{figure}'); }})()")
+        natural, shown = browser.evaluate(
+            f"(image => [image.naturalWidth, image.getBoundingClientRect().width])"
+            f"([...document.querySelectorAll('img')].find(image => image.src.endsWith('{figure}')))")
+        assert natural > 500 and shown > 300
+        browser.screenshot(tmp_path / "figure.png")
 
 
 def test_versions_are_recorded(workdir):

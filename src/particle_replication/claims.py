@@ -400,7 +400,7 @@ def fragile(claims, margin_min: float) -> list[Claim]:
 
 def markdown_table(claims, heading: bool = True) -> str:
     """Markdown rendering: a title and the summary line (unless ``heading`` is false), then one row
-    per claim, paper claims first."""
+    per claim, paper claims first (a ``|`` in any cell escaped, so that the table keeps its columns)."""
     lines = ["# Checked claims", "", summary_line(claims), ""] if heading else []
     lines += [
         "| id | kind | source | claim | published | measured | tolerance | status | margin (spreads) | "
@@ -409,9 +409,10 @@ def markdown_table(claims, heading: bool = True) -> str:
     ]
     for claim in sorted(claims, key=lambda claim: KINDS.index(claim.kind)):
         status = {"fail": "**fail**", "abstain": "abstains"}.get(claim.status, claim.status)
-        text = claim.claim.replace("|", "\\|")
-        lines.append(f"| `{claim.id}` | {claim.kind} | {claim.source} | {text} | {claim.published} | "
-                     f"{claim.measured} | {claim.tolerance} | {status} | {claim.margin} | {claim.windows} |")
+        cells = [claim.source, claim.claim, claim.published, claim.measured, claim.tolerance]
+        source, text, published, measured, tolerance = (cell.replace("|", "\\|") for cell in cells)
+        lines.append(f"| `{claim.id}` | {claim.kind} | {source} | {text} | {published} | "
+                     f"{measured} | {tolerance} | {status} | {claim.margin} | {claim.windows} |")
     return "\n".join(lines) + "\n"
 
 
