@@ -56,7 +56,7 @@ def figure_map() -> str:
     rows = ["| paper | figure | shows | data rule (script) | plot rule |", "|---|---|---|---|---|"]
     for paper in PAPERS.values():
         for plot in paper.plots:
-            sources = ", ".join(_computed_by(paper.id, entries[path]) for path in plot.data.values()) or "-"
+            sources = ", ".join(_computed_by(entries[path]) for path in plot.data.values()) or "-"
             for figure in plot.figures:
                 label = figure.label.replace("|", "\\|")
                 name = f"{figure.name} (ours)" if figure.ours else figure.name
@@ -64,9 +64,8 @@ def figure_map() -> str:
     return "\n".join(rows)
 
 
-def _computed_by(paper: str, entry: Result) -> str:
-    rule = f"`{entry.rule}`" if entry.job is not None else f"`rules/{paper}.smk`"
-    return f"{rule} ({entry.writer})"
+def _computed_by(entry: Result) -> str:
+    return f"`{entry.rule}` ({entry.writer})"
 
 
 def _paper(paper: str) -> Paper:

@@ -150,6 +150,7 @@ RESULTS = (
         "results/blob/fig5/case*.npz",
         "fig5_data.py",
         ("label", "inverse_h", "trajectory", "density", "particles", "evaluations"),
+        hand_rule="blob_fig5_case",
     ),
     Result(
         "results/blob/fig5.npz",
@@ -164,6 +165,7 @@ RESULTS = (
             "case*_particles",
             "case*_evaluations",
         ),
+        hand_rule="blob_fig5_data",
     ),
     Result(
         "results/blob/fig6.npz",

@@ -66,18 +66,26 @@ class Job:
 class Result:
     """One ``.npz`` result file: its path under the run's root (``results/<paper>/...``), the
     script of ``scripts/<paper>/`` that writes it, its keys as ``fnmatch`` patterns
-    (``case*_density``) where the config decides the names, and its :class:`Job` (None when a rule
-    written by hand in ``rules/<paper>.smk`` computes it). The writer and every reader check the file
-    against these keys (:func:`check_keys`)."""
+    (``case*_density``) where the config decides the names, and either its :class:`Job`, from which
+    its data rule is generated, or ``hand_rule``, the name of the rule written by hand in
+    ``rules/<paper>.smk`` that computes it. The writer and every reader check the file against these
+    keys (:func:`check_keys`)."""
 
     path: str
     writer: str
     keys: tuple[str, ...]
     job: Job | None = None
+    hand_rule: str | None = None
+
+    def __post_init__(self):
+        if (self.job is None) == (self.hand_rule is None):
+            raise ValueError(f"{self.path}: give either job (a generated rule) or hand_rule (a rule written by hand)")
 
     @property
     def rule(self) -> str:
-        """Name of the generated data rule: data_<paper>_<file stem>."""
+        """Name of the rule that computes it: the hand-written one, or the generated data_<paper>_<file stem>."""
+        if self.hand_rule is not None:
+            return self.hand_rule
         return "data_" + self.path.removeprefix("results/").removesuffix(".npz").replace("/", "_")
 
     def check_keys(self, keys) -> None:
