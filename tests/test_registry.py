@@ -52,7 +52,7 @@ def test_scripts_captions_and_titles_exist_for_every_figure():
             for path in plot.data.values():
                 assert registry.result(path) is not None and registry.result(path).path == path, path
             for figure in plot.figures:
-                assert figure.caption(section).endswith(".") and figure.label
+                assert figure.caption(section).endswith(".") and figure.describe(section)
                 assert figure.title is None or figure.title(section)
     for paper in registry.PAPERS.values():
         produced = {entry.path for entry in paper.results}

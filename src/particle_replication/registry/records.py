@@ -19,16 +19,21 @@ def _nothing(section: Section) -> dict:
 class Figure:
     """One figure: ``figures/<paper>/<name>.{pdf,png}``.
 
-    ``label`` is the line of the README's figure map, ``caption`` the Snakemake report's caption,
-    ``title`` the figure's own heading (None when the plot script composes it from its data), and
-    ``ours`` marks a figure of our own studies, not of the paper.
+    ``label`` is the line of the README's figure map (a text, or a function of the section when it names
+    parameters), ``caption`` the Snakemake report's caption, ``title`` the figure's own heading (None when
+    the plot script composes it from its data), and ``ours`` marks a figure of our own studies, not of the
+    paper.
     """
 
     name: str
-    label: str
+    label: str | Callable[[Section], str]
     caption: Callable[[Section], str]
     title: Callable[[Section], str] | None = None
     ours: bool = False
+
+    def describe(self, section: Section) -> str:
+        """The figure map's line for the paper's ``section`` of a configuration."""
+        return self.label(section) if callable(self.label) else self.label
 
 
 @dataclass(frozen=True)
