@@ -14,7 +14,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCUMENTS = [ROOT / "README.md", ROOT / "CONTRIBUTING.md", ROOT / "Snakefile", *sorted((ROOT / "docs").glob("*.md")),
-             *(ROOT / d / "README.md" for d in ("config", "benchmarks", "paper")), *sorted((ROOT / "config").glob("*.yaml"))]
+             *(ROOT / d / "README.md" for d in ("config", "benchmarks", "paper")),
+             *sorted((ROOT / "config").glob("*.yaml"))]
 
 
 def commands(program: str) -> list[tuple[str, str]]:
@@ -56,8 +57,11 @@ def test_snakemake_commands_parse_with_targets_first():
             assert target in known or "/" in target, f"{document}: `snakemake {line}`: unknown target {target}"
 
 
-@pytest.mark.parametrize("module", sorted({line.split()[0] for _, line in commands("python -m")
-                                           if re.fullmatch(r"[a-z_.]+", line.split()[0]) and line.split()[0][0] != "."} - {"pytest"}))
+MODULES = sorted({line.split()[0] for _, line in commands("python -m")
+                  if re.fullmatch(r"[a-z_]+(\.[a-z_]+)*", line.split()[0])} - {"pytest"})
+
+
+@pytest.mark.parametrize("module", MODULES)
 def test_python_modules_answer_help(module, monkeypatch, capsys):
     subcommands = {line.split()[1] for _, line in commands("python -m") if line.split()[0] == module
                    and len(line.split()) > 1 and re.fullmatch(r"[a-z]+", line.split()[1])}

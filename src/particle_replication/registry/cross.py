@@ -139,8 +139,8 @@ PAPER = Paper(
             "W1 against wall time, the same runs",
             lambda s: (
                 f"K = |x|/2 from the blob paper's data (4.3) and (4.4): W1 distance to the exact solution against "
-                f"wall time after JIT warm-up (the same runs, timed holding every core, with no other rule running), at t = "
-                f"{listing(s['times'])}."
+                f"wall time after JIT warm-up (the same runs, timed holding every core, with no other rule running), "
+                f"at t = {listing(s['times'])}."
             ),
         ),
         *(_aggregates_figure(case, about) for case, about in AGGREGATE_CASES.items()),

@@ -14,7 +14,8 @@ def _rows(name, label, formula, parameter):
                 label,
                 lambda s: (
                     f"W = {formula(s)} from (6.2), {parameter} = "
-                    f"{listing(case[parameter] for case in s[name]['cases'])}, h = {s[name]['h']}, {s[name]['steps']} steps: potential, density, velocity and particle sizes."
+                    f"{listing(case[parameter] for case in s[name]['cases'])}, h = {s[name]['h']}, {s[name]['steps']} "
+                    f"steps: potential, density, velocity and particle sizes."
                 ),
                 lambda s: f"LTP, W = {formula(s)} from (6.2), h = {s[name]['h']}, {s[name]['steps']} steps",
             ),

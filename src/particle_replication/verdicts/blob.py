@@ -216,7 +216,8 @@ def newtonian_claims(d1, d2, d3, rules, recorder: Recorder):
               float(rules["energy_rise"]), float(rise), published="decreasing"),
         claim(c.at_most, "mass", "section 2.2", "mass is conserved along trajectories (2.2): rho~_i J_i = rho0_i "
               "with J_i the Jacobian of the off-grid trajectory map (Definition 2.3, from massless tracers at "
-              f"alpha_i +- 1e-5); largest relative defect at t = 0.4, h = {float(d1['h']):g}", float(rules["mass_defect"]),
+              f"alpha_i +- 1e-5); largest relative defect at t = 0.4, h = {float(d1['h']):g}",
+              float(rules["mass_defect"]),
               mass_defect, published="conserved"),
     ]
 
