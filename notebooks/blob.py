@@ -39,7 +39,7 @@ print(summary("blob"))
 # ## Figures 1 to 3: K = |x|/2 in one dimension, where the exact solution is known
 #
 # The exact solution blows up at t = 1. Blob trajectories bend away from each other instead of
-# colliding; for t < 1 they converge at the rate m q = 3.6. The particle method (grad K(0) := 0)
+# colliding; for t < 1 they converge at the rate m q (the claims below give its value). The particle method (grad K(0) := 0)
 # has straight trajectories and converges at about second order; discontinuous data converge
 # more slowly.
 
@@ -68,8 +68,8 @@ plt.show()
 # %% [markdown]
 # ## Figure 4: m = 4 against m = 6, repulsive and cubic kernels
 #
-# For |x|^3/3 both mollifiers reach m q = 3.6 for m = 4; for m = 6 the paper says the rates are
-# better than m = 4's but below 5.4, and ours lie there. For the repulsive kernel -|x|/2 the
+# For |x|^3/3 both mollifiers reach m q for m = 4; for m = 6 the paper says the rates are
+# better than m = 4's but below m q, and ours lie there. For the repulsive kernel -|x|/2 the
 # trajectories reach m q but over the paper's h the densities converge at about third order: three
 # failing claims. The second figure below splits that error into a quadrature part (the particle
 # sum against the exact mollified convolution: the particles spread, so the sum is a coarse
@@ -97,7 +97,7 @@ plt.show()
 # %% [markdown]
 # Figure 4's row label reads K = -log|x|/(2 pi), its caption and text (-Delta)^{-1} = -|x|/2 in
 # 1D. The label's reading (mollified through Dawson's integral, errors against a finer m = 6 run)
-# gives densities near first order: the published m q = 3.6 fits the caption's kernel.
+# gives densities near first order: the published m q fits the caption's kernel.
 
 # %%
 show_figure("blob", "fig4log")
@@ -127,9 +127,9 @@ show_figure("blob", 6)
 # the end state is a ring whose radius we derive for a uniform ring and check. For
 # |x|^7/7 - |x|^1.5/1.5 the ring is a long-lived transient that breaks up into three points (the
 # curve below that falls, rises and falls again). Figure 8's Morse states coarsen
-# slowly; run until every one is steady (t = 400), the large delta changes the end state of
+# slowly; run until every one is steady (the final times of config `blob.fig8.cases`), the large delta changes the end state of
 # 2e^-|x| - 2e^-|x|/2 with regular data several times more than the others, as the paper says, and
-# the paper's coarse radial tables (100 and 200 points) give the same end states as ours.
+# the paper's coarse radial tables (`paper_tables` in the config) give the same end states as ours.
 
 # %%
 show_figure("blob", 7)

@@ -57,6 +57,8 @@ def test_summary_counts_each_kind_apart():
             c.at_most("x.c", "x", "1", "t", 1.0, 0.5, kind="check", source="ours")]
     assert c.counts(rows) == {"paper": (1, 2), "check": (1, 1)}
     assert c.summary_line(rows) == "Paper claims reproduced: 1 of 2. Also checks passing: 1 of 1."
+    # a part without paper claims (cross) says so rather than '0 of 0'
+    assert c.summary_line(rows[2:]) == "No claim of a paper. Checks passing: 1 of 1."
 
 
 @pytest.fixture

@@ -320,14 +320,18 @@ def counts(claims) -> dict[str, tuple[int, int]]:
 
 
 def summary_line(claims) -> str:
-    """'Paper claims reproduced: p of q. Derived claims: ...; checks: ...' (each kind counted apart; abstentions
-    named)."""
+    """'Paper claims reproduced: p of q. Also derived claims passing: ...; checks passing: ...' (each kind counted
+    apart; abstentions named); without paper claims (the cross part), 'No claim of a paper. Derived claims
+    passing: ...'."""
     tally = counts(claims)
     passed, total = tally.get("paper", (0, 0))
     others = "; ".join(f"{KIND_NAMES[kind]} passing: {p} of {n}" for kind, (p, n) in tally.items() if kind != "paper")
     abstained = sum(claim.status == "abstain" for claim in claims)
-    return (f"Paper claims reproduced: {passed} of {total}." + (f" Also {others}." if others else "")
-            + (f" {abstained} wall-time checks abstained (a loaded machine)." if abstained else ""))
+    if total:
+        line = f"Paper claims reproduced: {passed} of {total}." + (f" Also {others}." if others else "")
+    else:
+        line = "No claim of a paper." + (f" {others[0].upper()}{others[1:]}." if others else "")
+    return line + (f" {abstained} wall-time checks abstained (a loaded machine)." if abstained else "")
 
 
 class Spread(NamedTuple):
@@ -648,11 +652,17 @@ def read_values(path) -> tuple[dict[str, float], dict[str, str]]:
     return {i: float(v) for i, v in values.items()}, dict(exempt)
 
 
+#: The first line of a reference of values: the command that rewrites it.
+VALUES_HEADER = ("# Written by `python -m particle_replication.claims values <run>/results/claims.csv --reference "
+                 "<this file>` (the quick run: runs/quick/results/claims.csv); the exemptions are kept.\n")
+
+
 def write_values(claims_path, path) -> None:
     """Record the measured values of a claims table as the reference, keeping the file's exemptions."""
     exempt = read_values(path)[1] if Path(path).exists() else {}
     values = {claim.id: claim.value for claim in read_claims(claims_path)}
-    Path(path).write_text(yaml.safe_dump({"exempt": exempt, "values": values}, sort_keys=False, width=120))
+    Path(path).write_text(VALUES_HEADER + yaml.safe_dump({"exempt": exempt, "values": values}, sort_keys=False,
+                                                         width=120))
 
 
 def value_differences(claims, reference_path, relative: float = 1e-9, spreads=None,

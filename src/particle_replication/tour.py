@@ -44,5 +44,6 @@ def show_other_claims(paper: str) -> None:
 
 
 def summary(paper: str) -> str:
-    """'n claims checked: p pass, f fail.' for one paper."""
+    """The counts of one part's claims, kind by kind (:func:`particle_replication.claims.summary_line`): 'Paper
+    claims reproduced: p of q. Also derived claims passing: ...; checks passing: ...'."""
     return summary_line(paper_claims(paper))

@@ -64,8 +64,9 @@ def with_densities(run, blob, exact):
 def blob_run(trajectory=4 * Q, density=4 * Q, paths=TURNING, energies=-1.0 - 0.1 * TIMES, peak=0.75 * EXACT_PEAK):
     """Figure 1: errors C h^order; trajectories that contract but turn away from the exact collision."""
     trajectory_errors, density_errors = 0.1 * H**trajectory, 2.0 * H**density
-    return with_densities({"h_values": H, "fit_points": 3, "q": Q, "h": 0.2, "trajectory_errors": trajectory_errors,
-            "density_errors": density_errors, "times": TIMES, "positions": paths, "exact_times": EXACT_TIMES,
+    return with_densities({"h_values": H, "fit_points": 3, "q": Q, "order": 4, "h": 0.2,
+            "trajectory_errors": trajectory_errors, "density_errors": density_errors, "times": TIMES, "positions": paths,
+            "exact_times": EXACT_TIMES,
             "exact_paths": EXACT, "tight_errors": np.array([trajectory_errors[-1], density_errors[-1]]) * (1 + 1e-6),
             "energies": energies, "mass_defect": 1e-10}, peak, EXACT_PEAK)
 

@@ -49,24 +49,30 @@ def result(path) -> Result | None:
     return None
 
 
-def figure_map() -> str:
-    """The README's figure map: every figure, what it shows, the rules that compute its data (with
-    their scripts) and the rule that draws it, as a Markdown table."""
+def figure_map(config=None) -> str:
+    """The README's figure map for a configuration (the full run's, ``config/config.yaml``, by default):
+    every figure, what it shows, the rules that compute its data (with their scripts) and the rule that
+    draws it, as a Markdown table."""
+    if config is None:
+        import yaml
+
+        from ..paths import REPOSITORY
+
+        config = yaml.safe_load((REPOSITORY / "config" / "config.yaml").read_text())
     entries = {entry.path: entry for entry in RESULTS}
     rows = ["| paper | figure | shows | data rule (script) | plot rule |", "|---|---|---|---|---|"]
     for paper in PAPERS.values():
         for plot in paper.plots:
-            sources = ", ".join(_computed_by(paper.id, entries[path]) for path in plot.data.values()) or "-"
+            sources = ", ".join(_computed_by(entries[path]) for path in plot.data.values()) or "-"
             for figure in plot.figures:
-                label = figure.label.replace("|", "\\|")
+                label = figure.describe(config[paper.id]).replace("|", "\\|")
                 name = f"{figure.name} (ours)" if figure.ours else figure.name
                 rows.append(f"| {paper.id} | {name} | {label} | {sources} | `{plot.rule(paper.id)}` |")
     return "\n".join(rows)
 
 
-def _computed_by(paper: str, entry: Result) -> str:
-    rule = f"`{entry.rule}`" if entry.job is not None else f"`rules/{paper}.smk`"
-    return f"{rule} ({entry.writer})"
+def _computed_by(entry: Result) -> str:
+    return f"`{entry.rule}` ({entry.writer})"
 
 
 def _paper(paper: str) -> Paper:

@@ -7,7 +7,7 @@ from .records import Figure, Job, Paper, Plot, Result, listing
 def _newtonian(name, label, caption, title):
     return Plot(
         "plot_newtonian.py",
-        (Figure(name, label, caption, lambda s: title),),
+        (Figure(name, label, caption, title),),
         data={"data": f"results/blob/{name}.npz"},
         params=lambda s: {"error_t": s[name]["error_t"]},
     )
@@ -150,6 +150,7 @@ RESULTS = (
         "results/blob/fig5/case*.npz",
         "fig5_data.py",
         ("label", "inverse_h", "trajectory", "density", "particles", "evaluations"),
+        hand_rule="blob_fig5_case",
     ),
     Result(
         "results/blob/fig5.npz",
@@ -164,6 +165,7 @@ RESULTS = (
             "case*_particles",
             "case*_evaluations",
         ),
+        hand_rule="blob_fig5_data",
     ),
     Result(
         "results/blob/fig6.npz",
@@ -194,13 +196,13 @@ PAPER = Paper(
     plots=(
         _newtonian(
             "fig1",
-            "blob m = 4, Newtonian, smooth data (A-D)",
+            lambda s: f"blob m = {s['fig1']['order']}, Newtonian, smooth data (A-D)",
             lambda s: (
-                f"Blob method, m = {s['fig1']['order']}, delta = h^{s['fig1']['q']}, K = |x|/2, data "
+                f"Blob method, m = {s['fig1']['order']}, delta = h^{s['fig1']['q']:g}, K = |x|/2, data "
                 f"(4.3): trajectories, densities at t = {listing(s['fig1']['density_times'])}, zoom near "
                 f"t = 1, and L1_h errors against h at t = {s['fig1']['error_t']}."
             ),
-            "Blob method (m = 4, delta = h^0.9), K = |x|/2, data (4.3)",
+            lambda s: f"Blob method (m = {s['fig1']['order']}, delta = h^{s['fig1']['q']:g}), K = |x|/2, data (4.3)",
         ),
         _newtonian(
             "fig2",
@@ -209,16 +211,19 @@ PAPER = Paper(
                 "Particle method (grad K(0) = 0), same data: trajectories (straight lines), zoom, and "
                 "trajectory errors against h."
             ),
-            "Particle method (grad K(0) = 0), K = |x|/2, data (4.3)",
+            lambda s: "Particle method (grad K(0) = 0), K = |x|/2, data (4.3)",
         ),
         _newtonian(
             "fig3",
-            "blob m = 4, discontinuous data",
+            lambda s: f"blob m = {s['fig3']['order']}, discontinuous data",
             lambda s: (
-                "Blob method for the discontinuous data (4.4): trajectories, rounded densities, zoom and "
-                "slower convergence."
+                f"Blob method, m = {s['fig3']['order']}, delta = h^{s['fig3']['q']:g}, for the discontinuous data "
+                f"(4.4): trajectories, rounded densities, zoom and slower convergence."
             ),
-            "Blob method (m = 4, delta = h^0.9), K = |x|/2, discontinuous data (4.4)",
+            lambda s: (
+                f"Blob method (m = {s['fig3']['order']}, delta = h^{s['fig3']['q']:g}), K = |x|/2, discontinuous "
+                "data (4.4)"
+            ),
         ),
         Plot(
             "plot_fig4.py",

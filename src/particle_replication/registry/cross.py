@@ -126,10 +126,11 @@ PAPER = Paper(
     plots=(
         _study(
             "error_size",
-            "W1 against particles or cells, every method, (4.3) and (4.4), before and after the blow-up",
+            "W1 against particles or cells, every method, the blob paper's data (4.3) and (4.4), before and after "
+            "the blow-up",
             lambda s: (
-                f"K = |x|/2 from (4.3) and (4.4): W1 distance to the exact solution against the number of "
-                f"particles or cells, at t = {listing(s['times'])} (blow-up at t = 1). Dotted: W1 = "
+                f"K = |x|/2 from the blob paper's data (4.3) and (4.4): W1 distance to the exact solution against "
+                f"the number of particles or cells, at t = {listing(s['times'])} (blow-up at t = 1). Dotted: W1 = "
                 f"{s['target_error']:g}."
             ),
         ),
@@ -137,9 +138,9 @@ PAPER = Paper(
             "error_time",
             "W1 against wall time, the same runs",
             lambda s: (
-                f"K = |x|/2 from (4.3) and (4.4): W1 distance to the exact solution against wall time after "
-                f"JIT warm-up (the same runs, timed on 2 cores with no other rule running), at t = "
-                f"{listing(s['times'])}."
+                f"K = |x|/2 from the blob paper's data (4.3) and (4.4): W1 distance to the exact solution against "
+                f"wall time after JIT warm-up (the same runs, timed holding every core, with no other rule running), "
+                f"at t = {listing(s['times'])}."
             ),
         ),
         *(_aggregates_figure(case, about) for case, about in AGGREGATE_CASES.items()),

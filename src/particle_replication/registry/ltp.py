@@ -5,6 +5,7 @@ from .records import Figure, Job, Paper, Plot, Result, listing, power
 
 
 def _rows(name, label, formula, parameter):
+    """Figures 5 and 6: the potential's ``formula`` (a function of the section) for each case's ``parameter``."""
     return Plot(
         "plot_rows.py",
         (
@@ -12,10 +13,11 @@ def _rows(name, label, formula, parameter):
                 name,
                 label,
                 lambda s: (
-                    f"W = {formula} from (6.2), {parameter} = {listing(case[parameter] for case in s[name]['cases'])}, "
-                    f"h = {s[name]['h']}, {s[name]['steps']} steps: potential, density, velocity and particle sizes."
+                    f"W = {formula(s)} from (6.2), {parameter} = "
+                    f"{listing(case[parameter] for case in s[name]['cases'])}, h = {s[name]['h']}, {s[name]['steps']} "
+                    f"steps: potential, density, velocity and particle sizes."
                 ),
-                lambda s: f"LTP, W = {formula} from (6.2), h = {s[name]['h']}, {s[name]['steps']} steps",
+                lambda s: f"LTP, W = {formula(s)} from (6.2), h = {s[name]['h']}, {s[name]['steps']} steps",
             ),
         ),
         data={"data": f"results/ltp/{name}.npz"},
@@ -274,8 +276,11 @@ PAPER = Paper(
             ),
             data={"data": "results/ltp/fig4.npz"},
         ),
-        _rows("fig5", "abs(x)^a/a, a = 1.5, 2.5 (four rows)", "|x|^a/a", "a"),
-        _rows("fig6", "abs(x)^3/3 - abs(x)^b/b, b = 1.1, 1.5, 2.5", "|x|^3/3 - |x|^b/b", "b"),
+        _rows("fig5", lambda s: f"abs(x)^a/a, a = {listing(case['a'] for case in s['fig5']['cases'])}",
+              lambda s: "|x|^a/a", "a"),
+        _rows("fig6", lambda s: (f"abs(x)^{s['fig6']['a']:g}/{s['fig6']['a']:g} - abs(x)^b/b, b = "
+                                 f"{listing(case['b'] for case in s['fig6']['cases'])}"),
+              lambda s: f"{power(s['fig6']['a'])} - |x|^b/b", "b"),
         Plot(
             "plot_fig7.py",
             (

@@ -19,16 +19,21 @@ def _nothing(section: Section) -> dict:
 class Figure:
     """One figure: ``figures/<paper>/<name>.{pdf,png}``.
 
-    ``label`` is the line of the README's figure map, ``caption`` the Snakemake report's caption,
-    ``title`` the figure's own heading (None when the plot script composes it from its data), and
-    ``ours`` marks a figure of our own studies, not of the paper.
+    ``label`` is the line of the README's figure map (a text, or a function of the section when it names
+    parameters), ``caption`` the Snakemake report's caption, ``title`` the figure's own heading (None when
+    the plot script composes it from its data), and ``ours`` marks a figure of our own studies, not of the
+    paper.
     """
 
     name: str
-    label: str
+    label: str | Callable[[Section], str]
     caption: Callable[[Section], str]
     title: Callable[[Section], str] | None = None
     ours: bool = False
+
+    def describe(self, section: Section) -> str:
+        """The figure map's line for the paper's ``section`` of a configuration."""
+        return self.label(section) if callable(self.label) else self.label
 
 
 @dataclass(frozen=True)
@@ -66,18 +71,26 @@ class Job:
 class Result:
     """One ``.npz`` result file: its path under the run's root (``results/<paper>/...``), the
     script of ``scripts/<paper>/`` that writes it, its keys as ``fnmatch`` patterns
-    (``case*_density``) where the config decides the names, and its :class:`Job` (None when a rule
-    written by hand in ``rules/<paper>.smk`` computes it). The writer and every reader check the file
-    against these keys (:func:`check_keys`)."""
+    (``case*_density``) where the config decides the names, and either its :class:`Job`, from which
+    its data rule is generated, or ``hand_rule``, the name of the rule written by hand in
+    ``rules/<paper>.smk`` that computes it. The writer and every reader check the file against these
+    keys (:func:`check_keys`)."""
 
     path: str
     writer: str
     keys: tuple[str, ...]
     job: Job | None = None
+    hand_rule: str | None = None
+
+    def __post_init__(self):
+        if (self.job is None) == (self.hand_rule is None):
+            raise ValueError(f"{self.path}: give either job (a generated rule) or hand_rule (a rule written by hand)")
 
     @property
     def rule(self) -> str:
-        """Name of the generated data rule: data_<paper>_<file stem>."""
+        """Name of the rule that computes it: the hand-written one, or the generated data_<paper>_<file stem>."""
+        if self.hand_rule is not None:
+            return self.hand_rule
         return "data_" + self.path.removeprefix("results/").removesuffix(".npz").replace("/", "_")
 
     def check_keys(self, keys) -> None:

@@ -429,7 +429,7 @@ PAPER = Paper(
         ),
         _beyond_plot(
             "beyond_limits",
-            "exact MSPD against conservative HLL and upwind (1.7)",
+            "exact MSPD against conservative HLL and upwind for the diagonal system (1.7) of the sticky paper",
             lambda s: (
                 f"Beyond the paper, p-system at t = {s['beyond']['t']}: (a, b) w- and w+ of the exact MSPD "
                 f"(n = {s['beyond']['limit_n'][-1]} per type), the conservative HLL scheme "

@@ -150,7 +150,8 @@ def density_at(d, t):
 
 
 def newtonian_claims(d1, d2, d3, rules, recorder: Recorder):
-    rate, band = 4 * float(d1["q"]), float(rules["rate_tolerance"])
+    m, q, band = int(d1["order"]), float(d1["q"]), float(rules["rate_tolerance"])
+    rate = m * q
     blob_x = order(recorder, d1, "trajectory_errors", "fig1d.order_trajectory")
     blob_rho = order(recorder, d1, "density_errors", "fig1d.order_density")
     particle_x = order(recorder, d2, "trajectory_errors", "fig2.order")
@@ -174,9 +175,9 @@ def newtonian_claims(d1, d2, d3, rules, recorder: Recorder):
     peak_blob, peak_exact = density_at(d1, RESOLUTION_TIME)
     patch_blob, patch_exact = density_at(d3, RESOLUTION_TIME)
     return [
-        claim(c.close_to, "fig1d.order_trajectory", "1D", f"blob m = 4, q = 0.9, smooth data: trajectory "
+        claim(c.close_to, "fig1d.order_trajectory", "1D", f"blob m = {m}, q = {q:g}, smooth data: trajectory "
               f"error rate close to m q = {rate:g}", rate, blob_x, band),
-        claim(c.close_to, "fig1d.order_density", "1D", f"blob m = 4, q = 0.9, smooth data: density error rate "
+        claim(c.close_to, "fig1d.order_density", "1D", f"blob m = {m}, q = {q:g}, smooth data: density error rate "
               f"close to m q = {rate:g}", rate, blob_rho, band),
         claim(c.close_to, "fig2.order", "2", "particle method (grad K(0) = 0): trajectory rate about 2, "
               "O(h^(2 - eps))", 2.0, particle_x, band),
@@ -215,7 +216,8 @@ def newtonian_claims(d1, d2, d3, rules, recorder: Recorder):
               float(rules["energy_rise"]), float(rise), published="decreasing"),
         claim(c.at_most, "mass", "section 2.2", "mass is conserved along trajectories (2.2): rho~_i J_i = rho0_i "
               "with J_i the Jacobian of the off-grid trajectory map (Definition 2.3, from massless tracers at "
-              "alpha_i +- 1e-5); largest relative defect at t = 0.4, h = 0.04", float(rules["mass_defect"]),
+              f"alpha_i +- 1e-5); largest relative defect at t = 0.4, h = {float(d1['h']):g}",
+              float(rules["mass_defect"]),
               mass_defect, published="conserved"),
     ]
 
@@ -288,7 +290,7 @@ def diagnostic_claim(d, m: int, band: float, recorder: Recorder):
     window's fit and the pairwise orders, and which windows would pass alone. (The aliasing prediction that
     decides the m = 6 error at q = 0.9 does not apply here: its expansion parameter, the saddle ratio, is not
     small at q = 0.75; config/config.yaml.)"""
-    q = float(d["diagnostic_q"])
+    q, paper_q = float(d["diagnostic_q"]), float(d["q"])
     name, key = f"fig4.repulsive_density_q{q:g}_m{m}", f"diagnostic_m{m}_density"
     order(recorder, d, key, name)  # the table with its pairwise orders, in the claims' log
     h, errors, k = d["h_values"], d[key], int(d["fit_points"])
@@ -302,9 +304,9 @@ def diagnostic_claim(d, m: int, band: float, recorder: Recorder):
     pairwise = np.diff(np.log(errors)) / np.diff(np.log(h))
     gaps = m * q - pairwise
     shrink = ", ".join(f"{a / b:.2f}" for a, b in zip(gaps[:-1], gaps[1:])) if np.all(gaps > 0) else "not all positive"
-    return claim(c.close_to, name, "4 (diagnostic)", f"K = -|x|/2, m = {m}, with q = {q:g} instead of 0.9: the "
-                 "density rate reaches m q on every window of the (unstated) h range, so the slow density rate at "
-                 "q = 0.9 is the quadrature error of the spreading particles, not the regularisation: the "
+    return claim(c.close_to, name, "4 (diagnostic)", f"K = -|x|/2, m = {m}, with q = {q:g} instead of {paper_q:g}: "
+                 "the density rate reaches m q on every window of the (unstated) h range, so the slow density rate at "
+                 f"q = {paper_q:g} is the quadrature error of the spreading particles, not the regularisation: the "
                  f"{k}-point fit farthest from m q = {m * q:g} over every window ({windows}; {flips}); pairwise "
                  f"orders {local_orders(np.rint(1.0 / h).astype(int), errors)}; their gaps to m q shrink by {shrink} "
                  f"per halving of h (2^(2q) = {2 ** (2 * q):.2f} once the delta^2 correction of the regularisation "
@@ -516,7 +518,7 @@ def cluster_count(points, threshold: float):
 
 def fig5_claims(d, rules, recorder: Recorder):
     labels = list(d["labels"])
-    band = float(rules["rate_tolerance"])
+    band, rate = float(rules["rate_tolerance"]), 4 * float(d["q"])  # m = 4 in every blob case of Figure 5
     # the claim each case's fits are recorded under: the one its trajectory rate decides (the
     # density rates of the particle and disk cases decide none)
     names = {"regular, blob": ("fig5.m4_regular_trajectory", "fig5.m4_regular_density"),
@@ -528,9 +530,9 @@ def fig5_claims(d, rules, recorder: Recorder):
     regular, particle, disk = slopes["regular, blob"], slopes["regular, particle"], slopes["disk, blob"]
     return [
         claim(c.close_to, "fig5.m4_regular_trajectory", "5", "2D, K = log|x|/(2 pi), m = 4, regular data: trajectory "
-              "rate close to m q = 3.6", 3.6, regular[0], band),
-        claim(c.close_to, "fig5.m4_regular_density", "5", "2D, m = 4, regular data: density rate close to m q = 3.6",
-              3.6, regular[1], band),
+              f"rate close to m q = {rate:g}", rate, regular[0], band),
+        claim(c.close_to, "fig5.m4_regular_density", "5", f"2D, m = 4, regular data: density rate close to m q = "
+              f"{rate:g}", rate, regular[1], band),
         claim(c.at_most, "fig5.particle_slower", "5", "2D: the particle method converges more slowly: particle "
               "minus blob trajectory rate", 0.0, particle[0] - regular[0], published="slower"),
         claim(c.at_most, "fig5.disk_slower", "5", "2D: discontinuous data converge more slowly: disk minus regular "
