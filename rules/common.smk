@@ -1,15 +1,40 @@
 """Configuration checks and helpers shared by every rule file."""
 
+import importlib.util
 import os
 from pathlib import Path
 
+from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
+
+ROOT = Path(workflow.basedir)
+
+
+def imported_elsewhere(src):
+    """The packages the jobs run (the numerics and the replication layer) that Python would import from
+    elsewhere than ``src``, this checkout's sources: a copy or a second clone run in another checkout's
+    environment would run that checkout's code while its rules track this one's files."""
+    found = {}
+    for name in ("particle_methods", "particle_replication"):
+        spec = importlib.util.find_spec(name)
+        location = Path(spec.origin).resolve().parents[1] if spec and spec.origin else None
+        if location != Path(src).resolve():
+            found[name] = location or "nowhere (not installed)"
+    return found
+
+
+if elsewhere := imported_elsewhere(ROOT / "src"):
+    raise WorkflowError(
+        f"This workflow's code is in {ROOT / 'src'}, but Python imports "
+        + ", ".join(f"{name} from {where}" for name, where in elsewhere.items())
+        + ": the jobs would run another checkout's code. Install this checkout in the environment "
+        f'(pip install -e "{ROOT}[pipeline]") or run with PYTHONPATH={ROOT / "src"}.'
+    )
 
 from particle_replication import registry
 from particle_replication.configuration import check_configuration
 from particle_replication.workflow import code_inputs as workflow_code_inputs
 
-ROOT = Path(workflow.basedir)
 PACKAGE = ROOT / "src" / "particle_methods"  # the numerics
 REPLICATION = ROOT / "src" / "particle_replication"  # claims, verdicts, the pipeline's support
 PACKAGES = [PACKAGE, REPLICATION]

@@ -69,6 +69,34 @@ def test_the_numerics_load_none_of_the_pipelines_software():
     assert loaded.strip() == "[]"
 
 
+def third_party_imports(package: Path) -> set[str]:
+    """Top-level names of the modules outside the standard library and ``package`` that its modules import."""
+    names = set()
+    for path in package.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.Import):
+                names.update(alias.name.split(".")[0] for alias in node.names)
+            elif isinstance(node, ast.ImportFrom) and not node.level:
+                names.add(node.module.split(".")[0])
+    return names - set(sys.stdlib_module_names) - {package.name, "__future__"}
+
+
+def test_the_numerics_install_alone():
+    """`pip install particle-methods` installs what the numerics import and nothing else; the pipeline's software
+    comes with the `pipeline` extra, which the test extra includes (.ci/run installs both ways)."""
+    import re
+    import tomllib
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    name = lambda requirement: re.match(r"[A-Za-z0-9_.-]+", requirement).group().lower()  # noqa: E731
+    numerics = {name(requirement) for requirement in project["dependencies"]}
+    assert numerics == third_party_imports(ROOT / "src" / "particle_methods")
+    pipeline = {name(requirement) for requirement in project["optional-dependencies"]["pipeline"]}
+    assert {"snakemake", "matplotlib", "jupytext", "nbclient", "ipykernel", "pyyaml"} <= pipeline
+    assert not pipeline & numerics
+    assert "particle-methods[pipeline]" in project["optional-dependencies"]["test"]
+
+
 def test_plot_scripts_give_text_sizes_relative_to_the_printed_style():
     """Sizes in points would not follow plotting.new_figure's scaling to the printed width (a 16 in figure
     printed its 7 pt legends at 2.8 pt): scripts say "small", "x-small", never a number."""

@@ -2,6 +2,7 @@
 
 import csv
 import math
+import os
 import re
 import shutil
 import subprocess
@@ -40,6 +41,13 @@ def copy_repository(destination):
     return destination
 
 
+def checkout_environment(repository):
+    """The environment in which the scratch ``repository`` runs its own code, as a clone installed with
+    ``pip install -e`` does: its ``src`` first on the path (the workflow stops on another checkout's)."""
+    path = os.pathsep.join(filter(None, [str(Path(repository) / "src"), os.environ.get("PYTHONPATH")]))
+    return {**os.environ, "PYTHONPATH": path}
+
+
 def snakefile_of(workdir):
     """The Snakefile of the scratch repository a run directory belongs to (runs/<name> inside it)."""
     candidate = Path(workdir).parents[1] / "Snakefile"
@@ -53,7 +61,7 @@ def snakemake_command(workdir, *args, configs=()):
 
 def snakemake(workdir, *args, configs=()):
     return subprocess.run(snakemake_command(workdir, *args, configs=configs), capture_output=True, text=True,
-                          timeout=900)
+                          timeout=900, env=checkout_environment(snakefile_of(workdir).parent))
 
 
 def planned_rules(result):
@@ -65,7 +73,8 @@ def repository(tmp_path_factory):
     """A scratch copy of the repository where the quick run is made as the README says: from its root."""
     repository = copy_repository(tmp_path_factory.mktemp("clone") / "particle-methods")
     result = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "--configfile", "config/quick.yaml"],
-                            cwd=repository, capture_output=True, text=True, timeout=900)
+                            cwd=repository, capture_output=True, text=True, timeout=900,
+                            env=checkout_environment(repository))
     assert result.returncode == 0, result.stderr[-4000:]
     return repository
 
@@ -85,10 +94,18 @@ def test_a_copied_repository_with_its_run_has_nothing_to_do(repository, tmp_path
     """Moving or copying a finished run (with its repository, file times kept) replans nothing."""
     copy = tmp_path / "elsewhere" / "deeper" / "copy"
     shutil.copytree(repository, copy)
-    result = subprocess.run([sys.executable, "-m", "snakemake", "--dry-run", "--configfile", "config/quick.yaml"],
-                            cwd=copy, capture_output=True, text=True, timeout=300)
+    command = [sys.executable, "-m", "snakemake", "--dry-run", "--configfile", "config/quick.yaml"]
+    result = subprocess.run(command, cwd=copy, capture_output=True, text=True, timeout=300,
+                            env=checkout_environment(copy))
     assert result.returncode == 0, result.stderr[-2000:]
     assert "Nothing to be done" in result.stdout + result.stderr, result.stdout[-2000:]
+    # Run in the environment of the repository it was copied from, it would run that one's code: it stops.
+    result = subprocess.run(command, cwd=copy, capture_output=True, text=True, timeout=300,
+                            env=checkout_environment(repository))
+    output = result.stdout + result.stderr
+    assert result.returncode != 0
+    assert f"particle_methods from {(repository / 'src').resolve()}" in output, output[-2000:]
+    assert f"PYTHONPATH={copy / 'src'}" in output, output[-2000:]
 
 
 @pytest.mark.parametrize("paper", ["sticky", "ltp", "blob"])
@@ -224,7 +241,7 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
         (workdir / name).unlink()
     start = time.time()
     process = subprocess.Popen(snakemake_command(workdir), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               start_new_session=True)
+                               start_new_session=True, env=checkout_environment(workdir.parents[1]))
     log = workdir / "logs" / "blob" / "fig8_data.log"
     while not (log.exists() and log.stat().st_mtime >= start and log.read_text()):
         assert process.poll() is None and time.time() - start < 300, "the solver never started"
@@ -270,7 +287,8 @@ def test_verify_works_as_the_readme_writes_it(workdir):
     """`snakemake verify`, with no --cores (the default profile gives them), passes when every verdict
     is the expected one and prints the paper claims."""
     result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml"],
-                            cwd=workdir.parents[1], capture_output=True, text=True, timeout=600)
+                            cwd=workdir.parents[1], env=checkout_environment(workdir.parents[1]),
+                            capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, (result.stdout + result.stderr)[-3000:]
     assert not (workdir / "runs").exists()
     assert "Paper claims reproduced:" in result.stdout and "0 differences from the expected verdicts" in result.stdout
@@ -293,7 +311,7 @@ def test_verify_fails_when_a_verdict_changes(workdir, tmp_path):
     expected, changed_id = changed_verdicts(tmp_path)
     result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml",
                              "--config", f"verdicts={expected}"], cwd=workdir.parents[1],
-                            capture_output=True, text=True, timeout=600)
+                            env=checkout_environment(workdir.parents[1]), capture_output=True, text=True, timeout=600)
     assert result.returncode != 0
     assert f"CHANGED {changed_id}: expected fail" in result.stdout + result.stderr
 
@@ -321,8 +339,8 @@ def test_a_configuration_of_ones_own_is_compared_with_nothing(workdir, tmp_path)
     override.write_text("sticky:\n  lemma21:\n    n_values: [16, 64, 256, 1024, 2048]\n")
     # mtime triggers only: the quick run's table stands in for the overlay's, which is not recomputed here
     result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--rerun-triggers", "mtime", "--configfile",
-                             "config/quick.yaml", str(override)], cwd=workdir.parents[1], capture_output=True,
-                            text=True, timeout=600)
+                             "config/quick.yaml", str(override)], cwd=workdir.parents[1],
+                            env=checkout_environment(workdir.parents[1]), capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, (result.stdout + result.stderr)[-2000:]
     assert "Nothing compared" in result.stdout and "sticky.lemma21.n_values" in result.stdout
 

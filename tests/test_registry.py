@@ -90,6 +90,21 @@ def test_the_registry_is_not_a_code_input_of_the_jobs():
     assert "workflow_code_inputs(path, PACKAGES)" in (ROOT / "rules" / "common.smk").read_text()
 
 
+def test_a_copy_leaves_out_its_own_registry(tmp_path):
+    """The sources copied elsewhere, the imported package still this checkout's: the copy's registry is left
+    out, as the workflow's own (a copied repository run with another's package listed it and replanned
+    every job)."""
+    import shutil
+
+    copy = tmp_path / "copy"
+    shutil.copytree(ROOT / "src", copy / "src", ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(ROOT / "scripts" / "blob", copy / "scripts" / "blob", ignore=shutil.ignore_patterns("__pycache__"))
+    packages = [copy / "src" / "particle_methods", copy / "src" / "particle_replication"]
+    inputs = code_inputs(copy / "scripts" / "blob" / "fig6_data.py", packages)
+    assert str((copy / "src" / "particle_replication" / "workflow.py").resolve()) in inputs
+    assert not any("registry" in Path(path).parts for path in inputs), inputs
+
+
 def test_result_keys_are_checked_when_written_and_read(tmp_path):
     entry = registry.result("results/ltp/fig7.npz")
     arrays = {key: np.zeros(1) for key in entry.keys}

@@ -217,11 +217,14 @@ def _direct_dependencies(path: Path, stamp, dirs: tuple[Path, ...]) -> tuple[Pat
 
 def code_inputs(script, package_dirs) -> list[str]:
     """The modules a job's code inputs list: :func:`module_dependencies` of ``script`` but for the
-    registry (:mod:`particle_replication.registry`), whose captions and parameters reach a job as
-    its params, inputs and script, which Snakemake tracks, so that editing a caption reruns only
-    the plot that shows it."""
-    registry = (Path(__file__).parent / "registry").resolve()
-    return [path for path in module_dependencies(script, package_dirs) if not Path(path).is_relative_to(registry)]
+    registry (:mod:`particle_replication.registry` of the checkout ``package_dirs`` belong to, not of the
+    imported package: a copy of the repository would otherwise list its registry and replan every job),
+    whose captions and parameters reach a job as its params, inputs and script, which Snakemake tracks,
+    so that editing a caption reruns only the plot that shows it."""
+    modules = module_dependencies(script, package_dirs)  # checks package_dirs: one or more, side by side
+    first = package_dirs if isinstance(package_dirs, str | Path) else package_dirs[0]
+    registry = (Path(first).resolve().parent / "particle_replication" / "registry")
+    return [path for path in modules if not Path(path).is_relative_to(registry)]
 
 
 def _imported(node, here):
