@@ -59,17 +59,20 @@ def _has_script(text: str) -> bool:
 
 
 def legible(fig) -> list[str]:
-    """Raise every text of ``fig`` below its floor as printed (MIN_PRINTED_SIZE, or MIN_PRINTED_SIZE / SCRIPT_SCALE
-    for text with a sub- or superscript; the figure printed PRINTED_WIDTH wide) to that floor: a size set in
-    points, relative ("x-small") or from an rc parameter cannot print smaller. Tick labels, still empty before the
-    figure is drawn, get the plain floor, which the ticks drawn later copy. Returns the texts raised."""
+    """Raise every text of ``fig`` below its floor as printed to that floor: MIN_PRINTED_SIZE, or MIN_PRINTED_SIZE /
+    SCRIPT_SCALE for text with a sub- or superscript, so that a size set in points, relative ("x-small") or from an
+    rc parameter cannot print smaller. The figure prints PRINTED_WIDTH wide as saved, that is with its tight
+    bounding box, which a legend or a label outside the axes makes wider than the figure: the floors follow that
+    width (the figure is drawn once to measure it). Returns the texts raised."""
     from matplotlib.text import Text
 
-    scale = fig.get_figwidth() / PRINTED_WIDTH
+    fig.draw_without_rendering()
+    width = max(fig.get_figwidth(), fig.get_tightbbox().width)
+    scale = width / PRINTED_WIDTH
     raised = []
     for text in fig.findobj(Text):
         content = text.get_text()
-        if not text.get_visible():
+        if not text.get_visible() or not content.strip():
             continue
         floor = MIN_PRINTED_SIZE * scale / (SCRIPT_SCALE if _has_script(content) else 1.0)
         if text.get_fontsize() < floor - 1e-9:
@@ -131,13 +134,13 @@ def save_figure(fig, pdf_path, png_path=None) -> None:
     png_path = Path(png_path) if png_path is not None else pdf_path.with_suffix(".png")
     pdf_path.parent.mkdir(parents=True, exist_ok=True)
     _formulas_in_mathtext(fig)
-    legible(fig)
     for ax in fig.axes:
         for axis in (ax.xaxis, ax.yaxis):
             for formatter, set_formatter in ((axis.get_major_formatter(), axis.set_major_formatter),
                                              (axis.get_minor_formatter(), axis.set_minor_formatter)):
                 if type(formatter) is LogFormatterSciNotation:
                     set_formatter(UnicodePowers(formatter))
+    legible(fig)
     fig.savefig(pdf_path)
     # The layout is fixed by the first save: the second one reuses it instead of solving it again.
     fig.set_layout_engine("none")
