@@ -31,7 +31,8 @@ pytestmark = [pytest.mark.pipeline, pytest.mark.xdist_group("pipeline")]
 
 # What a clone holds besides the sources: never copied into the scratch repositories.
 GENERATED = shutil.ignore_patterns(".git", ".snakemake", "results", "figures", "logs", "runs", "executed", "build",
-                                   "ms.pdf", "supplement.pdf", "__pycache__", "*.nbi", "*.nbc", ".hypothesis", ".pytest_cache")
+                                   "ms.pdf", "supplement.pdf", "__pycache__", "*.nbi", "*.nbc", ".hypothesis",
+                                   ".pytest_cache")
 
 
 def copy_repository(destination):

@@ -63,21 +63,26 @@ def legible(fig) -> list[str]:
     SCRIPT_SCALE for text with a sub- or superscript, so that a size set in points, relative ("x-small") or from an
     rc parameter cannot print smaller. The figure prints PRINTED_WIDTH wide as saved, that is with its tight
     bounding box, which a legend or a label outside the axes makes wider than the figure: the floors follow that
-    width (the figure is drawn once to measure it). Returns the texts raised."""
+    width, measured by drawing the figure, again after raising texts (which can widen it), at most three times.
+    Returns the texts raised."""
     from matplotlib.text import Text
 
-    fig.draw_without_rendering()
-    width = max(fig.get_figwidth(), fig.get_tightbbox().width)
-    scale = width / PRINTED_WIDTH
     raised = []
-    for text in fig.findobj(Text):
-        content = text.get_text()
-        if not text.get_visible() or not content.strip():
-            continue
-        floor = MIN_PRINTED_SIZE * scale / (SCRIPT_SCALE if _has_script(content) else 1.0)
-        if text.get_fontsize() < floor - 1e-9:
-            text.set_fontsize(floor)
-            raised.append(content)
+    for _ in range(3):
+        fig.draw_without_rendering()
+        scale = max(fig.get_figwidth(), fig.get_tightbbox().width) / PRINTED_WIDTH
+        now = []
+        for text in fig.findobj(Text):
+            content = text.get_text()
+            if not text.get_visible() or not content.strip():
+                continue
+            floor = MIN_PRINTED_SIZE * scale / (SCRIPT_SCALE if _has_script(content) else 1.0)
+            if text.get_fontsize() < floor - 1e-9:
+                text.set_fontsize(floor)
+                now.append(content)
+        if not now:
+            break
+        raised += now
     return raised
 
 

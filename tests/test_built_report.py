@@ -1,5 +1,6 @@
-"""The figures of the built report and supplement, read from the PDFs as a reader sees them: no text of any
-figure prints below MIN_PRINTED_SIZE points (sub- and superscripts included).
+"""The built report and supplement, read from the PDFs as a reader sees them: the report has at most
+MAX_REPORT_PAGES pages, and no text of any figure prints below MIN_PRINTED_SIZE points (sub- and superscripts
+included).
 
 PyMuPDF's ``page.get_text("dict")`` gives every text span with its size in the page's coordinates, which
 include the scale at which LaTeX prints the embedded figure: a 9 pt title of a figure printed at half its
@@ -17,7 +18,23 @@ from particle_replication.plotting import MIN_PRINTED_SIZE
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCUMENTS = [ROOT / "paper" / "ms.pdf", ROOT / "paper" / "supplement.pdf"]
+#: The report a referee reads; the rest goes to the supplement.
+MAX_REPORT_PAGES = 25
 _CAPTION = re.compile(r"^Figure\s+(.+?):")
+
+
+def _built(document: Path) -> Path:
+    if not document.exists():
+        name = document.relative_to(ROOT)
+        pytest.skip(f"{name} is not built: run `snakemake --cores 1 {name}`")
+    return document
+
+
+def test_the_report_has_at_most_its_pages():
+    pymupdf = pytest.importorskip("pymupdf", reason="PyMuPDF (pip install pymupdf) reads the built PDF")
+    with pymupdf.open(_built(DOCUMENTS[0])) as document:
+        assert document.page_count <= MAX_REPORT_PAGES, (
+            f"paper/ms.pdf has {document.page_count} pages: move detail to paper/supplement.tex")
 
 
 def figure_text_sizes(path) -> dict[str, tuple[float, str, int]]:
@@ -47,9 +64,7 @@ def figure_text_sizes(path) -> dict[str, tuple[float, str, int]]:
 
 @pytest.mark.parametrize("document", DOCUMENTS, ids=lambda path: path.name)
 def test_no_figure_text_prints_below_the_smallest_legible_size(document):
-    if not document.exists():
-        pytest.skip(f"{document.relative_to(ROOT)} is not built: run `snakemake --cores 1 {document.relative_to(ROOT)}`")
-    sizes = figure_text_sizes(document)
+    sizes = figure_text_sizes(_built(document))
     assert sizes, f"no figure text found in {document.name}: the figures' fonts were not recognised"
     small = {label: size for label, size in sizes.items() if size[0] < MIN_PRINTED_SIZE - 0.01}
     report = "\n".join(f"  Figure {label}: {size:.2f} pt ({text!r}, page {page})"
