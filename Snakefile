@@ -53,7 +53,6 @@ rule all:
         MANUSCRIPT,
         REPORT_PAGE_FILES,
         NOTEBOOK_PAGES,
-        REPORT_DOCUMENTS,
         "results/verdicts.txt",
 
 

@@ -133,15 +133,6 @@ REPORT_PAGES = {
 }
 REPORT_PAGE_FILES = expand("results/report/{page}.html", page=REPORT_PAGES)
 NOTEBOOK_PAGES = expand("notebooks/executed/{paper}.html", paper=NOTEBOOK_INPUTS)
-# The supplement joins the report where the run has built it (a file marked for the report must exist).
-SUPPLEMENT = "paper/supplement.pdf"
-REPORT_DOCUMENTS = (
-    [report(SUPPLEMENT, caption=str(ROOT / "report" / "supplement.rst"), category="Documents")]
-    if os.path.exists(SUPPLEMENT)
-    else []
-)
-
-
 rule report_page:
     """A Markdown result of the run (the claims table, the versions) as an HTML page of the report."""
     input:
@@ -193,6 +184,9 @@ SNIPPETS = expand(
         "claims_ltp",
         "claims_blob",
         "claims_cross",
+        "paperclaims_sticky",
+        "paperclaims_ltp",
+        "paperclaims_blob",
         "commit",
         "measured",
         "parameters",
@@ -207,9 +201,9 @@ SNIPPETS = expand(
     ],
 )
 LATEX = all(shutil.which(tool) for tool in ("latexmk", "pdflatex"))
-MANUSCRIPT = ["paper/ms.pdf"] if LATEX else []
+MANUSCRIPT = ["paper/ms.pdf", "paper/supplement.pdf"] if LATEX else []
 LATEX_HELP = (
-    "paper/ms.pdf was not built: no LaTeX toolchain found. On Debian or Ubuntu install it with\n"
+    "paper/ms.pdf and paper/supplement.pdf were not built: no LaTeX toolchain found. On Debian or Ubuntu install it with\n"
     "    sudo apt-get install latexmk texlive-latex-base texlive-latex-recommended "
     "texlive-latex-extra texlive-fonts-recommended lmodern\n"
     "and run snakemake again; everything else is built."
@@ -242,20 +236,24 @@ rule report_snippets:
 
 
 rule manuscript:
-    """Build paper/ms.pdf with latexmk from the article and the generated snippets."""
+    """Build the report paper/ms.pdf, or its supplement paper/supplement.pdf, with latexmk from its source, the
+    shared preamble and the generated snippets."""
     input:
-        source=source(ROOT / "paper" / "ms.tex"),
+        source=source(ROOT / "paper" / "{document}.tex"),
+        preamble=source(ROOT / "paper" / "preamble.tex"),
         snippets=SNIPPETS,
         figures=registry.figure_outputs(),
         tables=["results/cross/table.tex", "results/blob/fig5_orders.tex"],
     output:
         report(
-            "paper/ms.pdf", caption=str(ROOT / "report" / "manuscript.rst"), category="Documents"
+            "paper/{document}.pdf", caption=str(ROOT / "report" / "documents.rst"), category="Documents"
         ),
     log:
-        "logs/manuscript.log",
+        "logs/{document}.log",
     benchmark:
-        "logs/benchmarks/manuscript.tsv"
+        "logs/benchmarks/{document}.tsv"
+    wildcard_constraints:
+        document="ms|supplement",
     conda:
         ENVIRONMENT
     threads: 1
@@ -263,11 +261,14 @@ rule manuscript:
         epoch=COMMIT["epoch"],
     shell:
         # The commit time as SOURCE_DATE_EPOCH: pdfTeX writes it as the creation date and the file
-        # identifier, so two builds from one commit are byte-identical.
+        # identifier, so two builds from one commit are byte-identical. Each document has its own
+        # directory under paper/build, so the two builds never share auxiliary files.
         "export SOURCE_DATE_EPOCH={params.epoch} FORCE_SOURCE_DATE=1 && "
-        "cp {input.source} paper/build/ms.tex && cd paper/build && "
-        "latexmk -pdf -interaction=nonstopmode -halt-on-error ms.tex > ../../{log} 2>&1 && "
-        "cp ms.pdf ../ms.pdf"
+        "mkdir -p paper/build/{wildcards.document} && "
+        "cp {input.source} {input.preamble} paper/build/{wildcards.document}/ && "
+        "cd paper/build/{wildcards.document} && "
+        "latexmk -pdf -interaction=nonstopmode -halt-on-error {wildcards.document}.tex > ../../../{log} 2>&1 && "
+        "cp {wildcards.document}.pdf ../../{wildcards.document}.pdf"
 
 
 rule verdicts:

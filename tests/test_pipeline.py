@@ -32,7 +32,8 @@ pytestmark = [pytest.mark.pipeline, pytest.mark.xdist_group("pipeline")]
 
 # What a clone holds besides the sources: never copied into the scratch repositories.
 GENERATED = shutil.ignore_patterns(".git", ".snakemake", "results", "figures", "logs", "runs", "executed", "build",
-                                   "ms.pdf", "__pycache__", "*.nbi", "*.nbc", ".hypothesis", ".pytest_cache")
+                                   "ms.pdf", "supplement.pdf", "__pycache__", "*.nbi", "*.nbc", ".hypothesis",
+                                   ".pytest_cache")
 
 
 def copy_repository(destination):
@@ -86,7 +87,7 @@ def workdir(repository):
 
 def test_the_quick_run_writes_under_its_own_root(repository):
     assert (repository / "runs/quick/results/claims.csv").is_file()
-    for generated in ("results", "figures", "logs", "paper/ms.pdf", "notebooks/executed"):
+    for generated in ("results", "figures", "logs", "paper/ms.pdf", "paper/supplement.pdf", "notebooks/executed"):
         assert not (repository / generated).exists(), f"the quick run wrote {generated} of the full run"
 
 
@@ -416,8 +417,8 @@ def test_report_pdf_is_built_where_latex_is_installed(workdir):
 
     if not (shutil.which("latexmk") and shutil.which("pdflatex")):
         pytest.skip("no LaTeX toolchain: the pipeline skips paper/ms.pdf and says how to install it")
-    pdf = workdir / "paper" / "ms.pdf"
-    assert pdf.read_bytes()[:5] == b"%PDF-" and pdf.stat().st_size > 100_000
+    for pdf in (workdir / "paper" / "ms.pdf", workdir / "paper" / "supplement.pdf"):
+        assert pdf.read_bytes()[:5] == b"%PDF-" and pdf.stat().st_size > 100_000, pdf.name
     measured = (workdir / "paper" / "build" / "generated" / "measured.tex").read_text()
     assert "measured@sticky.fig2d.order" in measured
 

@@ -4,8 +4,12 @@ import matplotlib.pyplot as plt
 import pytest
 
 from particle_replication.plotting import (
+    MIN_PRINTED_SIZE,
     PRINTED_FONTS,
     PRINTED_WIDTH,
+    SCRIPT_SCALE,
+    apply_style,
+    legible,
     mathtext,
     new_figure,
     save_figure,
@@ -76,3 +80,30 @@ def test_a_long_title_is_wrapped_to_the_figure(tmp_path):
     title = suptitle(fig, "K = |x|/2: " + "a long title of many words " * 8)
     assert len(title.get_text().split("\n")) >= 3
     assert title.get_window_extent(fig.canvas.get_renderer()).width <= fig.bbox.width
+
+
+def test_text_below_the_printed_floor_is_raised_on_saving(tmp_path):
+    fig, ax = new_figure(1, 1, width=2 * PRINTED_WIDTH, height=3.0)
+    ax.set_title("a title in points")
+    ax.title.set_fontsize(9)   # 4.5 pt as printed: a size that bypasses the module's scale
+    ax.text(0.5, 0.5, "$h^{q}$", fontsize="x-small")
+    ax.plot([0, 1], [0, 1], label="plain")
+    ax.legend(fontsize=1)
+    save_figure(fig, tmp_path / "f.pdf")
+    assert ax.title.get_fontsize() == pytest.approx(2 * MIN_PRINTED_SIZE)
+    assert ax.texts[0].get_fontsize() == pytest.approx(2 * MIN_PRINTED_SIZE / SCRIPT_SCALE)
+    assert ax.get_legend().get_texts()[0].get_fontsize() == pytest.approx(2 * MIN_PRINTED_SIZE)
+
+
+def test_text_above_the_floor_keeps_its_size():
+    fig, ax = new_figure(1, 1, width=PRINTED_WIDTH, height=3.0)
+    ax.set_xlabel("plain", fontsize=12)
+    assert "plain" not in legible(fig)
+    assert ax.xaxis.label.get_fontsize() == 12
+    plt.close(fig)
+
+
+@pytest.mark.parametrize("width", [0, -1.0, "6.5", None])
+def test_the_style_refuses_a_width_that_is_not_a_positive_number(width):
+    with pytest.raises(ValueError, match="width"):
+        apply_style(width)

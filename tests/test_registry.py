@@ -24,10 +24,20 @@ def test_readme_figure_map_is_the_generated_one():
 
 
 def test_report_shows_every_registered_figure_once():
-    tex = (ROOT / "paper" / "ms.tex").read_text()
-    shown = re.findall(r"\\fig(?:\[[0-9.]+\])?\{([a-z]+/[a-z0-9_]+)\.pdf\}", tex)
-    registered = [f"{paper.id}/{figure.name}" for paper in registry.PAPERS.values() for figure in paper.figures]
-    assert sorted(shown) == sorted(registered)
+    """The paper's figures in the report, with the paper's numbers (\\fig); ours, in the report or its supplement,
+    numbered apart (\\ourfig{k}: Figure Blob A1), k their order among the paper's figures of ours in the registry, so
+    that "Figure Blob 7" is always the paper's Figure 7."""
+    report = (ROOT / "paper" / "ms.tex").read_text()
+    supplement = (ROOT / "paper" / "supplement.tex").read_text()
+    figure = r"\{([a-z]+/[a-z0-9_]+)\.pdf\}"
+    papers = re.findall(r"\\fig(?:\[[0-9.]+\])?" + figure, report)
+    assert not re.findall(r"\\fig(?:\[[0-9.]+\])?" + figure, supplement), "the paper's figures belong in the report"
+    ours = re.findall(r"\\ourfig(?:\[[0-9.]+\])?\{(\d+)\}" + figure, report + supplement)
+    assert sorted(papers) == sorted(f"{paper.id}/{f.name}" for paper in registry.PAPERS.values()
+                                    for f in paper.figures if not f.ours)
+    expected = [(str(k), f"{paper.id}/{f.name}") for paper in registry.PAPERS.values()
+                for k, f in enumerate([f for f in paper.figures if f.ours], 1)]
+    assert sorted(ours) == sorted(expected)
 
 
 def test_every_notebook_shows_its_papers_figures():

@@ -100,6 +100,14 @@ def test_counts_tables_and_failures(snippets):
     assert snippets["fragile"].startswith("No spreads are recorded")  # the demo claims have no margins
 
 
+def test_the_report_lists_each_papers_own_claims_one_line_each(snippets):
+    body = snippets["paperclaims_demo"].split(r"\endlastfoot")[1]
+    assert body.count(r" \\") == 2
+    assert "fig1.\\allowbreak{}order} & Theorem 1 & \\ensuremath{2} & \\ensuremath{1.988} & pass & -" in body
+    assert r"\textbf{fail}" in body and "two peaks" not in body   # the statement is in the supplement
+    assert snippets["paperclaims_other"] == "This study states no claim of a paper.\n"   # checks only
+
+
 def test_rate_tables_mark_the_deciding_window(snippets):
     table = snippets["rates"]
     assert "demo.\\allowbreak{}fig1.\\allowbreak{}order} (t = 1)" in table

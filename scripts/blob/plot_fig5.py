@@ -25,13 +25,12 @@ def run(d, t, output):
             for (h0, h1), (e0, e1), value in zip(zip(h[:-1], h[1:]), zip(errors[:-1], errors[1:]),
                                                  pairwise_orders(h, errors)):
                 ax.annotate(f"{value:.2f}", (np.sqrt(h0 * h1), np.sqrt(e0 * e1)), xytext=(0, offset),
-                            textcoords="offset points", ha="center", fontsize="x-small", color=line.get_color())
+                            textcoords="offset points", ha="center", fontsize="small", color=line.get_color())
         ax.set(xlabel="$h$")
         label_h_axis(ax, h)
         ax.tick_params(axis="x", labelsize="small")
         ax.legend(loc="upper left", handlelength=1.8, labelspacing=0.25, borderaxespad=0.3)
         label_panel(ax, TITLES.get(label, label))
-        ax.title.set_fontsize(9)
     first = np.atleast_1d(axes)[0]
     low, high = first.get_ylim()
     first.set_ylim(low, high * (high / low) ** 0.4)   # room for the legends above the data

@@ -70,7 +70,7 @@ def colour_norm(values):
 def tidy_3d(ax, zlabel, y_ticks=True, aspect=None, zoom=1.15):
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
         axis.set_major_locator(MaxNLocator(3))
-    ax.tick_params(labelsize="x-small", pad=-1)
+    ax.tick_params(labelsize="small", pad=-1)
     ax.set_xlabel("$x$", labelpad=-5)
     ax.set_ylabel("$y$" if y_ticks else "", labelpad=-7)
     ax.set_zlabel(zlabel, labelpad=-6)
@@ -82,7 +82,7 @@ def tidy_3d(ax, zlabel, y_ticks=True, aspect=None, zoom=1.15):
 def colour_bar(fig, mappable, ax):
     """Colour bar as tall as the (equal-aspect) axes, right of it."""
     bar = fig.colorbar(mappable, cax=ax.inset_axes([1.04, 0.0, 0.06, 1.0]))
-    bar.ax.tick_params(labelsize="x-small")
+    bar.ax.tick_params(labelsize="small")
     bar.locator = MaxNLocator(4)
     bar.update_ticks()
 
@@ -90,11 +90,11 @@ def colour_bar(fig, mappable, ax):
 def run(d, shown, cfg, output):
     import matplotlib.pyplot as plt
 
-    from particle_replication.plotting import STYLE
+    from particle_replication.plotting import apply_style
 
-    plt.rcParams.update(STYLE)
     kernels = list(d["kernels"])
     columns = len(kernels)
+    apply_style(2.5 * columns)
     fig = plt.figure(figsize=(2.5 * columns, 8.8), constrained_layout=True)
     fig.get_layout_engine().set(h_pad=0.02, w_pad=0.06)
     grid = fig.add_gridspec(4, columns)

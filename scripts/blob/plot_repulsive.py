@@ -17,7 +17,7 @@ def run(d, output):
         ax.loglog(h, guide, "-", color="C3", lw=0.6, alpha=0.6, label=f"slope m q = {m * float(d['q']):g}")
         ax.axvspan(h[-1] / 1.2, h[base - 1] / 1.2, color="0.9", zorder=0, label="beyond the paper's h")
         ax.set(xlabel="h", ylabel=f"L1_h density error at t = {float(d['t']):g}")
-        ax.legend(fontsize="x-small", loc="lower right")
+        ax.legend(fontsize="small", loc="lower right")
         label_panel(ax, f"({'ab'[m == 6]}) m = {m}")
     suptitle(fig, r"$K = -|x|/2$: where the density error comes from")
     save_figure(fig, output.pdf, output.png)

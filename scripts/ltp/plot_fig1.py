@@ -9,7 +9,7 @@ from particle_replication.workflow import logged
 
 def run(p, output):
     s = np.linspace(-1.5, 1.5, p["points"])
-    fig, ax = new_figure(1, 1, width=6, height=3.5)
+    fig, ax = new_figure(1, 1, width=6, height=2.6)
     ax.plot(s, HAT(s), "-", color="C0", label="hat shape phi (2.12)")
     ax.plot(s, hat_biorthogonal_kernel(s), ":", color="C3", lw=2, label="bi-orthogonal kernel phi~")
     ax.axhline(0, color="0.6", lw=0.6)

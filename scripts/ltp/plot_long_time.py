@@ -54,7 +54,7 @@ def run(inputs, p, output):
     spread.set(ylabel="max x_k - min x_k", ylim=(0, None))
     lines = ax.get_legend_handles_labels()
     more = spread.get_legend_handles_labels()
-    ax.legend(lines[0] + more[0], lines[1] + more[1], fontsize="x-small", loc="lower left", bbox_to_anchor=(0.08, 0.02))
+    ax.legend(lines[0] + more[0], lines[1] + more[1], fontsize="small", loc="lower left", bbox_to_anchor=(0.08, 0.02))
     label_panel(ax, f"(d) Figure 8, W = {d8['label']}")
     suptitle(fig, "LTP paper, section 6.2: the long-time behaviour measured")
     save_figure(fig, output.pdf, output.png)

@@ -67,7 +67,7 @@ def figure3(d, output):
         ax.axhline(d["scan_ltp_fine"][column], color=colour, ls=":", label=f"LTP {name}, dt = {float(d['fine_dt']):g}")
     ax.axvline(float(d["scan_h"]) * np.exp(-2 * t), color="0.5", lw=0.8)
     ax.set(xlabel=r"SP width $\varepsilon$ (grey: LTP width $h e^{-2t}$)", ylabel=f"error at $t = {t:g}$")
-    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
+    ax.legend(fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
     label_panel(ax, f"(a) h = {float(d['scan_h']):g}")
     ax = axes[1]
     for column, name, colour in ((0, "L1", "C0"), (1, "Linf", "C3")):
@@ -75,13 +75,13 @@ def figure3(d, output):
         ax.loglog(d["h_values"], d["ltp_errors"][:, column], "s--", color=colour, label=f"LTP {name}")
     ax.set(xlabel="h", ylabel=f"error at t = {t:g}")
     hide_minor_log_labels(ax)
-    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
+    ax.legend(fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
     label_panel(ax, f"(b) dt = {float(d['dt']):g}, eps = h")
     ax = axes[2]
     for h, errors, marker in zip(d["dt_h"], d["dt_errors"], "os^v"):
         ax.loglog(d["dt_values"], errors[:, 0], marker + "-", ms=4, label=f"LTP L1, h = {h:g}")
     ax.set(xlabel="dt", ylabel=f"L1 error at t = {t:g}")
-    ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
+    ax.legend(fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1)
     label_panel(ax, "(c) error against dt at fixed h")
     suptitle(fig, "SP against LTP errors, W = x^2, data (6.1); the time step")
     save_figure(fig, output.fig3_pdf, output.fig3_png)

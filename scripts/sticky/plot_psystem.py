@@ -6,7 +6,7 @@ from particle_replication.workflow import load_results, logged
 
 
 def trajectories(d, title, output):
-    fig, ax = new_figure(1, 1, width=7, height=5.5)
+    fig, ax = new_figure(1, 1, width=7, height=3.8)
     path = d["trajectories"]
     ax.plot(path[:, MINUS], d["times"], color="tab:blue", lw=0.9)
     ax.plot(path[:, PLUS], d["times"], color="tab:red", lw=0.9)
@@ -24,7 +24,7 @@ def trajectories(d, title, output):
 
 
 def fields(d, title, output):
-    fig, axes = new_figure(2, 2, width=11, height=8)
+    fig, axes = new_figure(2, 2, width=11, height=6.6)
     panels = [("w_minus", "(a) w-"), ("w_plus", "(b) w+"), ("u", "(c) specific volume u"), ("v", "(d) velocity v")]
     for ax, (key, label) in zip(axes.flat, panels):
         mesh = ax.pcolormesh(d["field_x"], d["times"], d[key], shading="auto", rasterized=True)

@@ -8,7 +8,7 @@ from particle_replication.workflow import load_results, logged
 
 
 def run(d, case, title, output):
-    fig, axes = new_figure(2, 2, width=11, height=8.5)
+    fig, axes = new_figure(2, 2, width=11, height=7.2)
     ax = axes[0, 0]
     ax.plot(d["trajectories"], d["trajectory_times"], color="C0", lw=0.8)
     ax.set(xlabel="x", ylabel="t")

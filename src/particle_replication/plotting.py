@@ -13,9 +13,15 @@ from matplotlib.ticker import Formatter, LogFormatterSciNotation
 
 #: Width (inches) at which the report prints every figure, its text width: sizes below are as printed.
 PRINTED_WIDTH = 6.5
-#: Font sizes as printed (points): at least 6 pt for every text, "x-small" of 9 pt included (6.25 pt).
-PRINTED_FONTS = {"font.size": 9.0, "axes.titlesize": 9.0, "axes.labelsize": 9.0, "legend.fontsize": 7.5,
-                 "xtick.labelsize": 7.5, "ytick.labelsize": 7.5}
+#: The smallest text of a figure as printed (points), sub- and superscripts included.
+MIN_PRINTED_SIZE = 7.0
+#: Font sizes as printed (points). Mathtext draws sub- and superscripts at SCRIPT_SCALE of their text, so text
+#: that holds a formula needs MIN_PRINTED_SIZE / SCRIPT_SCALE (10 pt): :func:`save_figure` raises any text below
+#: its floor to it, relative sizes ("small") and sizes a script sets in points included.
+PRINTED_FONTS = {"font.size": 9.0, "axes.titlesize": 10.0, "axes.labelsize": 10.0, "legend.fontsize": 8.5,
+                 "xtick.labelsize": 8.0, "ytick.labelsize": 8.0}
+#: The size of mathtext's sub- and superscripts relative to their text (matplotlib's, as TeX's).
+SCRIPT_SCALE = 0.7
 #: Line and tick sizes as printed (points).
 PRINTED_LINES = {"lines.linewidth": 1.0, "lines.markersize": 4.0, "axes.linewidth": 0.6,
                  "xtick.major.width": 0.6, "ytick.major.width": 0.6, "xtick.major.size": 3.0, "ytick.major.size": 3.0,
@@ -31,10 +37,53 @@ STYLE = {
 def new_figure(rows: int = 1, columns: int = 1, width: float = 10.0, height: float = 4.0, **kwargs):
     """Figure and axes with the repository style applied. A figure ``width`` inches wide is printed
     PRINTED_WIDTH wide, so its fonts and lines are drawn width / PRINTED_WIDTH times their printed sizes;
-    scripts give other sizes relative to these ("small", "x-small"), never in points."""
+    scripts give other sizes relative to these ("small"), never in points; :func:`save_figure` raises any
+    text below the printed floor (:func:`legible`)."""
+    apply_style(width)
+    return plt.subplots(rows, columns, figsize=(width, height), constrained_layout=True, **kwargs)
+
+
+def apply_style(width: float) -> float:
+    """Set the repository style for a figure ``width`` inches wide, printed PRINTED_WIDTH wide; returns the
+    scale width / PRINTED_WIDTH from printed sizes to drawn ones (for figures built without :func:`new_figure`)."""
+    if not isinstance(width, (int, float)) or not width > 0:
+        raise ValueError(f"width must be a positive number of inches, got {width!r}")
     scale = width / PRINTED_WIDTH
     plt.rcParams.update(STYLE | {key: size * scale for key, size in (PRINTED_FONTS | PRINTED_LINES).items()})
-    return plt.subplots(rows, columns, figsize=(width, height), constrained_layout=True, **kwargs)
+    return scale
+
+
+def _has_script(text: str) -> bool:
+    """Whether ``text`` holds a mathtext formula with a sub- or superscript."""
+    return any(("^" in piece or "_" in piece) for piece in text.split("$")[1::2])
+
+
+def legible(fig) -> list[str]:
+    """Raise every text of ``fig`` below its floor as printed to that floor: MIN_PRINTED_SIZE, or MIN_PRINTED_SIZE /
+    SCRIPT_SCALE for text with a sub- or superscript, so that a size set in points, relative ("x-small") or from an
+    rc parameter cannot print smaller. The figure prints PRINTED_WIDTH wide as saved, that is with its tight
+    bounding box, which a legend or a label outside the axes makes wider than the figure: the floors follow that
+    width, measured by drawing the figure, again after raising texts (which can widen it), at most three times.
+    Returns the texts raised."""
+    from matplotlib.text import Text
+
+    raised = []
+    for _ in range(3):
+        fig.draw_without_rendering()
+        scale = max(fig.get_figwidth(), fig.get_tightbbox().width) / PRINTED_WIDTH
+        now = []
+        for text in fig.findobj(Text):
+            content = text.get_text()
+            if not text.get_visible() or not content.strip():
+                continue
+            floor = MIN_PRINTED_SIZE * scale / (SCRIPT_SCALE if _has_script(content) else 1.0)
+            if text.get_fontsize() < floor - 1e-9:
+                text.set_fontsize(floor)
+                now.append(content)
+        if not now:
+            break
+        raised += now
+    return raised
 
 
 #: Width of an average character of a title, in ems of its font (0.47 to 0.50 measured on the titles of
@@ -96,6 +145,7 @@ def save_figure(fig, pdf_path, png_path=None) -> None:
                                              (axis.get_minor_formatter(), axis.set_minor_formatter)):
                 if type(formatter) is LogFormatterSciNotation:
                     set_formatter(UnicodePowers(formatter))
+    legible(fig)
     fig.savefig(pdf_path)
     # The layout is fixed by the first save: the second one reuses it instead of solving it again.
     fig.set_layout_engine("none")

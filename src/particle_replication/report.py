@@ -2,7 +2,10 @@
 
 ``write_snippets(claims, rates, versions, config, outdir, expected)`` writes:
 
-- ``claims_<paper>.tex``: each paper's claims table (a longtable);
+- ``claims_<paper>.tex``: each paper's claims table, every kind with its statement (a longtable, for the
+  supplement);
+- ``paperclaims_<paper>.tex``: the paper's own claims of each paper, one line each: id, source, published,
+  measured, verdict, margin (a longtable, for the report);
 - ``measured.tex``: ``\\measured{<claim id>}``, ``\\published{<claim id>}``, ``\\tol{<claim id>}``,
   ``\\status{<claim id>}`` and ``\\margin{<claim id>}`` (in units of its spread over the robustness run's
   variants) for any claim;
@@ -139,6 +142,27 @@ def _claims_table(claims) -> str:
     return _CLAIM_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
 
 
+_PAPER_CLAIM_TABLE_HEAD = (
+    "\\begin{longtable}{@{}>{\\raggedright\\scriptsize}p{4.6cm}>{\\raggedright\\scriptsize}p{3.4cm}"
+    ">{\\raggedright}p{2.3cm}>{\\raggedright}p{2.3cm}>{\\raggedright}p{0.8cm}"
+    ">{\\raggedright\\arraybackslash}p{1.5cm}@{}}\n"
+    "\\toprule id & source & published & measured & verdict & margin \\\\ \\midrule \\endhead\n"
+    "\\bottomrule \\endlastfoot\n"
+)
+
+
+def _paper_claims_table(claims) -> str:
+    """A longtable of a paper's own claims, one line each: id, source, published, measured, verdict, margin (in
+    spreads over the robustness run's variants)."""
+    rows = []
+    for claim in claims:
+        status = {"fail": r"\textbf{fail}", "abstain": "abstains"}.get(claim.status, claim.status)
+        cells = [f"\\texttt{{{_breakable(claim.id.split('.', 1)[1])}}}", tex(claim.source), cell(claim.published),
+                 cell(claim.measured), status, cell(claim.margin or "-")]
+        rows.append(" & ".join(cells) + " \\\\\n")
+    return _PAPER_CLAIM_TABLE_HEAD + "".join(rows) + "\\end{longtable}\n"
+
+
 def _failures_table(rows) -> str:
     """A longtable of the failing claims (:func:`particle_replication.claims.failures_with_causes`):
     id, kind, cause, published, measured, reason."""
@@ -246,6 +270,9 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
             summary += _counts(f"{paper}.{kind}", [claim for claim in rows if claim.kind == kind])
         if paper != "all":
             (outdir / f"claims_{paper}.tex").write_text(_claims_table(rows))
+            own = [claim for claim in rows if claim.kind == "paper"]
+            (outdir / f"paperclaims_{paper}.tex").write_text(
+                _paper_claims_table(own) if own else "This study states no claim of a paper.\n")
     failures = failures_with_causes(claims, expected)
     (outdir / "failures.tex").write_text(_failures_table(failures) if failures else "No claim fails.\n")
     (outdir / "changes.tex").write_text(_changes_table(changes))
