@@ -39,8 +39,8 @@ print(summary("blob"))
 # ## Figures 1 to 3: K = |x|/2 in one dimension, where the exact solution is known
 #
 # The exact solution blows up at t = 1. Blob trajectories bend away from each other instead of
-# colliding; for t < 1 they converge at the rate m q (the claims below give its value). The particle method (grad K(0) := 0)
-# has straight trajectories and converges at about second order; discontinuous data converge
+# colliding; for t < 1 they converge at the rate m q (the claims below give its value). The particle
+# method (grad K(0) := 0) has straight trajectories and converges at about second order; discontinuous data converge
 # more slowly.
 
 # %%
@@ -127,7 +127,8 @@ show_figure("blob", 6)
 # the end state is a ring whose radius we derive for a uniform ring and check. For
 # |x|^7/7 - |x|^1.5/1.5 the ring is a long-lived transient that breaks up into three points (the
 # curve below that falls, rises and falls again). Figure 8's Morse states coarsen
-# slowly; run until every one is steady (the final times of config `blob.fig8.cases`), the large delta changes the end state of
+# slowly; run until every one is steady (the final times of config `blob.fig8.cases`), the large delta
+# changes the end state of
 # 2e^-|x| - 2e^-|x|/2 with regular data several times more than the others, as the paper says, and
 # the paper's coarse radial tables (`paper_tables` in the config) give the same end states as ours.
 

@@ -133,6 +133,8 @@ REPORT_PAGES = {
 }
 REPORT_PAGE_FILES = expand("results/report/{page}.html", page=REPORT_PAGES)
 NOTEBOOK_PAGES = expand("notebooks/executed/{paper}.html", paper=NOTEBOOK_INPUTS)
+
+
 rule report_page:
     """A Markdown result of the run (the claims table, the versions) as an HTML page of the report."""
     input:
@@ -246,7 +248,9 @@ rule manuscript:
         tables=["results/cross/table.tex", "results/blob/fig5_orders.tex"],
     output:
         report(
-            "paper/{document}.pdf", caption=str(ROOT / "report" / "documents.rst"), category="Documents"
+            "paper/{document}.pdf",
+            caption=str(ROOT / "report" / "documents.rst"),
+            category="Documents",
         ),
     log:
         "logs/{document}.log",

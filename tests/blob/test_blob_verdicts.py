@@ -65,7 +65,8 @@ def blob_run(trajectory=4 * Q, density=4 * Q, paths=TURNING, energies=-1.0 - 0.1
     """Figure 1: errors C h^order; trajectories that contract but turn away from the exact collision."""
     trajectory_errors, density_errors = 0.1 * H**trajectory, 2.0 * H**density
     return with_densities({"h_values": H, "fit_points": 3, "q": Q, "order": 4, "h": 0.2,
-            "trajectory_errors": trajectory_errors, "density_errors": density_errors, "times": TIMES, "positions": paths,
+            "trajectory_errors": trajectory_errors, "density_errors": density_errors, "times": TIMES,
+            "positions": paths,
             "exact_times": EXACT_TIMES,
             "exact_paths": EXACT, "tight_errors": np.array([trajectory_errors[-1], density_errors[-1]]) * (1 + 1e-6),
             "energies": energies, "mass_defect": 1e-10}, peak, EXACT_PEAK)
