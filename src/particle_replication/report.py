@@ -107,6 +107,8 @@ def cell(text) -> str:
 
 
 def _flatten(tree, prefix=""):
+    """(dotted key, text) for every value of a configuration tree; a list of scalars is one comma-separated
+    value, and a list of cases also yields each field common to the cases as such a list."""
     if isinstance(tree, dict):
         for key, value in tree.items():
             yield from _flatten(value, f"{prefix}{key}.")
@@ -115,6 +117,13 @@ def _flatten(tree, prefix=""):
     elif isinstance(tree, list):
         for index, value in enumerate(tree):
             yield from _flatten(value, f"{prefix}{index}.")
+        if all(isinstance(value, dict) for value in tree):
+            # a list of cases also gives each field over the cases (``ltp.fig6.cases.b``), so that a text lists
+            # them without knowing how many a configuration has
+            for field in sorted(set.intersection(*(set(value) for value in tree))) if tree else ():
+                values = [value[field] for value in tree]
+                if all(not isinstance(v, (dict, list)) for v in values):
+                    yield from _flatten(values, f"{prefix}{field}.")
     else:
         yield prefix[:-1], f"{tree:.6g}" if isinstance(tree, float) else str(tree)
 
