@@ -79,6 +79,7 @@ def test_every_claim_value_and_parameter_gets_a_macro(snippets):
     parameters = definitions(snippets["parameters"])
     assert parameters == {"param@demo.fig1.h": r"\ensuremath{0.1}, \ensuremath{0.05}",
                           "param@demo.fig1.kernel": r"cubic\_b", "param@demo.cases.0.t": r"\ensuremath{2}",
+                          "param@demo.cases.t": r"\ensuremath{2}",
                           "param@robustness.margin_min": r"\ensuremath{10}"}
 
 

@@ -108,7 +108,7 @@ def cell(text) -> str:
 
 def _flatten(tree, prefix=""):
     """(dotted key, text) for every value of a configuration tree; a list of scalars is one comma-separated
-    value, and a list of cases also yields each field common to the cases as such a list."""
+    value."""
     if isinstance(tree, dict):
         for key, value in tree.items():
             yield from _flatten(value, f"{prefix}{key}.")
@@ -117,15 +117,22 @@ def _flatten(tree, prefix=""):
     elif isinstance(tree, list):
         for index, value in enumerate(tree):
             yield from _flatten(value, f"{prefix}{index}.")
-        if all(isinstance(value, dict) for value in tree):
-            # a list of cases also gives each field over the cases (``ltp.fig6.cases.b``), so that a text lists
-            # them without knowing how many a configuration has
-            for field in sorted(set.intersection(*(set(value) for value in tree))) if tree else ():
-                values = [value[field] for value in tree]
-                if all(not isinstance(v, (dict, list)) for v in values):
-                    yield from _flatten(values, f"{prefix}{field}.")
     else:
         yield prefix[:-1], f"{tree:.6g}" if isinstance(tree, float) else str(tree)
+
+
+def _case_fields(tree, prefix=""):
+    """(dotted key, text) for each scalar field common to a list of cases, over the cases
+    (``ltp.fig6.cases.b``: "1.1, 1.5, 2.5"), so that a text lists them without knowing how many a
+    configuration has."""
+    if isinstance(tree, dict):
+        for key, value in tree.items():
+            yield from _case_fields(value, f"{prefix}{key}.")
+    elif isinstance(tree, list) and tree and all(isinstance(value, dict) for value in tree):
+        for field in sorted(set.intersection(*(set(value) for value in tree))):
+            values = [value[field] for value in tree]
+            if all(not isinstance(value, (dict, list)) for value in values):
+                yield from _flatten(values, f"{prefix}{field}.")
 
 
 def _breakable(identifier: str) -> str:
@@ -299,7 +306,8 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
     (outdir / "summary.tex").write_text("".join(summary))
     (outdir / "rates.tex").write_text("".join(_rate_table(rate) for rate in read_rates(rates_json)))
     parameters = list(_flatten(config))
-    (outdir / "parameters.tex").write_text("".join(_define("param", key, cell(text)) for key, text in parameters))
+    (outdir / "parameters.tex").write_text("".join(_define("param", key, cell(text))
+                                                   for key, text in [*parameters, *_case_fields(config)]))
     (outdir / "configuration.tex").write_text("".join(
         f"\\noindent\\texttt{{{_breakable(key)}}} = {cell(text)}\\par\n" for key, text in parameters))
     lines = Path(versions_md).read_text().splitlines()
