@@ -226,6 +226,7 @@ RESULTS = (
 
 PAPER = Paper(
     id="ltp",
+    name="LTP",
     plots=(
         Plot(
             "plot_fig1.py",
