@@ -64,7 +64,7 @@ def test_labels_number_ours_apart():
     with pytest.raises(ValueError, match="figure must be one of"):
         blob.label("fig9")
     with pytest.raises(ValueError, match="fig<number>"):
-        registry.Paper("x", "X", (registry.Plot("p.py", (registry.Figure("wrong", "w", str),)),), (), ()).numbers
+        _ = registry.Paper("x", "X", (registry.Plot("p.py", (registry.Figure("wrong", "w", str),)),), (), ()).numbers
 
 
 def test_every_notebook_shows_its_papers_figures():
