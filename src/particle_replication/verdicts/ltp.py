@@ -333,8 +333,8 @@ def fig5_claims(d, p, rules):
               f"(extrapolated collapse times {', '.join(f'{v:.4g}' for v in times)}; 0 for exponential shrinking)",
               collapse["slope_max"], float(slopes.max()), published="finite-time blow-up"),
         claim(c.at_most, "fig5.collapse_time_stable", "check", "Figure 5: the measure does not depend on the stop",
-              "5", f"a = {_last_exponent(blowup):g}: the collapse times extrapolated from the successive windows agree: "
-              "their spread over their mean", collapse["spread_max"], spread),
+              "5", f"a = {_last_exponent(blowup):g}: the collapse times extrapolated from the successive windows "
+              "agree: their spread over their mean", collapse["spread_max"], spread),
         claim(c.at_least, "fig5.no_blowup_a2.5", "paper", "Figure 5, section 6.2", "5",
               f"W = {smooth}: no finite-time blow-up in Linf: smallest slope of g over the windows {shown} (slopes "
               f"{', '.join(f'{v:.3g}' for v in measured[cases[1]][0])}; negative would extrapolate to a collapse)",
@@ -404,8 +404,8 @@ def fig6_claims(d, rates: Recorder, q, rules):
     left, right = weights[centres < -middle].sum(), weights[centres > middle].sum()
     out.append(claim(c.at_most, "fig6.b2.5_equal_split", "check", "Figure 6: equal masses, by symmetry of (6.2)",
                      "6", f"{concentrating}: the two masses are equal (symmetric data and even W: true by symmetry, "
-                     "hence a check): |left mass - right mass| (a particle at 0 counted on neither side)", rules["equal_split"],
-                     float(abs(left - right))))
+                     "hence a check): |left mass - right mass| (a particle at 0 counted on neither side)",
+                     rules["equal_split"], float(abs(left - right))))
     times = d[f"case{b15}_times"]
     masses = d[f"case{b15}_concentration_masses"]
     changes, checked = d[f"case{b15}_profile_changes"], d[f"case{b15}_profile_times"]
@@ -432,9 +432,9 @@ def fig6_claims(d, rates: Recorder, q, rules):
 
 
 def _edges_diverge(d, times, rates: Recorder, q, rules, case: str):
-    """Figure 6, the ``case`` of the edge refinement (the paper's b = 1.5), "seemingly diverging at the boundary of the support": the largest density (at the
-    centres) of the settled profile grows under refinement of h, at least like h^-edge_divergence_min (a
-    bounded profile's peaks converge). Read at the end of the runs, a time common to every h once each has
+    """Figure 6, the ``case`` of the edge refinement (the paper's b = 1.5), "seemingly diverging at the boundary
+    of the support": the largest density (at the centres) of the settled profile grows under refinement of h, at
+    least like h^-edge_divergence_min (a bounded profile's peaks converge). Read at the end of the runs, a time common to every h once each has
     settled by the width criterion (the peaks still rise after it); unmeasured (-inf) if a run does not settle."""
     h, peaks = d["edge_h"], d["edge_peaks"]
     steady = [_steady_time(times, widths, q) for widths in d["edge_widths"]]
