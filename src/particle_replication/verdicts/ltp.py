@@ -434,8 +434,9 @@ def fig6_claims(d, rates: Recorder, q, rules):
 def _edges_diverge(d, times, rates: Recorder, q, rules, case: str):
     """Figure 6, the ``case`` of the edge refinement (the paper's b = 1.5), "seemingly diverging at the boundary
     of the support": the largest density (at the centres) of the settled profile grows under refinement of h, at
-    least like h^-edge_divergence_min (a bounded profile's peaks converge). Read at the end of the runs, a time common to every h once each has
-    settled by the width criterion (the peaks still rise after it); unmeasured (-inf) if a run does not settle."""
+    least like h^-edge_divergence_min (a bounded profile's peaks converge). Read at the end of the runs, a time
+    common to every h once each has settled by the width criterion (the peaks still rise after it); unmeasured
+    (-inf) if a run does not settle."""
     h, peaks = d["edge_h"], d["edge_peaks"]
     steady = [_steady_time(times, widths, q) for widths in d["edge_widths"]]
     if not all(math.isfinite(t) for t in steady):
