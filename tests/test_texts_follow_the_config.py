@@ -202,3 +202,24 @@ def test_cross_claim_texts_follow_the_run():
     found = [(i, v, text.replace(citation, "")) for i, v, text in stale(claims, old)]
     assert not [entry for entry in found if shown(entry[1], entry[2])], found
     assert any("t = 1.3" in claim.claim for claim in claims) and any("q = 0.8" in claim.claim for claim in claims)
+
+
+def _reasons(entry):
+    if isinstance(entry, dict):
+        for key, value in entry.items():
+            yield from [value] if key == "reason" else _reasons(value)
+    elif isinstance(entry, list):
+        for value in entry:
+            yield from _reasons(value)
+
+
+def test_expected_verdict_reasons_type_no_run_value():
+    """The reasons of config/verdicts.yaml (the README shows the full run's) name no parameter's or measure's value:
+    a value that follows the run is in the claim's text. The blow-up time t = 1 of the blob paper's data (4.3),
+    the mathematics of the data, stays."""
+    verdicts = yaml.safe_load((ROOT / "config" / "verdicts.yaml").read_text())
+    typed = re.compile(r"(?<![\w.])(t|h|n|1/h|t_max|x0|dt|eps|m q|a|b|q) ?(=|<=|>=|<|>) ?\d|about \d"
+                       r"|\d+ (cells|particles|ms|s|widths|runs)\b|\d+\.\d+(?!\))")
+    found = [(match.group(0), reason) for reason in _reasons(verdicts)
+             for match in typed.finditer(reason.replace("t = 1 - dt", "the blow-up time minus dt"))]
+    assert not found, found
