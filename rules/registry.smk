@@ -10,7 +10,8 @@ OURS = "our own study, not a figure of the paper"
 def plot_outputs(paper, plot):
     """PDF and PNG of each figure of a plot job (``pdf``/``png``, or ``<figure>_pdf``/``<figure>_png``
     for a job that draws several); each PNG goes to the Snakemake report with its caption, under its
-    paper's figures, its own figures marked "(ours)"."""
+    paper's figures, labelled as the PDF report labels it (the registry's ``Paper.label``: Figure Blob 7,
+    and ours numbered apart, Figure Blob A1)."""
     outputs = {}
     for entry in plot.figures:
         prefix = "" if len(plot.figures) == 1 else f"{entry.name}_"
@@ -20,18 +21,18 @@ def plot_outputs(paper, plot):
             f"{path}.png",
             caption=CAPTION,
             category=f"Figures ({paper.id})",
-            subcategory=f"{entry.name} (ours)" if entry.ours else entry.name,
+            subcategory=paper.label(entry.name),
         )
     return outputs
 
 
 def plot_parameters(paper, plot):
-    """The plot job's params: the captions (for the report, each of our own figures saying so), the
-    figure's name and title when it draws one figure, and the job's own parameters from the paper's
-    section of the config."""
+    """The plot job's params: the captions (for the report, each led by the figure's label, ours saying
+    so), the figure's name and title when it draws one figure, and the job's own parameters from the
+    paper's section of the config."""
     section = config[paper.id]
     captions = [
-        f"{entry.name} ({OURS}): {entry.caption(section)}" if entry.ours else entry.caption(section)
+        f"{paper.label(entry.name)}" + (f" ({OURS})" if entry.ours else "") + f". {entry.caption(section)}"
         for entry in plot.figures
     ]
     parameters = {"caption": " ".join(captions)}

@@ -490,7 +490,9 @@ def test_browsable_report_shows_the_claims_table_and_a_figure_in_chromium(workdi
         assert any(name.endswith(shipped) for name in names), shipped
     page = (tmp_path / "report" / "report.html").as_uri()
     claims = list(csv.DictReader((workdir / "results" / "claims.csv").open()))
-    ours = next(f"{entry.name} (ours)" for entry in registry.PAPERS["blob"].figures if entry.ours)
+    blob = registry.PAPERS["blob"]
+    name = next(entry.name for entry in blob.figures if entry.ours)
+    ours = blob.label(name)  # Figure Blob A1, as the PDF labels it
     with chromium.Browser() as browser:
         browser.open(page)
         landing = browser.evaluate("document.body.innerText")
@@ -509,7 +511,7 @@ def test_browsable_report_shows_the_claims_table_and_a_figure_in_chromium(workdi
         assert claims[0]["id"] in text and "\\|" not in text
         browser.screenshot(tmp_path / "claims.png")
         browser.open(page)
-        figure = ours.split(" ")[0] + ".png"
+        figure = name + ".png"
         browser.evaluate(f"(async () => {{ {NAVIGATION} await menu('Figures (blob)'); await menu('{ours}'); "
                          f"await view('{figure}'); }})()")
         natural, shown = browser.evaluate(

@@ -21,23 +21,50 @@ def test_readme_figure_map_is_the_generated_one():
     found = re.search(r"<!-- figure map:.*?-->\n(.*?)\n<!-- end of the figure map -->", readme, flags=re.DOTALL)
     assert found, "README.md has lost the markers of its figure map"
     assert found.group(1) == registry.figure_map(), "run `python -m particle_replication.registry` into README.md"
+    assert "| blob | A1 (`repulsive`) |" in found.group(1)
 
 
-def test_report_shows_every_registered_figure_once():
-    """The paper's figures in the report, with the paper's numbers (\\fig); ours, in the report or its supplement,
-    numbered apart (\\ourfig{k}: Figure Blob A1), k their order among the paper's figures of ours in the registry, so
-    that "Figure Blob 7" is always the paper's Figure 7."""
-    report = (ROOT / "paper" / "ms.tex").read_text()
-    supplement = (ROOT / "paper" / "supplement.tex").read_text()
-    figure = r"\{([a-z]+/[a-z0-9_]+)\.pdf\}"
-    papers = re.findall(r"\\fig(?:\[[0-9.]+\])?" + figure, report)
-    assert not re.findall(r"\\fig(?:\[[0-9.]+\])?" + figure, supplement), "the paper's figures belong in the report"
-    ours = re.findall(r"\\ourfig(?:\[[0-9.]+\])?\{(\d+)\}" + figure, report + supplement)
-    assert sorted(papers) == sorted(f"{paper.id}/{f.name}" for paper in registry.PAPERS.values()
-                                    for f in paper.figures if not f.ours)
-    expected = [(str(k), f"{paper.id}/{f.name}") for paper in registry.PAPERS.values()
-                for k, f in enumerate([f for f in paper.figures if f.ours], 1)]
-    assert sorted(ours) == sorted(expected)
+def printed_labels(source: str) -> list[tuple[str, str]]:
+    """(label, figure) of every figure of a LaTeX source, as LaTeX numbers them (paper/preamble.tex): after
+    \\paperfigures{Blob} the k-th \\fig prints Figure Blob k (a counter), \\ourfig{k} prints Figure Blob Ak."""
+    labels, name, counter = [], None, 0
+    pattern = r"\\paperfigures\{(\w+)\}|\\(fig|ourfig)(?:\[[0-9.]+\])?(?:\{(\d+)\})?\{([a-z]+/[a-z0-9_]+)\.pdf\}"
+    for match in re.finditer(pattern, source):
+        if match.group(1):
+            name, counter = match.group(1), 0
+        elif match.group(2) == "fig":
+            counter += 1
+            labels.append((f"Figure {name} {counter}", match.group(4)))
+        else:
+            labels.append((f"Figure {name} A{match.group(3)}", match.group(4)))
+    return labels
+
+
+def test_report_labels_every_registered_figure_as_the_registry_does():
+    """Every registered figure printed once, the paper's in the report (\\fig), ours in the report or its
+    supplement (\\ourfig{k}), each under the registry's label (Paper.label: Figure Blob 7 is the paper's Figure 7,
+    ours numbered apart, Figure Blob A1, in registry order), which the README's figure map, the HTML report and the
+    notebooks show."""
+    report = printed_labels((ROOT / "paper" / "ms.tex").read_text())
+    supplement = printed_labels((ROOT / "paper" / "supplement.tex").read_text())
+    names = {paper.name: paper for paper in registry.PAPERS.values()}
+    printed = sorted(figure for _, figure in report + supplement)
+    assert printed == sorted(f"{paper.id}/{f.name}" for paper in registry.PAPERS.values() for f in paper.figures)
+    for label, figure in report + supplement:
+        paper_id, name = figure.split("/")
+        paper = names[label.split(" ")[1]]
+        assert paper.id == paper_id and label == paper.label(name), (label, figure)
+    assert all(" A" in label for label, _ in supplement), "the paper's figures belong in the report"
+
+
+def test_labels_number_ours_apart():
+    blob = registry.PAPERS["blob"]
+    assert blob.label("fig5") == "Figure Blob 5" and blob.label("repulsive") == "Figure Blob A1"
+    assert [blob.numbers[f.name] for f in blob.figures if f.ours] == ["A1", "A2"]
+    with pytest.raises(ValueError, match="figure must be one of"):
+        blob.label("fig9")
+    with pytest.raises(ValueError, match="fig<number>"):
+        _ = registry.Paper("x", "X", (registry.Plot("p.py", (registry.Figure("wrong", "w", str),)),), (), ()).numbers
 
 
 def test_every_notebook_shows_its_papers_figures():

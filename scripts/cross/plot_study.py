@@ -15,17 +15,18 @@ STYLES = {
     "SPD, grid weights": ("C1", "s", "-"),
     "particle method": ("C2", "^", "--"),
     "Godunov for F": ("C3", "D", "-"),
-    "blob, m = 4": ("C4", "v", "-"),
-    "blob, m = 6": ("C5", "<", "-"),
     "LTP": ("C6", ">", "-"),
     "SP": ("C7", "p", "-"),
 }
+#: The blob methods, one per mollifier order of the config ("blob, m = <m>"), in the order the study lists them.
+BLOB_STYLES = (("C4", "v", "-"), ("C5", "<", "-"), ("C8", "*", "-"), ("C9", "h", "-"))
 TITLES = {"smooth20": "(4.3) (1 - x^2)^20", "indicator": "(4.4) indicator of [-1, 1]"}
 
 
 def run(d, p, figure, output):
     data, times = p["data"], p["times"]
     every = cases(d)
+    styles = {**STYLES, **dict(zip([m for m in map(str, d["methods"]) if m.startswith("blob, ")], BLOB_STYLES))}
     fig, axes = new_figure(len(data), len(times), width=11, height=8.5, squeeze=False)
     for i, name in enumerate(data):
         for j, t in enumerate(times):
@@ -35,7 +36,7 @@ def run(d, p, figure, output):
                 if (name, t, method) not in every:
                     continue
                 _, counts, errors, seconds = series(d, name, t, method)
-                colour, marker, line = STYLES.get(method, ("k", "x", "-"))
+                colour, marker, line = styles.get(method, ("k", "x", "-"))
                 # The equal-mass SPD often lies on the grid SPD: smaller markers on top, so both show.
                 size, order = (2.5, 3) if method == "SPD, equal masses" else (4.5, 2)
                 x = counts if figure == "error_size" else seconds

@@ -23,7 +23,7 @@ def figure2(d, output):
         errors = d["ltp_errors"][:, column]
         order = fit_order(d["h_values"][-k:], errors[-k:])
         ax.loglog(d["h_values"], errors, marker + "-", label=f"LTP {name} error (order {order:.2f})")
-    ax.set(xlabel="h", ylabel="error at t = 0.5")
+    ax.set(xlabel="h", ylabel=f"error at t = {float(d['t']):g}")
     hide_minor_log_labels(ax)
     ax.legend()
     label_panel(ax, "(b) LTP errors against h")

@@ -10,6 +10,7 @@ import re
 
 from IPython.display import Image, Markdown, display
 
+from . import registry
 from .claims import Claim, markdown_table, read_claims, summary_line
 from .paths import FIGURES, RESULTS
 
@@ -26,10 +27,18 @@ def paper_claims(paper: str) -> list[Claim]:
 
 def show_figure(paper: str, figure: int | str) -> None:
     """Display a figure of ``paper``, by the paper's number (``2`` for ``fig2``) or by its name in
-    the registry (``"long_time"``), and the table of the claims checked on a numbered figure."""
+    the registry (``"long_time"``), under its label as the report prints it (Figure Blob 4, and ours
+    numbered apart: Figure Blob A1, :attr:`particle_replication.registry.Paper.numbers`), and the table of the
+    claims checked on a numbered figure."""
     if isinstance(figure, bool) or not isinstance(figure, int | str):
         raise TypeError(f"figure must be a figure number or name, got {figure!r}")
-    display(Image(filename=str(FIGURES / paper / (f"fig{figure}" if isinstance(figure, int) else figure)) + ".png"))
+    if paper not in registry.PAPERS:
+        raise ValueError(f"paper must be one of {sorted(registry.PAPERS)}, got {paper!r}")
+    entry = registry.PAPERS[paper]
+    name = f"fig{figure}" if isinstance(figure, int) else figure
+    ours = next((f.ours for f in entry.figures if f.name == name), False)
+    display(Markdown(f"**{entry.label(name)}**" + (", a study of ours, not a figure of the paper" if ours else "")))
+    display(Image(filename=str(FIGURES / paper / name) + ".png"))
     if not isinstance(figure, int):
         return
     claims = [claim for claim in paper_claims(paper) if figure in figures_of(claim)]

@@ -403,7 +403,7 @@ def test_fig6_equal_split_check_fails_on_unequal_masses():
 
 def fig7(widths=SHRINKING, masses=GATHERING):
     return {"record_times": TIMES, "concentration_widths": both_sides(widths),
-            "concentration_masses": both_sides(masses)}
+            "concentration_masses": both_sides(masses), "label": "|x|^3/3 - |x|^2.5/2.5"}
 
 
 def test_fig7_claims_pass_on_dirac_masses():
@@ -429,7 +429,7 @@ def test_fig7_concentrates_verdict_does_not_depend_on_where_the_run_stops(end):
     # Shrinking that speeds up, as measured (rates growing with t): the verdict is the same for every run end.
     keep = TIMES <= end
     data = {"record_times": TIMES[keep], "concentration_widths": both_sides(0.4 * np.exp(-0.002 * TIMES[keep] ** 2)),
-            "concentration_masses": both_sides(GATHERING[keep])}
+            "concentration_masses": both_sides(GATHERING[keep]), "label": "|x|^3/3 - |x|^2.5/2.5"}
     assert status(v.fig7_claims(data, CONCENTRATION), "fig7.concentrates") == "pass"
 
 

@@ -51,8 +51,9 @@ def result(path) -> Result | None:
 
 def figure_map(config=None) -> str:
     """The README's figure map for a configuration (the full run's, ``config/config.yaml``, by default):
-    every figure, what it shows, the rules that compute its data (with their scripts) and the rule that
-    draws it, as a Markdown table."""
+    every figure, by its number as the report prints it (:attr:`~.records.Paper.numbers`: the paper's, or A1,
+    A2, ... for ours) and its file's name, what it shows, the rules that compute its data (with their scripts)
+    and the rule that draws it, as a Markdown table."""
     if config is None:
         import yaml
 
@@ -66,7 +67,7 @@ def figure_map(config=None) -> str:
             sources = ", ".join(_computed_by(entries[path]) for path in plot.data.values()) or "-"
             for figure in plot.figures:
                 label = figure.describe(config[paper.id]).replace("|", "\\|")
-                name = f"{figure.name} (ours)" if figure.ours else figure.name
+                name = f"{paper.numbers[figure.name]} (`{figure.name}`)"
                 rows.append(f"| {paper.id} | {name} | {label} | {sources} | `{plot.rule(paper.id)}` |")
     return "\n".join(rows)
 

@@ -193,6 +193,7 @@ RESULTS = (
 
 PAPER = Paper(
     id="blob",
+    name="Blob",
     plots=(
         _newtonian(
             "fig1",

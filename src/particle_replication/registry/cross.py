@@ -123,6 +123,7 @@ def _aggregates_figure(case: str, about: str) -> Plot:
 
 PAPER = Paper(
     id="cross",
+    name="Cross",
     plots=(
         _study(
             "error_size",

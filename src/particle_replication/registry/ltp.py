@@ -226,6 +226,7 @@ RESULTS = (
 
 PAPER = Paper(
     id="ltp",
+    name="LTP",
     plots=(
         Plot(
             "plot_fig1.py",
@@ -275,6 +276,7 @@ PAPER = Paper(
                 ),
             ),
             data={"data": "results/ltp/fig4.npz"},
+            params=lambda s: {"t": s["fig4"]["t"], "dt": s["fig4"]["dt"]},
         ),
         _rows("fig5", lambda s: f"abs(x)^a/a, a = {listing(case['a'] for case in s['fig5']['cases'])}",
               lambda s: "|x|^a/a", "a"),

@@ -4,6 +4,7 @@ of the configuration, so that a figure's text follows the values it was computed
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
@@ -109,10 +110,11 @@ class Result:
 
 @dataclass(frozen=True)
 class Paper:
-    """A paper's entry: its plot jobs, its result files, and the result files its notebook
-    (``notebooks/<id>.py``) reads besides its claims table."""
+    """A paper's entry: its name in figure labels (``Blob``: Figure Blob 7), its plot jobs, its result files,
+    and the result files its notebook (``notebooks/<id>.py``) reads besides its claims table."""
 
     id: str
+    name: str
     plots: tuple[Plot, ...]
     results: tuple[Result, ...]
     notebook: tuple[str, ...]
@@ -120,6 +122,30 @@ class Paper:
     @property
     def figures(self) -> tuple[Figure, ...]:
         return tuple(figure for plot in self.plots for figure in plot.figures)
+
+    @property
+    def numbers(self) -> dict[str, str]:
+        """Each figure's number, by name: a figure of the paper keeps the paper's (``fig7``: ``7``); ours are
+        numbered apart, ``A1``, ``A2``, ... in registry order, so they never shift the paper's numbers. The
+        report's ``\\ourfig{k}`` numbers, the README's figure map, the HTML report and the notebooks all
+        show these."""
+        numbers, ours = {}, 0
+        for figure in self.figures:
+            if figure.ours:
+                ours += 1
+                numbers[figure.name] = f"A{ours}"
+            else:
+                numbered = re.fullmatch(r"fig([1-9]\d*)", figure.name)
+                if numbered is None:
+                    raise ValueError(f"{self.id}: a figure of the paper is named fig<number>, got {figure.name!r}")
+                numbers[figure.name] = numbered.group(1)
+        return numbers
+
+    def label(self, figure: str) -> str:
+        """A figure's label, as the report prints it: ``Figure Blob 7``, ``Figure Blob A1``."""
+        if figure not in self.numbers:
+            raise ValueError(f"figure must be one of {self.id}'s {sorted(self.numbers)}, got {figure!r}")
+        return f"Figure {self.name} {self.numbers[figure]}"
 
     def claim_inputs(self) -> dict[str, str]:
         """The result files its claims are measured on, by file stem: every registered file but

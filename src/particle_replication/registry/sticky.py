@@ -332,6 +332,7 @@ RESULTS = (
 
 PAPER = Paper(
     id="sticky",
+    name="Sticky",
     plots=(
         Plot(
             "plot_fig1.py",

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import functools
 import math
+import re
 
 import numpy as np
 
@@ -29,13 +30,20 @@ PAPER = "ltp"
 claim = functools.partial(c.claim, PAPER)
 
 
-def _case(d, suffix):
-    """Index of the case whose label ends with ``suffix`` (the potential's last term)."""
-    labels = [str(label) for label in d["labels"]]
-    matches = [i for i, label in enumerate(labels) if label.endswith(suffix)]
-    if not matches:
-        raise ValueError(f"no case ending with {suffix!r} among {labels}")
-    return matches[0]
+def _last_exponent(label) -> float:
+    """The exponent of a potential's last term, from its label (``|x|^3/3 - |x|^2.5/2.5``: 2.5)."""
+    found = re.fullmatch(r".*\|x\|\^([0-9.e+-]+)/\1", str(label))
+    if found is None:
+        raise ValueError(f"label must end with a power term |x|^a/a, got {label!r}")
+    return float(found.group(1))
+
+
+def _extreme_cases(d) -> tuple[int, int]:
+    """Indices of the cases with the smallest and the largest exponent of the last term (Figure 5's a, Figure 6's
+    b): the roles of the paper's cases (a = 1.5 collapses in finite time, a = 2.5 does not; b = 2.5 concentrates),
+    read from the labels of the run, so that the texts follow the config."""
+    exponents = [_last_exponent(label) for label in d["labels"]]
+    return int(np.argmin(exponents)), int(np.argmax(exponents))
 
 
 def quadratic_claims(d, rates: Recorder, p, rules):
@@ -173,8 +181,8 @@ def nonaffine_claims(d, rates: Recorder, p, rules):
     for column, norm in ((0, "l1"), (1, "linf")):
         slope = rates.add(order(f"{PAPER}.nonaffine.order_{norm}", "h", h, d["errors"][:, column], k))
         out.append(claim(c.at_least, f"nonaffine.order_{norm}", "derived",
-                         "Theorem 4 (W = |x|^1.5/1.5 satisfies (5.2), alpha = -1/2, p = infinity) without its "
-                         "dt <~ h^2",
+                         f"Theorem 4 (W = {d['label']} satisfies (5.2), alpha = 1 - a = {1.0 - p['a']:g}, p = "
+                         "infinity) without its dt <~ h^2",
                          "(ours)",
                          f"W = {d['label']} from (6.1), not an affine flow: LTP {norm.upper()} error at t = "
                          f"{float(d['t']):g} against a run with h = {float(d['reference_h']):g} at the same dt = "
@@ -208,7 +216,8 @@ def theorem4_claims(d, rates: Recorder, p, rules):
     between neighbouring h must all be at least 1 - tolerance (an error C h^q gives distances C (1 - 2^-q) h^q)."""
     h, times = d["theorem4_h"], d["theorem4_times"]
     tolerance = float(rules["theorem4_tolerance"])
-    setting = (f"W = {d['theorem4_label']} ((5.2) with alpha = -1/2, so p = infinity; (6.3) is in W^(2,p)), dt = "
+    setting = (f"W = {d['theorem4_label']} ((5.2) with alpha = 1 - a = {1.0 - p['theorem4']['a']:g}, so p = infinity; "
+               "(6.3) is in W^(2,p)), dt = "
                f"{float(p['theorem4']['dt_over_h2']):g} h^2, distance between the runs at h and h/2 for h = "
                f"{', '.join(f'{v:g}' for v in h)}, largest over t = {', '.join(f'{v:g}' for v in times)}")
     out = []
@@ -301,15 +310,17 @@ def fig4_claims(d, rules):
 
 
 def fig5_claims(d, p, rules):
-    """Figure 5: finite-time collapse for a = 1.5, none for a = 2.5, one Dirac mass for both."""
+    """Figure 5: finite-time collapse for the smaller a (the paper's 1.5), none for the larger (2.5), one Dirac mass
+    for both."""
     collapse = p["collapse"]
     windows = [tuple(w) for w in collapse["windows"]]
     measured = {}
-    for suffix in ("1.5/1.5", "2.5/2.5"):
-        i = _case(d, suffix)
+    cases = _extreme_cases(d)
+    for i in cases:
         sizes = d[f"case{i}_widths"].min(axis=1)
-        measured[suffix] = collapse_times(d[f"case{i}_times"], sizes, windows)
-    slopes, times = measured["1.5/1.5"]
+        measured[i] = collapse_times(d[f"case{i}_times"], sizes, windows)
+    blowup, smooth = (str(d["labels"][i]) for i in cases)
+    slopes, times = measured[cases[0]]
     finite = times[np.isfinite(times)]
     spread = float(np.ptp(finite) / finite.mean()) if finite.size == times.size else math.inf
     shown = ", ".join(f"[{a:g}, {b:g}]" for a, b in windows)
@@ -317,17 +328,17 @@ def fig5_claims(d, p, rules):
                     for i in range(len(d["labels"]))]
     return [
         claim(c.at_most, "fig5.blowup_a1.5", "paper", "Figure 5, section 6.2", "5",
-              f"W = |x|^1.5/1.5: finite-time blow-up. g = -1/(d log h_min/dt) (h_min the smallest particle width) "
+              f"W = {blowup}: finite-time blow-up. g = -1/(d log h_min/dt) (h_min the smallest particle width) "
               f"falls linearly to 0 at the collapse time; largest slope of g over the windows {shown} of the run "
               f"(extrapolated collapse times {', '.join(f'{v:.4g}' for v in times)}; 0 for exponential shrinking)",
               collapse["slope_max"], float(slopes.max()), published="finite-time blow-up"),
         claim(c.at_most, "fig5.collapse_time_stable", "check", "Figure 5: the measure does not depend on the stop",
-              "5", "a = 1.5: the collapse times extrapolated from the successive windows agree: their spread over "
-              "their mean", collapse["spread_max"], spread),
+              "5", f"a = {_last_exponent(blowup):g}: the collapse times extrapolated from the successive windows "
+              "agree: their spread over their mean", collapse["spread_max"], spread),
         claim(c.at_least, "fig5.no_blowup_a2.5", "paper", "Figure 5, section 6.2", "5",
-              f"W = |x|^2.5/2.5: no finite-time blow-up in Linf: smallest slope of g over the windows {shown} (slopes "
-              f"{', '.join(f'{v:.3g}' for v in measured['2.5/2.5'][0])}; negative would extrapolate to a collapse)",
-              0.0, float(measured["2.5/2.5"][0].min()), published="no blow-up"),
+              f"W = {smooth}: no finite-time blow-up in Linf: smallest slope of g over the windows {shown} (slopes "
+              f"{', '.join(f'{v:.3g}' for v in measured[cases[1]][0])}; negative would extrapolate to a collapse)",
+              0.0, float(measured[cases[1]][0].min()), published="no blow-up"),
         claim(c.at_most, "fig5.dirac", "paper", "Figure 5, section 6.2", "5",
               "both tend to a single Dirac mass: final over initial spread of the particle centres, largest of the "
               "two runs", rules["dirac_spread"], float(max(spread_ratio)), published="single Dirac"),
@@ -381,18 +392,20 @@ def _concentrating(times, widths, masses, q, name, figure, source, what):
 
 
 def fig6_claims(d, rates: Recorder, q, rules):
-    """Figure 6: b = 2.5 concentrates on two Dirac masses in infinite time; b = 1.5 settles on an L1 profile."""
-    b25, b15 = _case(d, "2.5/2.5"), _case(d, "1.5/1.5")
+    """Figure 6: the largest b (the paper's 2.5) concentrates on two Dirac masses in infinite time; the case of the
+    edge refinement (the paper's b = 1.5) settles on an L1 profile."""
+    b25, b15 = _extreme_cases(d)[1], int(d["edge_case"])
+    concentrating, profile = (f"b = {_last_exponent(d['labels'][i]):g}" for i in (b25, b15))
     times = d[f"case{b25}_times"]
     out = _concentrating(times, d[f"case{b25}_concentration_widths"], d[f"case{b25}_concentration_masses"], q,
-                         "fig6.b2.5_", "6", "Figure 6, section 6.2", "b = 2.5")
+                         "fig6.b2.5_", "6", "Figure 6, section 6.2", concentrating)
     centres, weights = d[f"case{b25}_centres"][-1], d[f"case{b25}_weights"]
     middle = c.ROUNDING * np.abs(centres).max()  # a particle at 0 by symmetry, to rounding
     left, right = weights[centres < -middle].sum(), weights[centres > middle].sum()
     out.append(claim(c.at_most, "fig6.b2.5_equal_split", "check", "Figure 6: equal masses, by symmetry of (6.2)",
-                     "6", "b = 2.5: the two masses are equal (symmetric data and even W: true by symmetry, hence a "
-                     "check): |left mass - right mass| (a particle at 0 counted on neither side)", rules["equal_split"],
-                     float(abs(left - right))))
+                     "6", f"{concentrating}: the two masses are equal (symmetric data and even W: true by symmetry, "
+                     "hence a check): |left mass - right mass| (a particle at 0 counted on neither side)",
+                     rules["equal_split"], float(abs(left - right))))
     times = d[f"case{b15}_times"]
     masses = d[f"case{b15}_concentration_masses"]
     changes, checked = d[f"case{b15}_profile_changes"], d[f"case{b15}_profile_times"]
@@ -402,27 +415,28 @@ def fig6_claims(d, rates: Recorder, q, rules):
     listed = ", ".join(f"{checked[i]:g}: {changes[i]:.2g}" for i in marks)
     out += [
         claim(c.at_most, "fig6.b1.5_steady", "paper", "Figure 6, section 6.2", "6",
-              f"b = 1.5: convergence in time to a steady profile: first time from which the L1 change of the density "
+              f"{profile}: convergence in time to a steady profile: first time from which the L1 change of the density "
               f"over {q['window']:g} time units, ||rho_h(t) - rho_h(t - {q['window']:g})||_L1, stays at most "
               f"{q['profile_tolerance']:g} (unit mass), up to t = {times[-1]:g}; at the windows' ends (t: change) "
               f"{listed}", float(times[-1]), steady, published="steady"),
         claim(c.at_most, "fig6.b1.5_profile", "paper", "Figure 6, section 6.2", "6",
-              f"b = 1.5: the steady state is an L1 profile, not Dirac masses: mass within {q['radius']:g} of the two "
+              f"{profile}: the steady state is an L1 profile, not Dirac masses: mass within {q['radius']:g} of the two "
               f"peaks at the steady time", q["profile_mass"], float(masses[at].sum()), published="L1 profile"),
         claim(c.at_least, "fig6.b1.5_edges", "derived", "Figure 6, section 6.2 (our reading: the profile peaks at "
-              "its edges)", "6", "b = 1.5: the steady profile is largest at the edges of its support: largest "
+              "its edges)", "6", f"{profile}: the steady profile is largest at the edges of its support: largest "
               "density over the density at the centre, at the steady time", rules["edge_growth"],
               float(d[f"case{b15}_edge_ratio"][at]), published="edge growth"),
-        _edges_diverge(d, times, rates, q, rules),
+        _edges_diverge(d, times, rates, q, rules, profile),
     ]
     return out
 
 
-def _edges_diverge(d, times, rates: Recorder, q, rules):
-    """Figure 6, b = 1.5, "seemingly diverging at the boundary of the support": the largest density (at the
-    centres) of the settled profile grows under refinement of h, at least like h^-edge_divergence_min (a
-    bounded profile's peaks converge). Read at the end of the runs, a time common to every h once each has
-    settled by the width criterion (the peaks still rise after it); unmeasured (-inf) if a run does not settle."""
+def _edges_diverge(d, times, rates: Recorder, q, rules, case: str):
+    """Figure 6, the ``case`` of the edge refinement (the paper's b = 1.5), "seemingly diverging at the boundary
+    of the support": the largest density (at the centres) of the settled profile grows under refinement of h, at
+    least like h^-edge_divergence_min (a bounded profile's peaks converge). Read at the end of the runs, a time
+    common to every h once each has settled by the width criterion (the peaks still rise after it); unmeasured
+    (-inf) if a run does not settle."""
     h, peaks = d["edge_h"], d["edge_peaks"]
     steady = [_steady_time(times, widths, q) for widths in d["edge_widths"]]
     if not all(math.isfinite(t) for t in steady):
@@ -437,7 +451,7 @@ def _edges_diverge(d, times, rates: Recorder, q, rules):
                   + "; at each run's own settling time (t = " + ", ".join(f"{t:g}" for t in steady) + ") the peaks "
                   + ", ".join(f"{v:.3g}" for v in at_steady) + " were still rising")
     return claim(c.at_least, "fig6.b1.5_edges_diverge", "paper", "Figure 6, section 6.2", "6",
-                 "b = 1.5: the steady L1 profile seemingly diverges at the boundary of its support: the largest "
+                 f"{case}: the steady L1 profile seemingly diverges at the boundary of its support: the largest "
                  f"density at t = {float(times[-1]):g}, every run settled by the width criterion, grows as h is "
                  f"refined ({listed}): its exponent -d log max rho_h / d log h, at least "
                  f"{rules['edge_divergence_min']:g} (a bounded profile: 0)", rules["edge_divergence_min"], growth,
@@ -447,7 +461,7 @@ def _edges_diverge(d, times, rates: Recorder, q, rules):
 def fig7_claims(d, q):
     """Figure 7: from (6.3), concentration on finitely many Dirac masses (in infinite time)."""
     return _concentrating(d["record_times"], d["concentration_widths"], d["concentration_masses"], q, "fig7.", "7",
-                          "Figure 7, section 6.2", "data (6.3), b = 2.5")
+                          "Figure 7, section 6.2", f"data (6.3), W = {d['label']}")
 
 
 def _shifted_smooth(d, steady, resolved, limit, measure):
