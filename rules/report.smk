@@ -57,7 +57,7 @@ rule claims_table:
 
 rule verify:
     """Exit non-zero when a verdict differs from the expected verdicts of the config's `verdicts`
-    file, when an expected claim is missing or a claim has no expected verdict (run as
+    file (a claim it does not list is expected to pass) or when a listed claim is missing (run as
     `snakemake verify`); print the paper claims with published and measured values."""
     input:
         claims="results/claims.csv",
