@@ -316,3 +316,18 @@ def test_every_comparison_takes_the_same_keywords():
     assert band.status == "fail" and band.tolerance == "in [0.25, 1]"
     with pytest.raises(TypeError, match="tolerance of between must be a band"):
         c.claim("x", c.between, "a", **K, measured=0.5, tolerance=1.0)
+
+
+def test_a_tolerance_no_claim_reads_stops_the_claims_job(tmp_path):
+    """The schema types a new tolerance of a `claims` section without listing it; a misspelt one stops the job."""
+    from types import SimpleNamespace
+
+    def measure(results, cfg, recorder):
+        return [c.claim("x", c.at_most, "a", kind="check", source="ours", figure="1", text="t", measured=0.5,
+                        tolerance=cfg["claims"]["bound"])]
+
+    output = SimpleNamespace(claims=tmp_path / "claims.csv", rates=tmp_path / "rates.json")
+    c.measure_paper({}, {"claims": {"bound": 1.0}}, output, measure, log=print)
+    assert c.read_claims(output.claims)[0].status == "pass"
+    with pytest.raises(ValueError, match=r"tolerances no claim reads.*claims\.bund"):
+        c.measure_paper({}, {"claims": {"bound": 1.0, "bund": 2.0}}, output, measure, log=print)

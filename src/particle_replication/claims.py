@@ -283,13 +283,56 @@ class Catalogue:
         return claim(self.paper, compare, name, kind, source, figure, text, *args, **kwargs)
 
 
+class Tolerances(dict):
+    """A ``claims`` section of the config (the tolerances no figure's section holds) that records which keys
+    the measures read: the schema types a new tolerance without listing it (a number or a band), and
+    :func:`measure_paper` refuses a key no claim read (a misspelt name) instead."""
+
+    def __init__(self, values, where: str):
+        super().__init__(values)
+        self.where, self.read = where, set()
+
+    def __getitem__(self, key):
+        self.read.add(key)
+        return super().__getitem__(key)
+
+    def get(self, key, default=None):
+        self.read.add(key)
+        return super().get(key, default)
+
+    def unread(self) -> list[str]:
+        return [f"{self.where}.{key}" for key in self if key not in self.read]
+
+
+def tracked(cfg, where: str):
+    """``cfg`` with every ``claims`` section, at any depth, a :class:`Tolerances` (the rest copied as it is)."""
+    if not isinstance(cfg, dict):
+        return cfg
+    return {key: Tolerances(value, f"{where}.{key}") if key == "claims" and isinstance(value, dict)
+            else tracked(value, f"{where}.{key}") for key, value in cfg.items()}
+
+
+def unread_tolerances(cfg) -> list[str]:
+    """The keys of the :class:`Tolerances` in ``cfg`` that nothing read."""
+    if isinstance(cfg, Tolerances):
+        return cfg.unread()
+    return [key for value in cfg.values() for key in unread_tolerances(value)] if isinstance(cfg, dict) else []
+
+
 def measure_paper(inputs, cfg, output, measure, log=None) -> None:
     """A paper's claims job: load its result files (``inputs``, by file stem; the ``code`` inputs
     aside), measure them with ``measure(results, cfg, recorder)`` (a verdict module's ``claims``),
-    and write the claims table to ``output.claims`` and every fitted rate to ``output.rates``."""
+    and write the claims table to ``output.claims`` and every fitted rate to ``output.rates``.
+    A tolerance of a ``claims`` section of ``cfg`` (the paper's section) that no measure reads stops the job:
+    a misspelt or forgotten key, which the schema, typing new tolerances generically, lets through."""
     recorder = Recorder(log)
     results = {name: load_results(path) for name, path in inputs.items() if name != "code"}
-    write_claims(output.claims, measure(results, cfg, recorder), log=log)
+    cfg = tracked(cfg, measure.__module__.rpartition(".")[2])  # the verdict module is named after its paper
+    made = measure(results, cfg, recorder)
+    unread = unread_tolerances(cfg)
+    if unread:
+        raise ValueError(f"tolerances no claim reads (misspelt, or left from a removed claim): {unread}")
+    write_claims(output.claims, made, log=log)
     recorder.write(output.rates)
 
 
