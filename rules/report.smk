@@ -190,6 +190,7 @@ SNIPPETS = expand(
         "paperclaims_ltp",
         "paperclaims_blob",
         "commit",
+        "further_figures",
         "measured",
         "parameters",
         "configuration",
@@ -220,6 +221,8 @@ rule report_snippets:
         versions="results/versions.md",
         expected=VERDICTS,
         changes=source(ROOT / "config" / "changes.yaml"),
+        # the figures they place by hand; the registry's other figures of ours go to further_figures.tex
+        documents=[source(ROOT / "paper" / f"{name}.tex") for name in ("ms", "supplement")],
         code=imports("report/snippets.py"),
     output:
         SNIPPETS,

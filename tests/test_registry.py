@@ -11,6 +11,7 @@ import pytest
 import yaml
 
 from particle_replication import registry
+from particle_replication.report import further_figures, placed_figures
 from particle_replication.workflow import code_inputs, load_results, module_dependencies, save_results
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -38,7 +39,23 @@ def test_report_shows_every_registered_figure_once():
                                     for f in paper.figures if not f.ours)
     expected = [(str(k), f"{paper.id}/{f.name}") for paper in registry.PAPERS.values()
                 for k, f in enumerate([f for f in paper.figures if f.ours], 1)]
-    assert sorted(ours) == sorted(expected)
+    # the figures of ours no document places by hand: the supplement's generated section (report.further_figures)
+    further = further_figures(CONFIG, placed_figures(report, supplement))
+    generated = re.findall(r"\\ourfig\{(\d+)\}" + figure, further)
+    assert sorted(ours + generated) == sorted(expected) and len(set(ours + generated)) == len(expected)
+    assert "\\input{../generated/further_figures.tex}" in supplement
+
+
+def test_a_figure_of_ours_no_document_places_goes_to_the_supplement():
+    config = {paper: CONFIG[paper] for paper in registry.PAPERS}
+    placed = {"blob/repulsive"}  # as if the report placed only this figure of ours
+    text = further_figures(config, placed)
+    assert "\\ourfig{2}{blob/fig4log.pdf}" in text and "blob/repulsive" not in text and "\\paperfigures{Blob}" in text
+    assert text.startswith("\\section{Further figures}")
+    everything = {f"{paper.id}/{f.name}" for paper in registry.PAPERS.values() for f in paper.figures}
+    assert further_figures(config, everything) == ""
+    text = "\\fig[0.5]{sticky/fig2.pdf}{c} \\ourfig{3}{cross/x_y.pdf}{c}"
+    assert placed_figures(text) == {"sticky/fig2", "cross/x_y"}
 
 
 def test_every_notebook_shows_its_papers_figures(monkeypatch):
