@@ -22,7 +22,7 @@ def test_readme_figure_map_is_the_generated_one():
     readme = (ROOT / "README.md").read_text()
     found = re.search(r"<!-- figure map:.*?-->\n(.*?)\n<!-- end of the figure map -->", readme, flags=re.DOTALL)
     assert found, "README.md has lost the markers of its figure map"
-    assert found.group(1) == registry.figure_map(), "run `python -m particle_replication.registry` into README.md"
+    assert found.group(1) == registry.figure_map(), "run `python -m particle_replication.registry --write`"
 
 
 def test_report_shows_every_registered_figure_once():
