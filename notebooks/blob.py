@@ -30,7 +30,7 @@ import numpy as np
 from particle_methods.blob import data_1d, newtonian_exact, run_1d
 from particle_methods.convergence import fit_order
 from particle_replication.paths import RESULTS
-from particle_replication.tour import show_figure, show_other_claims, summary
+from particle_replication.tour import show_figure, show_other_claims, show_remaining_figures, summary
 from particle_replication.workflow import load_results
 
 print(summary("blob"))
@@ -155,3 +155,12 @@ show_figure("blob", 8)
 
 # %%
 show_other_claims("blob")
+
+# %% [markdown]
+# ## Figures the tour does not discuss
+#
+# Every figure registered for this paper that the sections above do not show; a new figure appears here
+# until the tour discusses it.
+
+# %%
+show_remaining_figures("blob")

@@ -29,7 +29,7 @@ from IPython.display import Markdown, display
 
 from particle_methods.cross import AggregationSolution, methods
 from particle_replication.paths import RESULTS
-from particle_replication.tour import show_figure, show_other_claims, summary
+from particle_replication.tour import show_figure, show_other_claims, show_remaining_figures, summary
 from particle_replication.verdicts.cross import fastest_table
 from particle_replication.workflow import load_results
 
@@ -95,3 +95,12 @@ ax.step(np.sort(positions), np.cumsum(masses[np.argsort(positions)]), where="pos
 ax.set(xlabel="x", ylabel="F(t, x)", title=f"t = {t:g}: Dirac mass {solution.dirac_mass:.4f} of {solution.mass:.4f}")
 ax.legend()
 plt.show()
+
+# %% [markdown]
+# ## Figures the tour does not discuss
+#
+# Every figure registered for this paper that the sections above do not show; a new figure appears here
+# until the tour discusses it.
+
+# %%
+show_remaining_figures("cross")

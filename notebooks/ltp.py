@@ -30,7 +30,7 @@ from particle_methods.convergence import fit_order
 from particle_methods.ltp import density_named, exact_density, potential, simulate
 from particle_methods.ltp.measures import shrink_rate_inverse
 from particle_replication.paths import RESULTS
-from particle_replication.tour import show_figure, show_other_claims, summary
+from particle_replication.tour import show_figure, show_other_claims, show_remaining_figures, summary
 from particle_replication.workflow import load_results
 
 print(summary("ltp"))
@@ -136,3 +136,12 @@ show_figure("ltp", "nonaffine")
 
 # %%
 show_other_claims("ltp")
+
+# %% [markdown]
+# ## Figures the tour does not discuss
+#
+# Every figure registered for this paper that the sections above do not show; a new figure appears here
+# until the tour discusses it.
+
+# %%
+show_remaining_figures("ltp")

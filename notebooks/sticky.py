@@ -42,7 +42,7 @@ from particle_methods.sticky import (
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_replication.claims import markdown_table
 from particle_replication.paths import RESULTS
-from particle_replication.tour import paper_claims, show_figure, show_other_claims, summary
+from particle_replication.tour import paper_claims, show_figure, show_other_claims, show_remaining_figures, summary
 from particle_replication.workflow import load_results
 
 print(summary("sticky"))
@@ -159,3 +159,12 @@ show_figure("sticky", "beyond_limits")
 show_figure("sticky", "beyond_cost")
 display(Markdown(markdown_table([claim for claim in paper_claims("sticky") if ".beyond." in claim.id],
                                 heading=False)))
+
+# %% [markdown]
+# ## Figures the tour does not discuss
+#
+# Every figure registered for this paper that the sections above do not show; a new figure appears here
+# until the tour discusses it.
+
+# %%
+show_remaining_figures("sticky")

@@ -106,3 +106,26 @@ def test_plot_scripts_give_text_sizes_relative_to_the_printed_style():
     found = [f"{path.relative_to(ROOT)}:{number}" for path in (ROOT / "scripts").rglob("*.py")
              for number, line in enumerate(path.read_text().splitlines(), 1) if pattern.search(line)]
     assert not found, found
+
+
+def package_imports(path: Path) -> set[str]:
+    """The modules of particle_replication that ``path`` (a module of it) imports, anywhere in its body."""
+    package = path.relative_to(ROOT / "src").with_suffix("").parts[:-1]
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom):
+            base = list(package[:len(package) - node.level + 1]) if node.level else []
+            module = [*base, *(node.module.split(".") if node.module else [])]
+            found.update(".".join([*module, alias.name]) for alias in node.names)
+            found.add(".".join(module))
+        elif isinstance(node, ast.Import):
+            found.update(alias.name for alias in node.names)
+    return found
+
+
+def test_no_two_modules_of_the_pipeline_import_each_other():
+    modules = {".".join(path.relative_to(ROOT / "src").with_suffix("").parts): path
+               for path in (ROOT / "src" / "particle_replication").rglob("*.py") if path.name != "__init__.py"}
+    imports = {name: package_imports(path) & set(modules) for name, path in modules.items()}
+    circles = sorted(f"{a} <-> {b}" for a in imports for b in imports[a] if a < b and a in imports.get(b, ()))
+    assert not circles, "\n".join(circles)

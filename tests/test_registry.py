@@ -4,12 +4,14 @@ files' keys are checked against it when written and read."""
 
 import re
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 import yaml
 
 from particle_replication import registry
+from particle_replication.report import further_figures, placed_figures
 from particle_replication.workflow import code_inputs, load_results, module_dependencies, save_results
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -20,7 +22,7 @@ def test_readme_figure_map_is_the_generated_one():
     readme = (ROOT / "README.md").read_text()
     found = re.search(r"<!-- figure map:.*?-->\n(.*?)\n<!-- end of the figure map -->", readme, flags=re.DOTALL)
     assert found, "README.md has lost the markers of its figure map"
-    assert found.group(1) == registry.figure_map(), "run `python -m particle_replication.registry` into README.md"
+    assert found.group(1) == registry.figure_map(), "run `python -m particle_replication.registry --write`"
     assert "| blob | A1 (`repulsive`) |" in found.group(1)
 
 
@@ -45,8 +47,12 @@ def test_report_labels_every_registered_figure_as_the_registry_does():
     supplement (\\ourfig{k}), each under the registry's label (Paper.label: Figure Blob 7 is the paper's Figure 7,
     ours numbered apart, Figure Blob A1, in registry order), which the README's figure map, the HTML report and the
     notebooks show."""
-    report = printed_labels((ROOT / "paper" / "ms.tex").read_text())
-    supplement = printed_labels((ROOT / "paper" / "supplement.tex").read_text())
+    report_source, supplement_source = ((ROOT / "paper" / name).read_text() for name in ("ms.tex", "supplement.tex"))
+    report = printed_labels(report_source)
+    # the figures of ours no document places by hand go to the supplement's generated section
+    supplement = printed_labels(supplement_source + further_figures(CONFIG, placed_figures(report_source,
+                                                                                           supplement_source)))
+    assert "\\input{../generated/further_figures.tex}" in supplement_source
     names = {paper.name: paper for paper in registry.PAPERS.values()}
     printed = sorted(figure for _, figure in report + supplement)
     assert printed == sorted(f"{paper.id}/{f.name}" for paper in registry.PAPERS.values() for f in paper.figures)
@@ -67,15 +73,39 @@ def test_labels_number_ours_apart():
         _ = registry.Paper("x", "X", (registry.Plot("p.py", (registry.Figure("wrong", "w", str),)),), (), ()).numbers
 
 
-def test_every_notebook_shows_its_papers_figures():
+def test_a_figure_of_ours_no_document_places_goes_to_the_supplement():
+    config = {paper: CONFIG[paper] for paper in registry.PAPERS}
+    placed = {"blob/repulsive"}  # as if the report placed only this figure of ours
+    text = further_figures(config, placed)
+    assert "\\ourfig{2}{blob/fig4log.pdf}" in text and "blob/repulsive" not in text and "\\paperfigures{Blob}" in text
+    assert text.startswith("\\section{Further figures}")
+    everything = {f"{paper.id}/{f.name}" for paper in registry.PAPERS.values() for f in paper.figures}
+    assert further_figures(config, everything) == ""
+    text = "\\fig[0.5]{sticky/fig2.pdf}{c} \\ourfig{3}{cross/x_y.pdf}{c}"
+    assert placed_figures(text) == {"sticky/fig2", "cross/x_y"}
+
+
+def test_every_notebook_shows_its_papers_figures(monkeypatch):
+    """Each notebook ends with show_remaining_figures, which shows every registered figure the tour did not: a new
+    figure needs no edit of the notebook."""
+    from particle_replication import tour
+
     for paper in registry.PAPERS.values():
         notebook = (ROOT / "notebooks" / f"{paper.id}.py").read_text()
-        numbers = {int(n) for n in re.findall(rf'show_figure\("{paper.id}", (\d+)\)', notebook)}
-        numbers |= {int(n) for n in re.findall(r"for number in \((\d+(?:, \d+)*)\)", notebook) for n in n.split(", ")}
-        for figure in paper.figures:
-            numbered = re.fullmatch(r"fig(\d+)", figure.name)
-            assert (int(numbered.group(1)) in numbers) if numbered else (f'"{figure.name}"' in notebook), (
-                paper.id, figure.name)
+        assert f'show_remaining_figures("{paper.id}")' in notebook, paper.id
+    shown = []
+    monkeypatch.setattr(tour, "display", lambda item: shown.append(getattr(item, "filename", None)))
+    monkeypatch.setattr(tour, "Image", lambda filename: SimpleNamespace(filename=filename))
+    monkeypatch.setattr(tour, "paper_claims", lambda paper: [])
+    monkeypatch.setattr(tour, "SHOWN", {})
+    tour.show_figure("blob", 1)
+    tour.show_figure("blob", "repulsive")
+    tour.show_remaining_figures("blob")
+    names = [Path(name).stem for name in shown if name]
+    assert sorted(names) == sorted(f.name for f in registry.PAPERS["blob"].figures)
+    assert names[:2] == ["fig1", "repulsive"] and len(set(names)) == len(names)
+    with pytest.raises(ValueError, match="paper must be one of"):
+        tour.show_remaining_figures("nope")
 
 
 def test_scripts_captions_and_titles_exist_for_every_figure():

@@ -9,4 +9,4 @@ with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
     expected = read_verdicts(snakemake.input.expected, snakemake.params.run)  # noqa: F821
     changes = read_changes(snakemake.input.changes, expected)  # noqa: F821
     write_snippets(snakemake.input.claims, snakemake.input.rates, snakemake.input.versions, dict(snakemake.config),  # noqa: F821
-                   snakemake.params.outdir, expected, changes)  # noqa: F821
+                   snakemake.params.outdir, expected, changes, snakemake.input.documents)  # noqa: F821

@@ -143,18 +143,18 @@ def relatively_close_to(id, paper, figure, claim, published: float, measured: fl
                     tolerance * abs(published) - abs(measured - published))
 
 
-def at_most(id, paper, figure, claim, bound: float, measured: float, published: str | None = None, *, kind: str,
-            source: str) -> Claim:
-    """Pass when measured <= bound."""
-    return _decided(id, paper, kind, source, figure, claim, published or f"<= {_number(bound)}", measured,
-                    f"<= {_number(bound)}", bound - measured)
+def at_most(id, paper, figure, claim, tolerance: float, measured: float, published: str | None = None, *,
+            kind: str, source: str) -> Claim:
+    """Pass when measured <= tolerance (the bound)."""
+    return _decided(id, paper, kind, source, figure, claim, published or f"<= {_number(tolerance)}", measured,
+                    f"<= {_number(tolerance)}", tolerance - measured)
 
 
-def at_least(id, paper, figure, claim, bound: float, measured: float, published: str | None = None, *, kind: str,
-             source: str) -> Claim:
-    """Pass when measured >= bound."""
-    return _decided(id, paper, kind, source, figure, claim, published or f">= {_number(bound)}", measured,
-                    f">= {_number(bound)}", measured - bound)
+def at_least(id, paper, figure, claim, tolerance: float, measured: float, published: str | None = None, *,
+             kind: str, source: str) -> Claim:
+    """Pass when measured >= tolerance (the bound)."""
+    return _decided(id, paper, kind, source, figure, claim, published or f">= {_number(tolerance)}", measured,
+                    f">= {_number(tolerance)}", measured - tolerance)
 
 
 def between(id, paper, figure, claim, lower: float, upper: float, measured: float, published: str | None = None, *,
@@ -191,9 +191,17 @@ def in_words(text: str) -> str:
 
 
 def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, text: str, *args, **kwargs) -> Claim:
-    """The one constructor of every claim: ``<paper>.<name>``, its kind (:data:`KINDS`) and its source in the
-    paper, decided by ``compare`` (one of :data:`COMPARISONS`) on the remaining arguments. Each paper binds its
-    id once: ``claim = functools.partial(claims.claim, PAPER)``.
+    """The one constructor of every claim: ``<paper>.<name>``, its kind (:data:`KINDS`), its source in the
+    paper, the figure it concerns and its statement ``text``, decided by ``compare`` (one of
+    :data:`COMPARISONS`). Each paper binds its id once: ``claim = functools.partial(claims.claim, PAPER)``.
+
+    The convention is keywords, the same for every comparison: ``measured=`` the value we measure,
+    ``tolerance=`` what it is held to (the distance allowed from ``published`` for :func:`close_to` and
+    :func:`relatively_close_to`, the bound of :func:`at_most` and :func:`at_least`, the band (lower, upper) of
+    :func:`between`) and ``published=`` the paper's value or words (optional for a bound or a band)::
+
+        claim(c.close_to, "fig2d.order", kind="paper", source="Figure 2 (d)", figure="2d",
+              text="order of the L1 error", published=1.0, measured=slope, tolerance=rules["order_tolerance"])
 
     When the measured value is a fitted slope (:class:`~particle_replication.rates.Slope`, as
     :meth:`Recorder.add <particle_replication.rates.Recorder.add>` returns it, or its negation or the
@@ -203,6 +211,11 @@ def claim(paper: str, compare, name: str, kind: str, source: str, figure: str, t
     if compare not in COMPARISONS:
         raise ParameterTypeError(f"compare must be one of {', '.join(f.__name__ for f in COMPARISONS)}, got "
                                  f"{compare!r}")
+    if compare is between and "tolerance" in kwargs:
+        band = kwargs.pop("tolerance")
+        if not isinstance(band, (tuple, list)) or len(band) != 2:
+            raise ParameterTypeError(f"tolerance of between must be a band (lower, upper), got {band!r}")
+        kwargs["lower"], kwargs["upper"] = band
     arguments = inspect.signature(compare).bind(f"{paper}.{name}", paper, figure, in_words(text), *args, kind=kind,
                                                 source=source, **kwargs).arguments
     made = compare(**arguments)
@@ -270,13 +283,56 @@ class Catalogue:
         return claim(self.paper, compare, name, kind, source, figure, text, *args, **kwargs)
 
 
+class Tolerances(dict):
+    """A ``claims`` section of the config (the tolerances no figure's section holds) that records which keys
+    the measures read: the schema types a new tolerance without listing it (a number or a band), and
+    :func:`measure_paper` refuses a key no claim read (a misspelt name) instead."""
+
+    def __init__(self, values, where: str):
+        super().__init__(values)
+        self.where, self.read = where, set()
+
+    def __getitem__(self, key):
+        self.read.add(key)
+        return super().__getitem__(key)
+
+    def get(self, key, default=None):
+        self.read.add(key)
+        return super().get(key, default)
+
+    def unread(self) -> list[str]:
+        return [f"{self.where}.{key}" for key in self if key not in self.read]
+
+
+def tracked(cfg, where: str):
+    """``cfg`` with every ``claims`` section, at any depth, a :class:`Tolerances` (the rest copied as it is)."""
+    if not isinstance(cfg, dict):
+        return cfg
+    return {key: Tolerances(value, f"{where}.{key}") if key == "claims" and isinstance(value, dict)
+            else tracked(value, f"{where}.{key}") for key, value in cfg.items()}
+
+
+def unread_tolerances(cfg) -> list[str]:
+    """The keys of the :class:`Tolerances` in ``cfg`` that nothing read."""
+    if isinstance(cfg, Tolerances):
+        return cfg.unread()
+    return [key for value in cfg.values() for key in unread_tolerances(value)] if isinstance(cfg, dict) else []
+
+
 def measure_paper(inputs, cfg, output, measure, log=None) -> None:
     """A paper's claims job: load its result files (``inputs``, by file stem; the ``code`` inputs
     aside), measure them with ``measure(results, cfg, recorder)`` (a verdict module's ``claims``),
-    and write the claims table to ``output.claims`` and every fitted rate to ``output.rates``."""
+    and write the claims table to ``output.claims`` and every fitted rate to ``output.rates``.
+    A tolerance of a ``claims`` section of ``cfg`` (the paper's section) that no measure reads stops the job:
+    a misspelt or forgotten key, which the schema, typing new tolerances generically, lets through."""
     recorder = Recorder(log)
     results = {name: load_results(path) for name, path in inputs.items() if name != "code"}
-    write_claims(output.claims, measure(results, cfg, recorder), log=log)
+    cfg = tracked(cfg, measure.__module__.rpartition(".")[2])  # the verdict module is named after its paper
+    made = measure(results, cfg, recorder)
+    unread = unread_tolerances(cfg)
+    if unread:
+        raise ValueError(f"tolerances no claim reads (misspelt, or left from a removed claim): {unread}")
+    write_claims(output.claims, made, log=log)
     recorder.write(output.rates)
 
 
@@ -459,6 +515,10 @@ class Expected(NamedTuple):
     cause: str = ""
 
 
+#: The expected verdict of a claim that ``config/verdicts.yaml`` does not list.
+PASSING = Expected("pass")
+
+
 def _statuses(path, where: str, data) -> dict[str, Expected]:
     """``pass`` (a list of claim ids) and ``fail`` (id: {cause, reason}) of one part of the file."""
     passing, failing = data.get("pass") or [], data.get("fail") or {}
@@ -489,7 +549,9 @@ def read_verdicts(path, run: str = "full") -> dict[str, Expected]:
     ``fail``, a mapping from claim id to its cause (one of :data:`CAUSES`) and a one-line reason.
     Another run (``quick``) has a section of its own with the same two keys, holding only the
     verdicts that differ from the full run's.
-    Measured values are never recorded there, only statuses.
+    Measured values are never recorded there, only statuses. A claim listed nowhere is expected to pass
+    (:data:`PASSING`): only an expected failure has to be written down; a listed pass guards against the
+    claim vanishing (``verify`` reports it MISSING).
     """
     data = yaml.safe_load(Path(path).read_text()) or {}
     if not isinstance(data, dict) or not {"pass", "fail"} & set(data):
@@ -504,10 +566,7 @@ def read_verdicts(path, run: str = "full") -> dict[str, Expected]:
     if run not in sections:
         raise ValueError(f"{path}: no section for the run {run!r} (sections: {sorted(sections)})")
     differences = _statuses(path, f" [{run}]", data[run])
-    unknown = sorted(set(differences) - set(verdicts))
-    if unknown:
-        raise ValueError(f"{path} [{run}]: claims not among the full run's verdicts: {unknown}")
-    same = sorted(i for i, verdict in differences.items() if verdict == verdicts[i])
+    same = sorted(i for i, verdict in differences.items() if verdict == verdicts.get(i, PASSING))
     if same:
         raise ValueError(f"{path} [{run}]: entries equal to the full run's (keep only differences): {same}")
     return {**verdicts, **differences}
@@ -553,8 +612,8 @@ def verify(claims_path, verdicts_path, run: str | None = "full", margin_min: flo
     """Print (through ``write``) the paper claims (``brief``: only those that fail), the fragile verdicts, then
     every difference from the expected verdicts; return the exit code.
 
-    Non-zero when a verdict differs from the expected one, when an expected claim is missing, or when
-    a claim has no expected verdict. A check that abstained (a loaded machine) is listed, never a difference.
+    Non-zero when a verdict differs from the expected one (a claim the file does not list is expected to pass)
+    or when a listed claim is missing. A check that abstained (a loaded machine) is listed, never a difference.
     ``run`` None: the configuration is none of the repository's runs (``differing``: the keys in which it
     differs), so no verdict is expected of it: the summary is printed and nothing compared.
     """
@@ -581,11 +640,10 @@ def verify(claims_path, verdicts_path, run: str | None = "full", margin_min: flo
     for claim in claims:
         if claim.status == "abstain":
             continue
-        if claim.id not in expected:
-            problems.append(f"NEW {claim.id}: {claim.status}, but no expected verdict in {verdicts_path}")
-        elif expected[claim.id].status != claim.status:
-            reason = expected[claim.id].reason
-            problems.append(f"CHANGED {claim.id}: expected {expected[claim.id].status}"
+        verdict = expected.get(claim.id, PASSING)
+        if verdict.status != claim.status:
+            reason = verdict.reason or ("" if claim.id in expected else f"not listed in {verdicts_path}")
+            problems.append(f"CHANGED {claim.id}: expected {verdict.status}"
                             f"{f' ({reason})' if reason else ''}, got {claim.status} (measured {claim.measured}, "
                             f"tolerance {claim.tolerance})")
     present = {claim.id for claim in claims}

@@ -15,6 +15,7 @@ x = log n, whose slope tends to a positive constant for log(n)/n and to 0 for 1/
 from __future__ import annotations
 
 import json
+import math
 import os
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -282,3 +283,14 @@ def merge_rates(sources, path) -> list[RateFit]:
     fits = [rate for source in _listed("sources", sources, str | os.PathLike, "paths") for rate in read_rates(source)]
     write_rates(path, fits)
     return fits
+
+
+def value_at_error(errors, values, eps: float) -> float:
+    """``values`` interpolated log-log at the error ``eps`` between the two runs whose errors bracket
+    it; NaN if ``eps`` lies outside the measured errors (no extrapolation)."""
+    errors, values = np.asarray(errors, dtype=float), np.asarray(values, dtype=float)
+    order_ = np.argsort(errors)
+    errors, values = errors[order_], values[order_]
+    if not errors[0] <= eps <= errors[-1]:
+        return math.nan
+    return float(np.exp(np.interp(np.log(eps), np.log(errors), np.log(values))))

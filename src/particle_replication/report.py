@@ -23,6 +23,8 @@
 - ``rates.tex``: every fitted rate, its pairwise slopes and the fit over every window (an appendix);
 - ``versions.tex``: the software versions table (a tabular);
 - ``commit.tex``: ``\\builtfrom``, the commit the run was made from and its date.
+- ``further_figures.tex``: the registry's figures of ours that neither document places by hand, with the
+  registry's captions (a section of the supplement; empty when there is none).
 
 The article (``paper/ms.tex``) types no parameter or measured value of its own: it uses these
 macros.
@@ -47,6 +49,7 @@ from .claims import (
     read_verdicts,
     window_dependent,
 )
+from .paths import REPOSITORY
 from .rates import read_rates
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
@@ -259,11 +262,45 @@ def _fragile_table(claims, margin_min: float) -> str:
     return head + "".join(lines) + "\\end{longtable}\n"
 
 
-def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected, changes) -> None:
+#: A figure placed by hand in the report or its supplement: ``\fig{<paper>/<name>.pdf}`` or ``\ourfig{k}{...}``.
+_PLACED = re.compile(r"\\(?:our)?fig(?:\[[0-9.]+\])?(?:\{\d+\})?\{([a-z]+/[a-z0-9_]+)\.pdf\}")
+
+
+def placed_figures(*documents) -> set[str]:
+    """``<paper>/<name>`` of every figure the LaTeX ``documents`` (texts) place by hand."""
+    return {match for document in documents for match in _PLACED.findall(document)}
+
+
+def further_figures(config: dict, placed: set[str]) -> str:
+    """LaTeX for the supplement: every registered figure of ours that no document places by hand (``placed``,
+    :func:`placed_figures`), numbered as the report numbers ours (A<k>, the registry's
+    :attr:`~particle_replication.registry.Paper.numbers`), with the registry's caption of the run's ``config``;
+    empty when there is none. A new figure of ours thus reaches the supplement without an edit of it, until the
+    text discusses it."""
+    from .registry import PAPERS
+
+    if not isinstance(config, dict):
+        raise TypeError(f"config must be the run's configuration (a dict), got {type(config).__name__}")
+    sections = []
+    for paper in PAPERS.values():
+        figures = [figure for figure in paper.figures if figure.ours and f"{paper.id}/{figure.name}" not in placed]
+        if figures:
+            sections.append(f"\\paperfigures{{{paper.name}}}\n" + "".join(
+                f"\\ourfig{{{paper.numbers[figure.name].removeprefix('A')}}}{{{paper.id}/{figure.name}.pdf}}"
+                f"{{{tex(figure.caption(config[paper.id]))}}}\n" for figure in figures))
+    if not sections:
+        return ""
+    return ("\\section{Further figures}\\label{app:further}\nOur figures that the text above does not discuss yet, "
+            "with the captions of the registry.\n\n" + "\n".join(sections))
+
+
+def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected, changes, documents=None) -> None:
     """Write every snippet to ``outdir``; ``config`` is the run's configuration (dict or YAML path),
     ``expected`` its expected verdicts (:func:`particle_replication.claims.read_verdicts`), which give
-    the failures their causes, and ``changes`` the rules changed after a failing run
-    (:func:`particle_replication.claims.read_changes`)."""
+    the failures their causes, ``changes`` the rules changed after a failing run
+    (:func:`particle_replication.claims.read_changes`), and ``documents`` the paths of the report's LaTeX sources
+    (by default the repository's ``paper/ms.tex`` and ``paper/supplement.tex``), whose figures placed by hand
+    :func:`further_figures` leaves out."""
     if not isinstance(config, dict):
         config = yaml.safe_load(Path(config).read_text())
     outdir = Path(outdir)
@@ -278,6 +315,10 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
         measured.append(_define("status", claim.id, claim.status))
         measured.append(_define("margin", claim.id, cell(claim.margin or "-")))
     (outdir / "measured.tex").write_text("".join(measured))
+    if documents is None:
+        documents = [REPOSITORY / "paper" / f"{name}.tex" for name in ("ms", "supplement")]
+    (outdir / "further_figures.tex").write_text(
+        further_figures(config, placed_figures(*(Path(document).read_text() for document in documents))))
     summary = []
     for paper in [*papers, "all"]:
         rows = [claim for claim in claims if paper in (claim.paper, "all")]

@@ -10,9 +10,12 @@ import re
 
 from IPython.display import Image, Markdown, display
 
-from . import registry
 from .claims import Claim, markdown_table, read_claims, summary_line
 from .paths import FIGURES, RESULTS
+from .registry import PAPERS
+
+#: The figures this session has shown, paper -> figure names (:func:`show_remaining_figures` shows the rest).
+SHOWN: dict[str, set[str]] = {}
 
 
 def figures_of(claim: Claim) -> set[int]:
@@ -32,18 +35,29 @@ def show_figure(paper: str, figure: int | str) -> None:
     claims checked on a numbered figure."""
     if isinstance(figure, bool) or not isinstance(figure, int | str):
         raise TypeError(f"figure must be a figure number or name, got {figure!r}")
-    if paper not in registry.PAPERS:
-        raise ValueError(f"paper must be one of {sorted(registry.PAPERS)}, got {paper!r}")
-    entry = registry.PAPERS[paper]
+    if paper not in PAPERS:
+        raise ValueError(f"paper must be one of {sorted(PAPERS)}, got {paper!r}")
+    entry = PAPERS[paper]
     name = f"fig{figure}" if isinstance(figure, int) else figure
     ours = next((f.ours for f in entry.figures if f.name == name), False)
     display(Markdown(f"**{entry.label(name)}**" + (", a study of ours, not a figure of the paper" if ours else "")))
     display(Image(filename=str(FIGURES / paper / name) + ".png"))
+    SHOWN.setdefault(paper, set()).add(name)
     if not isinstance(figure, int):
         return
     claims = [claim for claim in paper_claims(paper) if figure in figures_of(claim)]
     if claims:
         display(Markdown(markdown_table(claims, heading=False)))
+
+
+def show_remaining_figures(paper: str) -> None:
+    """Display every registered figure of ``paper`` that :func:`show_figure` has not shown in this session,
+    each under its label: a figure added to the registry appears in the notebook before the tour discusses it."""
+    if paper not in PAPERS:
+        raise ValueError(f"paper must be one of {sorted(PAPERS)}, got {paper!r}")
+    for figure in PAPERS[paper].figures:
+        if figure.name not in SHOWN.get(paper, set()):
+            show_figure(paper, int(figure.name[3:]) if re.fullmatch(r"fig\d+", figure.name) else figure.name)
 
 
 def show_other_claims(paper: str) -> None:

@@ -22,9 +22,10 @@ from particle_methods.sticky.spd import cluster_sizes
 from particle_methods.systems import MINUS, PLUS, PSystem
 
 from .. import claims as c
-from ..rates import Recorder, chosen, fit, order
+from ..rates import Recorder, chosen, fit, order, value_at_error
 from ..steady import holds_from
 from ..workflow import disturbance
+from . import sticky_theory  # sections 3 and 4 beyond the figures
 from .sticky_figures import figure_claims
 
 PAPER = "sticky"
@@ -477,16 +478,6 @@ def cost_claims(d, rates: Recorder, window: int, band):
 SCALAR_NAMES = {"burgers_two_atoms": "Figure 2 (Burgers)", "concave_laplace": "Figure 3 (concave flux)"}
 
 
-def value_at_error(errors, values, eps: float) -> float:
-    """``values`` interpolated log-log at the error ``eps`` between the two runs whose errors bracket
-    it; NaN if ``eps`` lies outside the measured errors (no extrapolation)."""
-    errors, values = np.asarray(errors, dtype=float), np.asarray(values, dtype=float)
-    order_ = np.argsort(errors)
-    errors, values = errors[order_], values[order_]
-    if not errors[0] <= eps <= errors[-1]:
-        return math.nan
-    return float(np.exp(np.interp(np.log(eps), np.log(errors), np.log(values))))
-
 
 def common_error(*error_rows) -> float:
     """eps*: the largest of the smallest errors of the methods, an error every method measured."""
@@ -511,11 +502,6 @@ def predicted_exponents(k: float, log_scale: float, smallest: float, tolerance: 
                          "than 1")
     return k * (1.0 - tolerance), k / (1.0 - 1.0 / log_n)
 
-
-def resolvable(errors, reference_error: float, share: float) -> np.ndarray:
-    """Indices of the runs whose error a reference with its own error ``reference_error`` resolves:
-    errors at least ``reference_error / share``."""
-    return np.flatnonzero(np.asarray(errors, dtype=float) >= reference_error / share)
 
 
 def cost_slope(errors, work) -> float:
@@ -768,7 +754,6 @@ def claims(results, cfg, recorder: Recorder) -> list:
     burgers, concave = results["fig2"], results["fig3"]
     r33, l21, tspd, cost = cfg["remark33"], cfg["lemma21"], cfg["tspd_convergence"], cfg["cost"]
     rules = cfg["claims"]  # the tolerances no figure's section holds
-    from . import sticky_theory  # sections 3 and 4 beyond the figures; it imports this module
     return [
         *burgers_claims(burgers, recorder, cfg["fig2"]["order_window"], rules["order_tolerance"]),
         *concave_claims(concave, recorder, cfg["fig3"]["decay_window"], cfg["fig3"]["decay_band"]),

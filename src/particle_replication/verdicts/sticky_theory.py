@@ -26,12 +26,17 @@ import math
 import numpy as np
 
 from .. import claims as c
-from ..rates import Recorder, chosen, fit, order
-from .sticky import resolvable, value_at_error
+from ..rates import Recorder, chosen, fit, order, value_at_error
 
 PAPER = "sticky"
 
 claim = functools.partial(c.claim, PAPER)
+
+
+def resolvable(errors, reference_error: float, share: float) -> np.ndarray:
+    """Indices of the runs whose error a reference with its own error ``reference_error`` resolves:
+    errors at least ``reference_error / share``."""
+    return np.flatnonzero(np.asarray(errors, dtype=float) >= reference_error / share)
 
 
 def _listing(values) -> str:
