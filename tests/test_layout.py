@@ -129,3 +129,15 @@ def test_no_two_modules_of_the_pipeline_import_each_other():
     imports = {name: package_imports(path) & set(modules) for name, path in modules.items()}
     circles = sorted(f"{a} <-> {b}" for a in imports for b in imports[a] if a < b and a in imports.get(b, ()))
     assert not circles, "\n".join(circles)
+
+
+def test_every_claim_is_written_with_keywords():
+    """claim(c.<comparison>, <name>, kind=..., source=..., figure=..., text=..., published=..., measured=...,
+    tolerance=...): nothing positional after the comparison and the name (CONTRIBUTING, Extending, 4)."""
+    positional = []
+    for path in sorted((ROOT / "src" / "particle_replication" / "verdicts").glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "claim"
+                    and node.args and isinstance(node.args[0], ast.Attribute) and len(node.args) > 2):
+                positional.append(f"{path.name}:{node.lineno}")
+    assert not positional, positional

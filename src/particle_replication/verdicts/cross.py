@@ -154,17 +154,13 @@ def _sp_dirac_spread(d, masses, after, p):
             shown.append(f"{data}, t = {t:g} (M_D = {masses[(data, t)][1]:.4g}): "
                          + ", ".join(f"{r:.3f} at 1/h = {n}" for r, n in zip(ratios, sizes)))
     return claim(
-        c.between,
-        "sp_after.dirac_spread",
-        "derived",
-        "LTP paper section 2.1 (SP: particles of fixed width eps); the exact solution's Dirac mass",
-        "cross",
-        f"SP after the blow-up (eps = {p['ltp']['sp_eps_over_h']:g} h): W1 over the prediction with no fitted "
-        f"parameter M_D eps int |s| phi(s) ds ({SHAPE}: {spread:.4g}), the Dirac mass spread over one particle; "
-        f"ratios {'; '.join(shown)}; at the largest 1/h, farthest from 1",
-        *band,
-        c.farthest_from_centre(finest, band),
-    )
+        c.between, "sp_after.dirac_spread", kind="derived",
+        source="LTP paper section 2.1 (SP: particles of fixed width eps); the exact solution's Dirac mass",
+        figure="cross",
+        text=f"SP after the blow-up (eps = {p['ltp']['sp_eps_over_h']:g} h): W1 over the prediction with no fitted "
+             f"parameter M_D eps int |s| phi(s) ds ({SHAPE}: {spread:.4g}), the Dirac mass spread over one particle; "
+             f"ratios {'; '.join(shown)}; at the largest 1/h, farthest from 1",
+        tolerance=band, measured=c.farthest_from_centre(finest, band))
 
 
 def study_claims(d, rates: Recorder, p):
@@ -183,32 +179,21 @@ def study_claims(d, rates: Recorder, p):
     share = masses[(str(p["data"][0]), late)][1] / masses[(str(p["data"][0]), late)][0]
     rows.append(
         claim(
-            c.between,
-            "exact.dirac_share",
-            "check",
-            "a0 = t m(a0) (this section), against the issue's independent figure",
-            "cross",
-            f"share of the mass in the Dirac mass of the exact solution "
-            f"from {p['data'][0]} at t = {late:g} (issue 15: about 57 % for (4.3) at t = 1.1)",
-            *rules["dirac_share"],
-            float(share),
-        )
+            c.between, "exact.dirac_share", kind="check",
+            source="a0 = t m(a0) (this section), against the issue's independent figure", figure="cross",
+            text=f"share of the mass in the Dirac mass of the exact solution "
+                 f"from {p['data'][0]} at t = {late:g} (issue 15: about 57 % for (4.3) at t = 1.1)",
+            tolerance=rules["dirac_share"], measured=float(share))
     )
 
     spd = orders(d, rates, SPD_METHODS, p["times"], window, single)
     rows.append(
         claim(
-            c.between,
-            "order.spd",
-            "derived",
-            SOURCE_SPD,
-            "cross",
-            "W1 order of both SPDs (n or 1/h), every data, before and after the "
-            "blow-up (cases with a single Dirac mass left out): the discretised data are O(1/n) from the "
-            "data, and the SPD is their exact entropy solution; worst fit",
-            *rules["spd_order"],
-            c.farthest_from_centre(spd, rules["spd_order"]),
-        )
+            c.between, "order.spd", kind="derived", source=SOURCE_SPD, figure="cross",
+            text="W1 order of both SPDs (n or 1/h), every data, before and after the "
+                 "blow-up (cases with a single Dirac mass left out): the discretised data are O(1/n) from the "
+                 "data, and the SPD is their exact entropy solution; worst fit",
+            tolerance=rules["spd_order"], measured=c.farthest_from_centre(spd, rules["spd_order"]))
     )
 
     ratios, exact = [], []
@@ -222,42 +207,28 @@ def study_claims(d, rates: Recorder, p):
             exact.extend(errors / masses[(data, t)][0])
     rows.append(
         claim(
-            c.at_most,
-            "spd.contraction",
-            "derived",
-            SOURCE_SPD,
-            "cross",
-            "W1(SPD(t), exact(t)) <= W1(SPD(0), exact(0)) for every size: largest ratio over both SPDs, data and times",
-            1.0 + c.ROUNDING,
-            float(max(ratios)),
-        )
+            c.at_most, "spd.contraction", kind="derived", source=SOURCE_SPD, figure="cross",
+            text=(
+                "W1(SPD(t), exact(t)) <= W1(SPD(0), exact(0)) for every size: largest ratio over both SPDs, data and "
+                "times"),
+            tolerance=1.0 + c.ROUNDING, measured=float(max(ratios)))
     )
     rows.append(
         claim(
-            c.at_most,
-            "spd.collapse_exact",
-            "derived",
-            SOURCE_SPD,
-            "cross",
-            "once all the mass sits in the Dirac mass ((4.4) at t > 1) both SPDs are exact: largest W1 / M",
-            c.ROUNDING * LENGTH,
-            float(max(exact)) if exact else math.nan,
-        )
+            c.at_most, "spd.collapse_exact", kind="derived", source=SOURCE_SPD, figure="cross",
+            text="once all the mass sits in the Dirac mass ((4.4) at t > 1) both SPDs are exact: largest W1 / M",
+            tolerance=c.ROUNDING * LENGTH, measured=float(max(exact)) if exact else math.nan)
     )
 
     blob = [f"blob, m = {m}" for m in p["blob"]["orders"]]
     rows.append(
         claim(
-            c.between,
-            "order.blob_before",
-            "derived",
-            "blob paper Theorem 3.8 (trajectories O(h^{mq})); W1 of grid point masses is O(h)",
-            "cross",
-            f"W1 order of the blob method (m = {p['blob']['orders']}, "
-            f"q = {p['blob']['q']}) before the blow-up: point masses on a grid, O(h); worst fit",
-            *rules["blob_order_before"],
-            c.farthest_from_centre(orders(d, rates, blob, before, window), rules["blob_order_before"]),
-        )
+            c.between, "order.blob_before", kind="derived",
+            source="blob paper Theorem 3.8 (trajectories O(h^{mq})); W1 of grid point masses is O(h)", figure="cross",
+            text=f"W1 order of the blob method (m = {p['blob']['orders']}, "
+                 f"q = {p['blob']['q']}) before the blow-up: point masses on a grid, O(h); worst fit",
+            tolerance=rules["blob_order_before"],
+            measured=c.farthest_from_centre(orders(d, rates, blob, before, window), rules["blob_order_before"]))
     )
     local, shown = [], []
     for data, t, method in cases(d):
@@ -268,90 +239,63 @@ def study_claims(d, rates: Recorder, p):
             shown.append(f"{method}, {data}, t = {t:g}: {', '.join(f'{v:.2f}' for v in steps)}")
     rows.append(
         claim(
-            c.at_least,
-            "order.blob_after",
-            "check",
-            "blob paper Definition 2.2 (K_delta smooth: no Dirac mass forms); no rate is predicted",
-            "cross",
-            "the blob method's W1 after the blow-up falls at least at this local order between every two "
-            "consecutive h (no theory gives its rate: where part of the mass is outside the cluster, as for (4.3), "
-            "the point masses give O(h); where all of it collapses, as for (4.4), the cluster contracts at the rate "
-            f"1/delta and the error falls like exp(-c/delta)); local orders {'; '.join(shown)}; smallest",
-            rules["blob_order_after_min"],
-            min(local, default=math.nan),
-        )
+            c.at_least, "order.blob_after", kind="check",
+            source="blob paper Definition 2.2 (K_delta smooth: no Dirac mass forms); no rate is predicted",
+            figure="cross",
+            text="the blob method's W1 after the blow-up falls at least at this local order between every two "
+                 "consecutive h (no theory gives its rate: where part of the mass is outside the cluster, as for "
+                 "(4.3), the point masses give O(h); where all of it collapses, as for (4.4), the cluster contracts at "
+                 f"the rate 1/delta and the error falls like exp(-c/delta)); local orders {'; '.join(shown)}; smallest",
+            tolerance=rules["blob_order_after_min"], measured=min(local, default=math.nan))
     )
     rows.append(
         claim(
-            c.between,
-            "order.ltp",
-            "derived",
-            "LTP paper (2.31), Theorem 1 (O(h^2) reconstruction); outside its assumptions",
-            "cross",
-            "W1 order of LTP with W = |x|/2 before the blow-up (dt = h/2): a particle's velocity (M - 2F_h)/2 at "
-            "its centre carries only the O(h^2) error of the reconstruction; explicit Euler does not move the centres "
-            "exactly (its error is first order in dt where F_h is not smooth, as at the edges of (4.4)), but stays "
-            "below the reconstruction's at these h; worst fit",
-            *rules["ltp_order"],
-            c.farthest_from_centre(orders(d, rates, ("LTP",), before, window), rules["ltp_order"]),
-        )
+            c.between, "order.ltp", kind="derived",
+            source="LTP paper (2.31), Theorem 1 (O(h^2) reconstruction); outside its assumptions", figure="cross",
+            text="W1 order of LTP with W = |x|/2 before the blow-up (dt = h/2): a particle's velocity (M - 2F_h)/2 at "
+                 "its centre carries only the O(h^2) error of the reconstruction; explicit Euler does not move the "
+                 "centres exactly (its error is first order in dt where F_h is not smooth, as at the edges of (4.4)), "
+                 "but stays below the reconstruction's at these h; worst fit",
+            tolerance=rules["ltp_order"],
+            measured=c.farthest_from_centre(orders(d, rates, ("LTP",), before, window), rules["ltp_order"]))
     )
     rows.append(
         claim(
-            c.between,
-            "order.sp_before",
-            "derived",
-            "LTP paper section 2.1 (SP method)",
-            "cross",
-            "W1 order of SP (eps = h) before the blow-up: O(eps^2) smoothing; worst fit",
-            *rules["sp_order_before"],
-            c.farthest_from_centre(orders(d, rates, ("SP",), before, window), rules["sp_order_before"]),
-        )
+            c.between, "order.sp_before", kind="derived", source="LTP paper section 2.1 (SP method)", figure="cross",
+            text="W1 order of SP (eps = h) before the blow-up: O(eps^2) smoothing; worst fit",
+            tolerance=rules["sp_order_before"],
+            measured=c.farthest_from_centre(orders(d, rates, ("SP",), before, window), rules["sp_order_before"]))
     )
     rows.append(
         claim(
-            c.between,
-            "order.sp_after",
-            "check",
-            "LTP paper section 2.1 (SP method); the prediction itself is sp_after.dirac_spread",
-            "cross",
-            "W1 order of SP after the blow-up: the Dirac mass is reconstructed "
-            "as its mass times phi_eps, W1 of order eps = h (pushed above 1 at coarse h by the mass still "
-            "flowing into the Dirac mass, see sp_after.dirac_spread); worst fit",
-            *rules["sp_order_after"],
-            c.farthest_from_centre(orders(d, rates, ("SP",), after, window), rules["sp_order_after"]),
-        )
+            c.between, "order.sp_after", kind="check",
+            source="LTP paper section 2.1 (SP method); the prediction itself is sp_after.dirac_spread", figure="cross",
+            text="W1 order of SP after the blow-up: the Dirac mass is reconstructed "
+                 "as its mass times phi_eps, W1 of order eps = h (pushed above 1 at coarse h by the mass still "
+                 "flowing into the Dirac mass, see sp_after.dirac_spread); worst fit",
+            tolerance=rules["sp_order_after"],
+            measured=c.farthest_from_centre(orders(d, rates, ("SP",), after, window), rules["sp_order_after"]))
     )
     rows.append(_sp_dirac_spread(d, masses, after, p))
     rows.append(
         claim(
-            c.between,
-            "order.godunov",
-            "derived",
-            "Godunov (1959); LeVeque (2002) section 12",
-            "cross",
-            "W1 order of Godunov's scheme for F (cells), every data and time "
-            "(single Dirac masses left out): first order; worst fit",
-            *rules["godunov_order"],
-            c.farthest_from_centre(
-                orders(d, rates, ("Godunov for F",), p["times"], window, single), rules["godunov_order"]
-            ),
-        )
+            c.between, "order.godunov", kind="derived", source="Godunov (1959); LeVeque (2002) section 12",
+            figure="cross",
+            text="W1 order of Godunov's scheme for F (cells), every data and time "
+                 "(single Dirac masses left out): first order; worst fit",
+            tolerance=rules["godunov_order"],
+            measured=c.farthest_from_centre(
+                         orders(d, rates, ("Godunov for F",), p["times"], window, single), rules["godunov_order"]
+                     ))
     )
 
     differences = d["spd_difference"][~np.isnan(d["spd_difference"])]
     rows.append(
         claim(
-            c.at_most,
-            "identity.particle_spd",
-            "derived",
-            SOURCE_IDENTITY,
-            "cross",
-            "the particle method (DOP853, rtol 1e-12) equals the "
-            "weighted SPD before the first collision: largest |x_particle - x_SPD| over data and h",
-            c.ROUNDING * LENGTH,
-            float(np.max(differences)) if differences.size else math.nan,
-        )
+            c.at_most, "identity.particle_spd", kind="derived", source=SOURCE_IDENTITY, figure="cross",
+            text="the particle method (DOP853, rtol 1e-12) equals the "
+                 "weighted SPD before the first collision: largest |x_particle - x_SPD| over data and h",
+            tolerance=c.ROUNDING * LENGTH, measured=float(np.max(differences)) if differences.size else math.nan)
     )
 
     widths = []
@@ -361,32 +305,24 @@ def study_claims(d, rates: Recorder, p):
             widths.extend(width / (1.0 / sizes) ** p["blob"]["q"])
     rows.append(
         claim(
-            c.at_most,
-            "blob.no_dirac",
-            "derived",
-            "blob paper Definition 2.2 (K_delta smooth)",
-            "cross",
-            "after the blow-up the blob particles of the Dirac mass gather within delta = h^q of 0, where K_delta' is "
-            "linear: (largest |x| of them)/delta, largest over data and h (their positions stay distinct, as for any "
-            "ODE with a Lipschitz field: true by construction, not a claim; the smallest ratio is "
-            f"{min(widths, default=math.nan):.3g})",
-            1.0,
-            float(max(widths)) if widths and np.all(np.isfinite(widths)) else math.nan,
-        )
+            c.at_most, "blob.no_dirac", kind="derived", source="blob paper Definition 2.2 (K_delta smooth)",
+            figure="cross",
+            text="after the blow-up the blob particles of the Dirac mass gather within delta = h^q of 0, where "
+                 "K_delta' is linear: (largest |x| of them)/delta, largest over data and h (their positions stay "
+                 "distinct, as for any ODE with a Lipschitz field: true by construction, not a claim; the smallest "
+                 f"ratio is {min(widths, default=math.nan):.3g})",
+            tolerance=1.0, measured=float(max(widths)) if widths and np.all(np.isfinite(widths)) else math.nan)
     )
 
     fastest = claim(
-        c.at_least,
-        "fastest",
-        "check",
-        "sticky paper section 5.1.1: the hull costs O(n); a property of these implementations, not of the methods",
-        "cross",
-        "with these implementations an SPD is the fastest method at every W1 error the others reach: for every "
-        "timed run of another method, the time the best SPD needs for the same W1 (interpolated between its runs) "
-        f"over that run's time, smallest over data, times and runs (at least 1: faster); on {d['cpu']}",
-        1.0,
-        speed_ratio(d),
-    )
+        c.at_least, "fastest", kind="check",
+        source=(
+            "sticky paper section 5.1.1: the hull costs O(n); a property of these implementations, not of the methods"),
+        figure="cross",
+        text="with these implementations an SPD is the fastest method at every W1 error the others reach: for every "
+             "timed run of another method, the time the best SPD needs for the same W1 (interpolated between its runs) "
+             f"over that run's time, smallest over data, times and runs (at least 1: faster); on {d['cpu']}",
+        tolerance=1.0, measured=speed_ratio(d))
     disturbed = disturbance(d)
     rows.append(c.abstain(fastest, disturbed) if disturbed else fastest)
     return rows
@@ -425,56 +361,35 @@ def behaviour_claims(b, p):
     edge_ratio, explained, early = edge_collapse(b, rules["edge_proximity"])
     return [
         claim(
-            c.at_most,
-            "identity.first_collision",
-            "derived",
-            SOURCE_IDENTITY,
-            "cross",
-            "the particle method stops at the first meeting of neighbours "
-            "moving at the SPD velocities: largest |event time - predicted time|",
+            c.at_most, "identity.first_collision", kind="derived", source=SOURCE_IDENTITY, figure="cross",
+            text="the particle method stops at the first meeting of neighbours "
+                 "moving at the SPD velocities: largest |event time - predicted time|",
             # a root of DOP853's dense output, exact for the constant velocities up to rounding (amplified
             # where neighbours approach slowly: 1.2e-11 on the full run)
-            c.ROUNDING * TIME,
-            float(np.max(np.abs(b["collision_measured"] - b["collision_predicted"]))),
-        ),
+            tolerance=c.ROUNDING * TIME,
+            measured=float(np.max(np.abs(b["collision_measured"] - b["collision_predicted"])))),
         claim(
-            c.at_least,
-            "particle.stall",
-            "check",
-            SOURCE_IDENTITY,
-            "cross",
-            "without the collision event DOP853 chatters past the collision (the "
-            "velocities jump as particles cross and recross): right-hand sides per unit time after it over before "
-            "it, smallest over data",
-            rules["stall_rate_min"],
-            float(np.min(rates)),
-        ),
+            c.at_least, "particle.stall", kind="check", source=SOURCE_IDENTITY, figure="cross",
+            text="without the collision event DOP853 chatters past the collision (the "
+                 "velocities jump as particles cross and recross): right-hand sides per unit time after it over before "
+                 "it, smallest over data",
+            tolerance=rules["stall_rate_min"], measured=float(np.min(rates))),
         claim(
-            c.at_most,
-            "ltp.refusal",
-            "derived",
-            "LTP paper (2.31)-(2.32); blob paper section 4.1 (blow-up)",
-            "cross",
-            "LTP with W = |x|/2 is refused by the explicit Euler bound dt rho_h < 1 at "
-            "t = 1 - dt, to within one step, as rho_h(0) follows the exact 1/(1 - t): largest "
-            "|t_refused - (1 - dt)|/dt",
-            1.0 + c.ROUNDING,
-            float(np.max(refusal_miss)),
-        ),
+            c.at_most, "ltp.refusal", kind="derived",
+            source="LTP paper (2.31)-(2.32); blob paper section 4.1 (blow-up)", figure="cross",
+            text="LTP with W = |x|/2 is refused by the explicit Euler bound dt rho_h < 1 at "
+                 "t = 1 - dt, to within one step, as rho_h(0) follows the exact 1/(1 - t): largest "
+                 "|t_refused - (1 - dt)|/dt",
+            tolerance=1.0 + c.ROUNDING, measured=float(np.max(refusal_miss))),
         claim(
-            c.at_most,
-            "ltp.edge_collapse",
-            "check",
-            "LTP paper (2.31)-(2.32): the width update uses rho_h at the centre",
-            "cross",
-            "why the refusal comes early where it does: at every refusal more than a step early (every data and h) the "
-            "densest LTP particle sits at an end of the support and is narrower than the exact flow's (1 - t) h: "
-            f"largest (its width / (1 - t) h), infinite if it is not within {100 * rules['edge_proximity']:g} % of the "
-            f"support's half-width from an end (explained at {explained} of {early} early refusals; 0 if none is "
-            "early)",
-            rules["edge_width"],
-            edge_ratio,
-        ),
+            c.at_most, "ltp.edge_collapse", kind="check",
+            source="LTP paper (2.31)-(2.32): the width update uses rho_h at the centre", figure="cross",
+            text="why the refusal comes early where it does: at every refusal more than a step early (every data and "
+                 "h) the densest LTP particle sits at an end of the support and is narrower than the exact flow's (1 - "
+                 f"t) h: largest (its width / (1 - t) h), infinite if it is not within "
+                 f"{100 * rules['edge_proximity']:g} % of the support's half-width from an end (explained at "
+                 f"{explained} of {early} early refusals; 0 if none is early)",
+            tolerance=rules["edge_width"], measured=edge_ratio),
     ]
 
 
@@ -525,57 +440,63 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
     largest = np.nanmax(a["error"][rows][:, later], axis=1)
     bound = mass * length / 2.0
     out.append(claim(
-        c.at_most, f"{case}.spd_w1.equal_masses", "check", SOURCE_SPD, "aggregates",
-        f"SPD, equal masses, {case}: n times the largest W1 over the times after 0 (through the blow-ups and the "
-        f"merger), over M L/2 = {bound:.4g} (M the mass, L the support's length), largest over n = "
-        f"{_listed(a['size'][rows])}: at most 1 at every n. Each particle sits at the median of its levels, whose "
-        "positions span at most L in all, so W1 at t = 0 is at most (M/n) L/2, and the SPD, exact for its data, "
-        f"contracts W1 (n W1 / (M L/2): {_listed(a['size'][rows] * largest / bound)}). A consequence of the "
-        "construction and of the contraction (claimed by spd_contraction): a check",
-        1.0, float(np.max(a["size"][rows] * largest / bound))))
+        c.at_most, f"{case}.spd_w1.equal_masses", kind="check", source=SOURCE_SPD, figure="aggregates",
+        text=f"SPD, equal masses, {case}: n times the largest W1 over the times after 0 (through the blow-ups and the "
+             f"merger), over M L/2 = {bound:.4g} (M the mass, L the support's length), largest over n = "
+             f"{_listed(a['size'][rows])}: at most 1 at every n. Each particle sits at the median of its levels, whose "
+             "positions span at most L in all, so W1 at t = 0 is at most (M/n) L/2, and the SPD, exact for its data, "
+             f"contracts W1 (n W1 / (M L/2): {_listed(a['size'][rows] * largest / bound)}). A consequence of the "
+             "construction and of the contraction (claimed by spd_contraction): a check",
+        tolerance=1.0, measured=float(np.max(a["size"][rows] * largest / bound))))
     rows = _method_rows(a, "SPD, grid weights")
     out.append(claim(
-        c.between, f"{case}.spd_order.grid_weights", "derived", SOURCE_SPD, "aggregates",
-        f"SPD, grid weights, {case}: order in the particles of the largest W1 over the times after 0 (largest W1: "
-        f"{_listed(np.nanmax(a['error'][rows][:, later], axis=1))}): the data's discretisation is O(h), and the SPD "
-        "contracts W1", *rules["spd_order"], fitted("spd_order.grid_weights", "SPD, grid weights",
-                                                   np.nanmax(a["error"][rows][:, later], axis=1))))
+        c.between, f"{case}.spd_order.grid_weights", kind="derived", source=SOURCE_SPD, figure="aggregates",
+        text=f"SPD, grid weights, {case}: order in the particles of the largest W1 over the times after 0 (largest W1: "
+             f"{_listed(np.nanmax(a['error'][rows][:, later], axis=1))}): the data's discretisation is O(h), and the "
+             f"SPD contracts W1",
+        tolerance=rules["spd_order"],
+        measured=fitted("spd_order.grid_weights", "SPD, grid weights",
+                       np.nanmax(a["error"][rows][:, later], axis=1))))
     ratios = np.concatenate([(a["error"][r] / a["error"][r, :1]) for m in SPD_METHODS for r in _method_rows(a, m)])
     out.append(claim(
-        c.at_most, f"{case}.spd_contraction", "derived", SOURCE_SPD, "aggregates",
-        "both SPDs, every size: W1(SPD(t), exact(t)) / W1(SPD(0), exact(0)) over the time grid, largest (the entropy "
-        "solution contracts W1, and the SPD is the entropy solution of its discrete data; a wrong exact solution "
-        "after a blow-up or the merger, or a wrong cluster speed, breaks it)",
-        1.0 + rules["contraction_tolerance"], float(np.max(ratios))))
+        c.at_most, f"{case}.spd_contraction", kind="derived", source=SOURCE_SPD, figure="aggregates",
+        text="both SPDs, every size: W1(SPD(t), exact(t)) / W1(SPD(0), exact(0)) over the time grid, largest (the "
+             "entropy solution contracts W1, and the SPD is the entropy solution of its discrete data; a wrong exact "
+             "solution after a blow-up or the merger, or a wrong cluster speed, breaks it)",
+        tolerance=1.0 + rules["contraction_tolerance"], measured=float(np.max(ratios))))
     # The equal-mass SPD's merger: the envelope of its error over a block of consecutive n.
     block, mergers = a["spd_merger_n"], a["spd_merger"]
     envelope = np.max(np.abs(mergers - merger), axis=1)
     out.append(claim(
-        c.at_least, f"{case}.spd_merger.equal_masses", "derived", SOURCE_AGGREGATES, "aggregates",
-        f"SPD, equal masses, {case}: the time its two heavy clusters become one against the exact merger at "
-        f"{merger:.10g}; the share of a particle on either side of the bumps' boundary level follows n m_1/M, so the "
-        f"error changes sign and size from one n to the next: order in n of its largest value over the "
-        f"{block.shape[1]} consecutive n from each n = {_listed(block[:, 0])} (n |error|, largest per block: "
-        f"{_listed(np.max(np.abs(mergers - merger) * block, axis=1))})", rules["merger_order_min"],
-        -rates.add(order(f"{PAPER}.{case}.spd_merger.equal_masses", "n", block[:, 0].astype(float),
-                         np.maximum(envelope, 1e-300), window, "SPD, equal masses"))))
+        c.at_least, f"{case}.spd_merger.equal_masses", kind="derived", source=SOURCE_AGGREGATES, figure="aggregates",
+        text=f"SPD, equal masses, {case}: the time its two heavy clusters become one against the exact merger at "
+             f"{merger:.10g}; the share of a particle on either side of the bumps' boundary level follows n m_1/M, so "
+             f"the error changes sign and size from one n to the next: order in n of its largest value over the "
+             f"{block.shape[1]} consecutive n from each n = {_listed(block[:, 0])} (n |error|, largest per block: "
+             f"{_listed(np.max(np.abs(mergers - merger) * block, axis=1))})",
+        tolerance=rules["merger_order_min"],
+        measured=-rates.add(order(f"{PAPER}.{case}.spd_merger.equal_masses", "n", block[:, 0].astype(float),
+                                  np.maximum(envelope, 1e-300), window, "SPD, equal masses"))))
     rows = _method_rows(a, "SPD, grid weights")
     error = np.abs(a["method_merger"][rows] - merger)
     identity = bool(np.all(a["exact_identity"][times < merger][np.isfinite(a["exact_positions"][times < merger])]))
     if identity:
         out.append(claim(
-            c.at_most, f"{case}.spd_merger.grid_weights", "check", SOURCE_AGGREGATES, "aggregates",
-            f"SPD, grid weights, {case}: the time its two heavy clusters become one, against the exact merger at "
-            f"{merger:.10g}: largest error on the {window} finest grids (errors {_listed(error)}). Both bumps have "
-            "collapsed before they merge, so the merger is the time at which their centres of mass meet; the grid's "
-            "masses and centres are O(h^4) from the exact ones (trapezoid rule, the bumps' ends on the grid): an "
-            "identity, exact to rounding", c.ROUNDING * TIME, float(error[-window:].max())))
+            c.at_most, f"{case}.spd_merger.grid_weights", kind="check", source=SOURCE_AGGREGATES, figure="aggregates",
+            text=f"SPD, grid weights, {case}: the time its two heavy clusters become one, against the exact merger at "
+                 f"{merger:.10g}: largest error on the {window} finest grids (errors {_listed(error)}). Both bumps "
+                 f"have collapsed before they merge, so the merger is the time at which their centres of mass meet; "
+                 f"the grid's masses and centres are O(h^4) from the exact ones (trapezoid rule, the bumps' ends on "
+                 f"the grid): an identity, exact to rounding",
+            tolerance=c.ROUNDING * TIME, measured=float(error[-window:].max())))
     else:
         out.append(claim(
-            c.at_least, f"{case}.spd_merger.grid_weights", "derived", SOURCE_AGGREGATES, "aggregates",
-            f"SPD, grid weights, {case}: the time its two heavy clusters become one, against the exact merger at "
-            f"{merger:.10g}: order in the particles of the error (errors {_listed(error)})",
-            rules["merger_order_min"], fitted("spd_merger.grid_weights", "SPD, grid weights", error)))
+            c.at_least, f"{case}.spd_merger.grid_weights", kind="derived", source=SOURCE_AGGREGATES,
+            figure="aggregates",
+            text=f"SPD, grid weights, {case}: the time its two heavy clusters become one, against the exact merger at "
+                 f"{merger:.10g}: order in the particles of the error (errors {_listed(error)})",
+            tolerance=rules["merger_order_min"],
+            measured=fitted("spd_merger.grid_weights", "SPD, grid weights", error)))
     first_blowup = float(np.min(a["blowups"]))
     for method, key, when, band, why in (
             ("LTP", "ltp_order", later & (times < first_blowup), p["claims"]["ltp_order"],
@@ -591,18 +512,20 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
                 "sp_order_after": f"after the first blow-up (t = {first_blowup:g})",
                 "godunov_order": "after 0"}[key]
         out.append(claim(
-            c.between, f"{case}.{key}", "derived",
-            "LTP paper (2.31) and section 2.1 (SP); outside their assumptions" if key != "godunov_order" else
-            "Godunov (1959); LeVeque (2002) section 12", "aggregates",
-            f"{method}, {case}: order in the particles (cells) of the largest W1 over the times {span}: {why} "
-            f"(largest W1: {_listed(largest)})", *band, fitted(key, method, largest)))
+            c.between, f"{case}.{key}", kind="derived",
+            source="LTP paper (2.31) and section 2.1 (SP); outside their assumptions" if key != "godunov_order" else
+                   "Godunov (1959); LeVeque (2002) section 12",
+            figure="aggregates",
+            text=f"{method}, {case}: order in the particles (cells) of the largest W1 over the times {span}: {why} "
+                 f"(largest W1: {_listed(largest)})",
+            tolerance=band, measured=fitted(key, method, largest)))
     rows = _method_rows(a, "particle method")
     out.append(claim(
-        c.at_most, f"{case}.particle_spd", "check", SOURCE_IDENTITY, "aggregates",
-        f"the particle method (DOP853, rtol 1e-12) on {case} equals the grid SPD of the same particles at every "
-        f"time of the grid before its first collision (t < {first_blowup:g}), the first blow-up: largest "
-        f"|x_particle - x_SPD| over 1/h = {', '.join(str(int(k)) for k in a['size'][rows])}",
-        c.ROUNDING * LENGTH, float(np.max(a["spd_difference"][rows])) if rows.size else math.nan))
+        c.at_most, f"{case}.particle_spd", kind="check", source=SOURCE_IDENTITY, figure="aggregates",
+        text=f"the particle method (DOP853, rtol 1e-12) on {case} equals the grid SPD of the same particles at every "
+             f"time of the grid before its first collision (t < {first_blowup:g}), the first blow-up: largest "
+             f"|x_particle - x_SPD| over 1/h = {', '.join(str(int(k)) for k in a['size'][rows])}",
+        tolerance=c.ROUNDING * LENGTH, measured=float(np.max(a["spd_difference"][rows])) if rows.size else math.nan))
     # The aggregates at the fixed times: their levels (mass and position together) and centres.
     fixed = [int(np.argmin(np.abs(times - t))) for t in a["fixed_times"]]
     fixed = [i for i in fixed if np.any(np.isfinite(a["exact_positions"][i]))]
@@ -619,21 +542,24 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
             # the envelope over a block of consecutive n.
             envelope = np.max(a["spd_levels"], axis=1)
             out.append(claim(
-                c.at_least, f"{case}.aggregate.spd_equal_levels", "derived", SOURCE_AGGREGATES, "aggregates",
-                f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the SPD "
-                f"({LEVELS}), largest over "
-                f"the aggregates at t = {at} and over the {block.shape[1]} consecutive n from each n = "
-                f"{_listed(block[:, 0])} (the particle straddling the bumps' boundary level sets its constant; values "
-                f"{_listed(envelope)}): order in n at least {minimum:g}", minimum,
-                -rates.add(order(f"{PAPER}.{case}.aggregate.spd_equal_levels", "n", block[:, 0].astype(float),
-                                 np.maximum(envelope, 1e-300), window, name))))
+                c.at_least, f"{case}.aggregate.spd_equal_levels", kind="derived", source=SOURCE_AGGREGATES,
+                figure="aggregates",
+                text=f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the SPD "
+                     f"({LEVELS}), largest over "
+                     f"the aggregates at t = {at} and over the {block.shape[1]} consecutive n from each n = "
+                     f"{_listed(block[:, 0])} (the particle straddling the bumps' boundary level sets its constant; "
+                     f"values {_listed(envelope)}): order in n at least {minimum:g}",
+                tolerance=minimum,
+                measured=-rates.add(order(f"{PAPER}.{case}.aggregate.spd_equal_levels", "n", block[:, 0].astype(float),
+                                          np.maximum(envelope, 1e-300), window, name))))
             continue
         out.append(claim(
-            c.at_least, f"{case}.aggregate.{key}_levels", "derived", SOURCE_AGGREGATES, "aggregates",
-            f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the method's "
-            f"output ({LEVELS}), largest over "
-            f"the aggregates at t = {at} (values {_listed(spreads)}): order in the particles (cells) at least "
-            f"{minimum:g}", minimum, fitted(f"aggregate.{key}_levels", name, spreads)))
+            c.at_least, f"{case}.aggregate.{key}_levels", kind="derived", source=SOURCE_AGGREGATES, figure="aggregates",
+            text=f"{name}, {case}: the mean distance of each exact aggregate's levels from its position in the "
+                 f"method's output ({LEVELS}), largest over "
+                 f"the aggregates at t = {at} (values {_listed(spreads)}): order in the particles (cells) at least "
+                 f"{minimum:g}",
+            tolerance=minimum, measured=fitted(f"aggregate.{key}_levels", name, spreads)))
         if key.startswith("spd"):
             continue
         # Godunov has no pair forces: its centres are never identities (its errors are its numerical diffusion).
@@ -643,28 +569,33 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
                     f"over them) against the aggregate's position, largest over the aggregates at t = {at}")
         if key == "godunov":
             out.append(claim(
-                c.at_least, f"{case}.aggregate.godunov_centres", "derived", SOURCE_AGGREGATES, "aggregates",
-                f"{measured} (errors {_listed(errors)}): a discrete shock of F smeared over a few cells, whose speed "
-                f"conservation fixes: order in the cells at least {rules['centre_order_min'][key]:g}",
-                rules["centre_order_min"][key], fitted(f"aggregate.{key}_centres", name, errors)))
+                c.at_least, f"{case}.aggregate.godunov_centres", kind="derived", source=SOURCE_AGGREGATES,
+                figure="aggregates",
+                text=f"{measured} (errors {_listed(errors)}): a discrete shock of F smeared over a few cells, whose "
+                     f"speed conservation fixes: order in the cells at least {rules['centre_order_min'][key]:g}",
+                tolerance=rules["centre_order_min"][key], measured=fitted(f"aggregate.{key}_centres", name, errors)))
         elif free.any():
             out.append(claim(
-                c.at_least, f"{case}.aggregate.{key}_centres", "derived", SOURCE_AGGREGATES, "aggregates",
-                f"{measured} whose position is no centre-of-mass identity (errors {_listed(errors)}): order in the "
-                f"particles (cells) at least {rules['centre_order_min'][key]:g}", rules["centre_order_min"][key],
-                fitted(f"aggregate.{key}_centres", name, errors)))
+                c.at_least, f"{case}.aggregate.{key}_centres", kind="derived", source=SOURCE_AGGREGATES,
+                figure="aggregates",
+                text=f"{measured} whose position is no centre-of-mass identity (errors {_listed(errors)}): order in "
+                     f"the particles (cells) at least {rules['centre_order_min'][key]:g}",
+                tolerance=rules["centre_order_min"][key], measured=fitted(f"aggregate.{key}_centres", name, errors)))
         elif key == "sp":
             out.append(claim(
-                c.at_most, f"{case}.aggregate.sp_centres", "check", SOURCE_AGGREGATES, "aggregates",
-                f"{measured}, largest over h (errors {_listed(errors)}): exact to rounding. {IDENTITY} SP's pair "
-                "forces (W' * phi_eps, odd) cancel within a bump, and the other bump, more than 4 eps away, pulls it "
-                "with exactly its mass/2 (B3 has compact support)", c.ROUNDING * LENGTH, float(np.max(errors))))
+                c.at_most, f"{case}.aggregate.sp_centres", kind="check", source=SOURCE_AGGREGATES, figure="aggregates",
+                text=f"{measured}, largest over h (errors {_listed(errors)}): exact to rounding. {IDENTITY} SP's pair "
+                     "forces (W' * phi_eps, odd) cancel within a bump, and the other bump, more than 4 eps away, pulls "
+                     "it with exactly its mass/2 (B3 has compact support)",
+                tolerance=c.ROUNDING * LENGTH, measured=float(np.max(errors))))
         else:
             out.append(claim(
-                c.at_least, f"{case}.aggregate.blob_centres", "check", SOURCE_AGGREGATES, "aggregates",
-                f"{measured} (errors {_listed(errors)}). {IDENTITY} The blob's bumps carry the trapezoid rule's masses "
-                f"and centres, O(h^4) from the exact ones: order at least {rules['blob_identity_order_min']:g}",
-                rules["blob_identity_order_min"], fitted("aggregate.blob_centres", name, errors)))
+                c.at_least, f"{case}.aggregate.blob_centres", kind="check", source=SOURCE_AGGREGATES,
+                figure="aggregates",
+                text=f"{measured} (errors {_listed(errors)}). {IDENTITY} The blob's bumps carry the trapezoid rule's "
+                     f"masses and centres, O(h^4) from the exact ones: order at least "
+                     f"{rules['blob_identity_order_min']:g}",
+                tolerance=rules["blob_identity_order_min"], measured=fitted("aggregate.blob_centres", name, errors)))
     # W1 around the merger.
     around = np.isin(times, a["window_times"])
     for method, key in (("SPD, grid weights", "spd_grid"), (blob_name, "blob"), ("SP", "sp"),
@@ -673,11 +604,11 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
         largest = np.nanmax(a["error"][rows][:, around], axis=1)
         minimum = rules["merger_order_min_w1"][key]
         out.append(claim(
-            c.at_least, f"{case}.merger_w1.{key}", "derived", SOURCE_AGGREGATES, "aggregates",
-            f"{method}, {case}: the largest W1 over the times t* + ({_listed(a['window_times'] - merger)}) around the "
-            f"exact merger t* = {merger:.6g} (no threshold: a merger early or late by more than the method's error "
-            f"raises it; values {_listed(largest)}): order in the particles (cells) at least {minimum:g}", minimum,
-            fitted(f"merger_w1.{key}", method, largest)))
+            c.at_least, f"{case}.merger_w1.{key}", kind="derived", source=SOURCE_AGGREGATES, figure="aggregates",
+            text=f"{method}, {case}: the largest W1 over the times t* + ({_listed(a['window_times'] - merger)}) around "
+                 f"the exact merger t* = {merger:.6g} (no threshold: a merger early or late by more than the method's "
+                 f"error raises it; values {_listed(largest)}): order in the particles (cells) at least {minimum:g}",
+            tolerance=minimum, measured=fitted(f"merger_w1.{key}", method, largest)))
     # What the data test: aggregates off their bumps' centres of mass, mass still free when they merge.
     before = times < merger
     offset = float(np.nanmax(a["exact_offsets"][before]))
@@ -686,22 +617,26 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
     free_share = 1.0 - float(np.nansum(merging)) / mass
     if free.any():
         out += [
-            claim(c.at_least, f"{case}.data.off_centre", "check", SOURCE_AGGREGATES, "aggregates",
-                  f"{case}, exact: the largest distance of an aggregate from the centre of mass of the bump that holds "
-                  "its middle level (which moves at the mean speed of its levels), on the time grid before the "
-                  "merger: the data make the aggregates' positions more than a centre-of-mass identity",
-                  rules["off_centre_min"], offset),
-            claim(c.at_least, f"{case}.data.free_at_merger", "check", SOURCE_AGGREGATES, "aggregates",
-                  f"{case}, exact: the share of the mass outside the two aggregates at t = {float(times[last]):.4g}, "
-                  "the last time of the grid before they merge (the merger is then no meeting of two bumps' centres of "
-                  "mass)", rules["free_share_min"], free_share),
+            claim(
+                c.at_least, f"{case}.data.off_centre", kind="check", source=SOURCE_AGGREGATES, figure="aggregates",
+                text=f"{case}, exact: the largest distance of an aggregate from the centre of mass of the bump that "
+                     f"holds its middle level (which moves at the mean speed of its levels), on the time grid before "
+                     f"the merger: the data make the aggregates' positions more than a centre-of-mass identity",
+                tolerance=rules["off_centre_min"], measured=offset),
+            claim(
+                c.at_least, f"{case}.data.free_at_merger", kind="check", source=SOURCE_AGGREGATES, figure="aggregates",
+                text=f"{case}, exact: the share of the mass outside the two aggregates at t = "
+                     f"{float(times[last]):.4g}, the last time of the grid before they merge (the merger is then no "
+                     f"meeting of two bumps' centres of mass)",
+                tolerance=rules["free_share_min"], measured=free_share),
         ]
     else:
         out.append(claim(
-            c.at_most, f"{case}.data.off_centre", "check", SOURCE_AGGREGATES, "aggregates",
-            f"{case}, exact: the largest distance of an aggregate from the centre of mass of the bump that holds its "
-            "middle level, on the time grid before the merger: 0 to rounding, so every aggregate's position is a "
-            "centre-of-mass identity on these data", c.ROUNDING * LENGTH, offset))
+            c.at_most, f"{case}.data.off_centre", kind="check", source=SOURCE_AGGREGATES, figure="aggregates",
+            text=f"{case}, exact: the largest distance of an aggregate from the centre of mass of the bump that holds "
+                 f"its middle level, on the time grid before the merger: 0 to rounding, so every aggregate's position "
+                 f"is a centre-of-mass identity on these data",
+            tolerance=c.ROUNDING * LENGTH, measured=offset))
     # The blob's gap at the merger, where the two aggregates hold all the mass (a two-body problem).
     if free_share <= 1e-9:
         from particle_methods.cross.aggregates import two_body_gap
@@ -710,13 +645,14 @@ def aggregate_claims(a, rates: Recorder, p, q, case: str):
         rows = _method_rows(a, blob_name)
         gaps = a["merger_gap"][rows]
         out.append(claim(
-            c.at_most, f"{case}.aggregate.blob_merger_gap", "derived", SOURCE_AGGREGATES, "aggregates",
-            f"{blob_name}, {case}: the gap between its two aggregates (the centres of the exact aggregates' levels) at "
-            f"the exact merger, over delta, against {predicted:.5f}, the two-body prediction with no fitted parameter "
-            "(both bumps have collapsed, so the two point masses approach at (M/2) f(gap/delta), f the mollified "
-            f"sign; particle_methods.cross.aggregates.two_body_gap): largest |ratio - 1| over 1/h = "
-            f"{_listed(a['size'][rows])} (gaps / delta {_listed(gaps, 5)})", rules["merger_gap_tolerance"],
-            float(np.max(np.abs(gaps / predicted - 1.0)))))
+            c.at_most, f"{case}.aggregate.blob_merger_gap", kind="derived", source=SOURCE_AGGREGATES,
+            figure="aggregates",
+            text=f"{blob_name}, {case}: the gap between its two aggregates (the centres of the exact aggregates' "
+                 f"levels) at the exact merger, over delta, against {predicted:.5f}, the two-body prediction with no "
+                 f"fitted parameter (both bumps have collapsed, so the two point masses approach at (M/2) "
+                 f"f(gap/delta), f the mollified sign; particle_methods.cross.aggregates.two_body_gap): largest |ratio "
+                 f"- 1| over 1/h = {_listed(a['size'][rows])} (gaps / delta {_listed(gaps, 5)})",
+            tolerance=rules["merger_gap_tolerance"], measured=float(np.max(np.abs(gaps / predicted - 1.0)))))
     return out
 
 

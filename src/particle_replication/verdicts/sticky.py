@@ -46,15 +46,21 @@ def burgers_claims(d, rates: Recorder, window: int, tolerance: float):
     ratios = d["errors"][1:] / d["errors"][:-1]
     even = d["error_n"] % 2 == 0
     return [
-        claim(c.close_to, "fig2d.order", "paper", "Figure 2 (d), section 5.1.2", "2d",
-              f"log L1 error against p (n = 2^p) has slope -log 2 for every t (order 1/n), fitted on the {window} "
-              "largest n; worst line", -np.log(2), worst, tolerance),
-        claim(c.at_least, "fig2d.ordering", "paper", "Figure 2 (d) caption", "2d",
-              "higher curves for larger t: smallest ratio error(t_next)/error(t) over all n", 1.0 + c.ROUNDING,
-              float(ratios.min()), published="> 1"),
-        claim(c.at_most, "fig2d.no_initial_error", "check", "(2.1) with two atoms, section 5.1.2", "2d",
-              "(2.1) puts n/2 particles on each atom for even n, so W1(m, mu_n) = 0: largest value over even n",
-              c.ROUNDING * DISTANCE_SCALE, float(np.abs(d["initial_errors"][even]).max()), published="0"),
+        claim(
+            c.close_to, "fig2d.order", kind="paper", source="Figure 2 (d), section 5.1.2", figure="2d",
+            text=f"log L1 error against p (n = 2^p) has slope -log 2 for every t (order 1/n), fitted on the {window} "
+                 "largest n; worst line",
+            published=-np.log(2), measured=worst, tolerance=tolerance),
+        claim(
+            c.at_least, "fig2d.ordering", kind="paper", source="Figure 2 (d) caption", figure="2d",
+            text="higher curves for larger t: smallest ratio error(t_next)/error(t) over all n",
+            tolerance=1.0 + c.ROUNDING, measured=float(ratios.min()), published="> 1"),
+        claim(
+            c.at_most, "fig2d.no_initial_error", kind="check", source="(2.1) with two atoms, section 5.1.2",
+            figure="2d",
+            text="(2.1) puts n/2 particles on each atom for even n, so W1(m, mu_n) = 0: largest value over even n",
+            tolerance=c.ROUNDING * DISTANCE_SCALE, measured=float(np.abs(d["initial_errors"][even]).max()),
+            published="0"),
     ]
 
 
@@ -95,31 +101,38 @@ def concave_claims(d, rates: Recorder, window: int, band):
     lower, upper = band
     moving_count = int(moving.sum())
     return [
-        claim(c.at_most, "fig3d.plateau_then_decay", "paper", "Figure 3 (d), section 5.1.3", "3d",
-              f"for each t > 0 the error is constant in n up to a critical n, at the distance from u(t) to a step "
-              f"(every particle in the shock), then strictly decreasing; {both} of the {moving_count} curves show both "
-              "a plateau and a decay in the plotted range: number of violations (a curve not decreasing past its "
-              "plateau, a plateau away from the step distance, or no curve with both)", 0.0, float(violations),
-              published="plateau, then decay"),
-        claim(c.at_least, "fig3d.critical_n_grows", "paper", "section 5.1.3", "3d",
-              "the larger t, the more particles it takes to leave the plateau: smallest change of the critical n "
-              f"between consecutive t among the {len(critical)} curves with a plateau and a decay in the plotted range"
-              + (f" (critical n from {critical[0]:g} to {critical[-1]:g})" if critical else ""), 0.0,
-              float(growth.min()) if growth.size else math.nan, published="non-decreasing"),
-        claim(c.between, "fig3d.decay_plotted", "paper", "Figure 3 (d), section 5.1.3", "3d",
-              f"past the plateau the error decays like log(n)/n, in the plotted range: slope of n error against "
-              f"log n on the {window} largest plotted n, for the {len(plotted)} times whose window is past the "
-              "plateau; the value farthest from the band's centre", lower, upper,
-              chosen(plotted, lambda values: c.farthest_from_centre(values, band)),
-              published="log(n)/n"),
-        claim(c.between, "fig3d.decay_asymptotic", "paper", "Figure 3 (d), section 5.1.3", "3d",
-              f"the decay rate is that of the initial discretisation, log(n)/n: slope of n error against log n for "
-              f"n = {', '.join(f'2^{int(np.log2(v))}' for v in rate_n)}, every t; the value farthest from the band's "
-              "centre", lower, upper,
-              chosen(asymptotic, lambda values: c.farthest_from_centre(values, band)), published="log(n)/n"),
-        claim(c.at_most, "fig3d.ordering", "paper", "Figure 3 (d) caption", "3d",
-              "higher curves for smaller t: largest ratio error(t_next)/error(t) over all n", 1.0 + c.ROUNDING,
-              float(ratios.max()), published="<= 1"),
+        claim(
+            c.at_most, "fig3d.plateau_then_decay", kind="paper", source="Figure 3 (d), section 5.1.3", figure="3d",
+            text=f"for each t > 0 the error is constant in n up to a critical n, at the distance from u(t) to a step "
+                 f"(every particle in the shock), then strictly decreasing; {both} of the {moving_count} curves show "
+                 f"both a plateau and a decay in the plotted range: number of violations (a curve not decreasing past "
+                 f"its plateau, a plateau away from the step distance, or no curve with both)",
+            tolerance=0.0, measured=float(violations), published="plateau, then decay"),
+        claim(
+            c.at_least, "fig3d.critical_n_grows", kind="paper", source="section 5.1.3", figure="3d",
+            text="the larger t, the more particles it takes to leave the plateau: smallest change of the critical n "
+                 f"between consecutive t among the {len(critical)} curves with a plateau and a decay in the plotted "
+                 f"range"
+                 + (f" (critical n from {critical[0]:g} to {critical[-1]:g})" if critical else ""),
+            tolerance=0.0, measured=float(growth.min()) if growth.size else math.nan, published="non-decreasing"),
+        claim(
+            c.between, "fig3d.decay_plotted", kind="paper", source="Figure 3 (d), section 5.1.3", figure="3d",
+            text=f"past the plateau the error decays like log(n)/n, in the plotted range: slope of n error against "
+                 f"log n on the {window} largest plotted n, for the {len(plotted)} times whose window is past the "
+                 "plateau; the value farthest from the band's centre",
+            tolerance=(lower, upper), measured=chosen(plotted, lambda values: c.farthest_from_centre(values, band)),
+            published="log(n)/n"),
+        claim(
+            c.between, "fig3d.decay_asymptotic", kind="paper", source="Figure 3 (d), section 5.1.3", figure="3d",
+            text=f"the decay rate is that of the initial discretisation, log(n)/n: slope of n error against log n for "
+                 f"n = {', '.join(f'2^{int(np.log2(v))}' for v in rate_n)}, every t; the value farthest from the "
+                 f"band's centre",
+            tolerance=(lower, upper), measured=chosen(asymptotic, lambda values: c.farthest_from_centre(values, band)),
+            published="log(n)/n"),
+        claim(
+            c.at_most, "fig3d.ordering", kind="paper", source="Figure 3 (d) caption", figure="3d",
+            text="higher curves for smaller t: largest ratio error(t_next)/error(t) over all n",
+            tolerance=1.0 + c.ROUNDING, measured=float(ratios.max()), published="<= 1"),
     ]
 
 
@@ -131,9 +144,10 @@ def theorem31_claims(burgers, concave):
         t = d["error_times"][moving][:, None]
         bound = d["initial_errors"][None, :] + t * d["flux_lipschitz"] / d["error_n"][None, :]
         ratios.append((d["errors"][moving] / bound).max())
-    return [claim(c.at_most, "thm31.bound", "paper", "Theorem 3.1", "2d, 3d",
-                  "error <= W1(m, mu_0) + t L_LC / n: largest ratio error/bound over t > 0 in Figures 2 (d) and 3 (d)",
-                  1.0 + c.ROUNDING, float(max(ratios)), published="<= 1")]
+    return [claim(
+        c.at_most, "thm31.bound", kind="paper", source="Theorem 3.1", figure="2d, 3d",
+        text="error <= W1(m, mu_0) + t L_LC / n: largest ratio error/bound over t > 0 in Figures 2 (d) and 3 (d)",
+        tolerance=1.0 + c.ROUNDING, measured=float(max(ratios)), published="<= 1")]
 
 
 def remark33_claims(d, godunov_decrease: float, convex_tolerance: float):
@@ -169,53 +183,62 @@ def remark33_claims(d, godunov_decrease: float, convex_tolerance: float):
     states = f"{merged} of these {d['admissibility_clusters'].size} states hold clusters of several particles"
     convex_shrink = float(d["convex_distances"][finest] / d["convex_distances"][coarsest])
     return [
-        claim(c.at_most, "remark33.dirac", "paper", "Remark 3.3", "Remark 3.3",
-              "Burgers from delta_0: error exactly t/(4n); largest |error - t/(4n)| / t (t: the extent of the "
-              "positions)", c.ROUNDING, float(dirac_gap),
-              published="t/(4n)"),
-        claim(c.at_most, "remark33.concave", "paper", "Remark 3.3", "Remark 3.3",
-              f"concave flux: the SPD of the discretised data (2.1) is its entropy solution: the SPD's measure against "
-              f"Hopf's formula for the entropy solution of the same atoms (the Legendre transform of its primitive is "
-              f"the convex envelope of W_0^* + t Lambda, exact at the levels k/n), which needs no velocity: largest "
-              f"violation relative to the largest term compared, over {cases} ({states}). The same test on Burgers "
-              f"from the two atoms of Figure 2, whose upward jumps are rarefactions (the SPD's G lies above f by "
-              f"about t/(8 n^2) between levels), finds at least {fan[0]:.3g} for t > 0 at n = "
-              f"{int(d['admissibility_n'][0])} and {fan[-1]:.3g} at n = {int(d['admissibility_n'][-1])}",
-              c.ROUNDING, float(d["hopf_gaps"].max()), published="distance 0"),
-        claim(c.at_most, "remark33.oleinik", "check", "Remark 3.3 (by construction of the SPD)", "Remark 3.3",
-              f"concave flux: every cluster moves at the Rankine-Hugoniot speed of the jump of u it carries (the mean "
-              f"of its particles' velocities n (Lambda(c_k) - Lambda(c_k-1)), a telescoping sum) and every jump "
-              f"satisfies Oleinik's condition (a concave flux lies above every chord): both hold by construction, so "
-              f"this checks our implementation, not the remark; largest violation relative to the largest speed "
-              f"compared, over {cases}; on Burgers from two atoms at least "
-              f"{float(d['convex_admissibility'].min()):.3g}", c.ROUNDING, float(violation),
-              published="(our check)"),
-        claim(c.at_most, "remark33.godunov_refinement", "check", "Remark 3.3 (an independent solver: our check)",
-              "Remark 3.3",
-              f"concave flux: the L1 distance between a Godunov solution (from the same data, a cell edge at the "
-              f"shock) and the SPD falls towards 0 as the grid is refined, as it does towards the entropy solution: "
-              f"distance on the finest grid ({int(cells[finest])} cells per unit) over that on the coarsest "
-              f"({int(cells[coarsest])}), largest over n = {', '.join(map(str, d['godunov_n']))} and t = "
-              f"{', '.join(f'{v:g}' for v in d['godunov_times'])} ({exact} of these cases agree to rounding on "
-              f"every grid, counted as 0); a non-entropic SPD levels off at its own distance (Burgers from delta_0, "
-              f"n = {int(d['convex_n'])}: {convex_shrink:.3g}). It cannot show the distance is 0 at a given n: "
-              f"jumps of 1/n need grids far finer than 1/n (check remark33.refinement); the exact test is "
-              f"remark33.concave", 1.0 / godunov_decrease, float(max(shrink)),
-              published="(our check)"),
-        claim(c.at_least, "remark33.refinement", "check", "Remark 3.3 (diagnostic of our measure)", "Remark 3.3",
-              f"n = {int(d['refined_n'])}, t = {float(d['refined_t']):g} on finer grids "
-              f"({', '.join(map(str, d['refined_cells']))} cells per unit): the pairwise order rises towards the "
-              f"scheme's order ({', '.join(f'{o:.2f}' for o in refined)}); rise from the first to the last pair",
-              0.0, float(refined[-1] - refined[0]), published="(our diagnostic)"),
-        claim(c.relatively_close_to, "remark33.godunov_convex", "check", "Remark 3.3 (Burgers example)",
-              "Remark 3.3",
-              f"the same Godunov measure sees a non-entropic SPD: Burgers from delta_0, n = {int(d['convex_n'])}, "
-              f"t = {float(d['convex_t']):g}: distance on the finest grid against t/(4n)", expected,
-              float(d["convex_distances"][-1]), convex_tolerance),
-        claim(c.at_most, "remark33.contraction", "derived", "Remark 3.3 with the L1 stability of Theorem 1.1",
-              "Remark 3.3",
-              "concave flux: the SPD error never exceeds the initial discretisation error; largest ratio over t > 0",
-              1.0 + c.ROUNDING, float(contraction), published="<= 1"),
+        claim(
+            c.at_most, "remark33.dirac", kind="paper", source="Remark 3.3", figure="Remark 3.3",
+            text="Burgers from delta_0: error exactly t/(4n); largest |error - t/(4n)| / t (t: the extent of the "
+                 "positions)",
+            tolerance=c.ROUNDING, measured=float(dirac_gap), published="t/(4n)"),
+        claim(
+            c.at_most, "remark33.concave", kind="paper", source="Remark 3.3", figure="Remark 3.3",
+            text=f"concave flux: the SPD of the discretised data (2.1) is its entropy solution: the SPD's measure "
+                 f"against Hopf's formula for the entropy solution of the same atoms (the Legendre transform of its "
+                 f"primitive is the convex envelope of W_0^* + t Lambda, exact at the levels k/n), which needs no "
+                 f"velocity: largest violation relative to the largest term compared, over {cases} ({states}). The "
+                 f"same test on Burgers from the two atoms of Figure 2, whose upward jumps are rarefactions (the SPD's "
+                 f"G lies above f by about t/(8 n^2) between levels), finds at least {fan[0]:.3g} for t > 0 at n = "
+                 f"{int(d['admissibility_n'][0])} and {fan[-1]:.3g} at n = {int(d['admissibility_n'][-1])}",
+            tolerance=c.ROUNDING, measured=float(d["hopf_gaps"].max()), published="distance 0"),
+        claim(
+            c.at_most, "remark33.oleinik", kind="check", source="Remark 3.3 (by construction of the SPD)",
+            figure="Remark 3.3",
+            text=f"concave flux: every cluster moves at the Rankine-Hugoniot speed of the jump of u it carries (the "
+                 f"mean of its particles' velocities n (Lambda(c_k) - Lambda(c_k-1)), a telescoping sum) and every "
+                 f"jump satisfies Oleinik's condition (a concave flux lies above every chord): both hold by "
+                 f"construction, so this checks our implementation, not the remark; largest violation relative to the "
+                 f"largest speed compared, over {cases}; on Burgers from two atoms at least "
+                 f"{float(d['convex_admissibility'].min()):.3g}",
+            tolerance=c.ROUNDING, measured=float(violation), published="(our check)"),
+        claim(
+            c.at_most, "remark33.godunov_refinement", kind="check",
+            source="Remark 3.3 (an independent solver: our check)", figure="Remark 3.3",
+            text=f"concave flux: the L1 distance between a Godunov solution (from the same data, a cell edge at the "
+                 f"shock) and the SPD falls towards 0 as the grid is refined, as it does towards the entropy solution: "
+                 f"distance on the finest grid ({int(cells[finest])} cells per unit) over that on the coarsest "
+                 f"({int(cells[coarsest])}), largest over n = {', '.join(map(str, d['godunov_n']))} and t = "
+                 f"{', '.join(f'{v:g}' for v in d['godunov_times'])} ({exact} of these cases agree to rounding on "
+                 f"every grid, counted as 0); a non-entropic SPD levels off at its own distance (Burgers from delta_0, "
+                 f"n = {int(d['convex_n'])}: {convex_shrink:.3g}). It cannot show the distance is 0 at a given n: "
+                 f"jumps of 1/n need grids far finer than 1/n (check remark33.refinement); the exact test is "
+                 f"remark33.concave",
+            tolerance=1.0 / godunov_decrease, measured=float(max(shrink)), published="(our check)"),
+        claim(
+            c.at_least, "remark33.refinement", kind="check", source="Remark 3.3 (diagnostic of our measure)",
+            figure="Remark 3.3",
+            text=f"n = {int(d['refined_n'])}, t = {float(d['refined_t']):g} on finer grids "
+                 f"({', '.join(map(str, d['refined_cells']))} cells per unit): the pairwise order rises towards the "
+                 f"scheme's order ({', '.join(f'{o:.2f}' for o in refined)}); rise from the first to the last pair",
+            tolerance=0.0, measured=float(refined[-1] - refined[0]), published="(our diagnostic)"),
+        claim(
+            c.relatively_close_to, "remark33.godunov_convex", kind="check", source="Remark 3.3 (Burgers example)",
+            figure="Remark 3.3",
+            text=f"the same Godunov measure sees a non-entropic SPD: Burgers from delta_0, n = {int(d['convex_n'])}, "
+                 f"t = {float(d['convex_t']):g}: distance on the finest grid against t/(4n)",
+            published=expected, measured=float(d["convex_distances"][-1]), tolerance=convex_tolerance),
+        claim(
+            c.at_most, "remark33.contraction", kind="derived", source="Remark 3.3 with the L1 stability of Theorem 1.1",
+            figure="Remark 3.3",
+            text="concave flux: the SPD error never exceeds the initial discretisation error; largest ratio over t > 0",
+            tolerance=1.0 + c.ROUNDING, measured=float(contraction), published="<= 1"),
     ]
 
 
@@ -236,47 +259,57 @@ def lemma21_claims(d, rates: Recorder, window: int, weibull_band, growth_ratio: 
     sqrt_names = [key[: -len("_sqrt_variance")] for key in d if key.endswith("_sqrt_variance")]
     ratio_ii = max((d[m] * np.sqrt(n_values) / d[f"{m}_sqrt_variance"]).max() for m in sqrt_names)
     out = [
-        claim(c.at_most, "lemma21.iii", "paper", "Lemma 2.1 (iii)", "Lemma 2.1",
-              f"W1(m, mu_n) <= (b - a)/(2n) for m on [a, b]: largest excess W1 - (b - a)/(2n), in units of b - a "
-              f"(the bound is attained: 0 up to rounding), over {', '.join(compact)}, even and odd n",
-              c.ROUNDING, float(bound_excess), published="<= (b - a)/(2n)"),
-        claim(c.at_most, "lemma21.ii", "paper", "Lemma 2.1 (ii)", "Lemma 2.1",
-              f"W1(m, mu_n) <= n^(-1/2) int sqrt(F(1 - F)); largest ratio over {len(sqrt_names)} measures",
-              1.0 + quadrature_margin, float(ratio_ii)),
-        claim(c.at_most, "lemma21.iv.uniform", "check", "Lemma 2.1 (iv)", "Lemma 2.1",
-              "uniform law on [0, 1]: n W1 = 1/4 exactly for every n (an identity, a check of the W1 computation); "
-              "largest |W1 - 1/(4n)| (measures on [0, 1]: scale 1)", c.ROUNDING,
-              float(np.abs(d["uniform"] - 0.25 / n_values).max()), published="1/4"),
+        claim(
+            c.at_most, "lemma21.iii", kind="paper", source="Lemma 2.1 (iii)", figure="Lemma 2.1",
+            text=f"W1(m, mu_n) <= (b - a)/(2n) for m on [a, b]: largest excess W1 - (b - a)/(2n), in units of b - a "
+                 f"(the bound is attained: 0 up to rounding), over {', '.join(compact)}, even and odd n",
+            tolerance=c.ROUNDING, measured=float(bound_excess), published="<= (b - a)/(2n)"),
+        claim(
+            c.at_most, "lemma21.ii", kind="paper", source="Lemma 2.1 (ii)", figure="Lemma 2.1",
+            text=f"W1(m, mu_n) <= n^(-1/2) int sqrt(F(1 - F)); largest ratio over {len(sqrt_names)} measures",
+            tolerance=1.0 + quadrature_margin, measured=float(ratio_ii)),
+        claim(
+            c.at_most, "lemma21.iv.uniform", kind="check", source="Lemma 2.1 (iv)", figure="Lemma 2.1",
+            text="uniform law on [0, 1]: n W1 = 1/4 exactly for every n (an identity, a check of the W1 computation); "
+                 "largest |W1 - 1/(4n)| (measures on [0, 1]: scale 1)",
+            tolerance=c.ROUNDING, measured=float(np.abs(d["uniform"] - 0.25 / n_values).max()), published="1/4"),
     ]
     for name in [m for m in compact if m.startswith("exponential_")]:
         limit = float(d[f"{name}_support"]) / 4
-        out.append(claim(c.relatively_close_to, f"lemma21.iv.{name}", "paper", "Lemma 2.1 (iv)", "Lemma 2.1",
-                         f"n W1(m, mu_n) -> (b - a)/4 for a positive, non-uniform density (exp(-x) on [0, "
-                         f"{d[f'{name}_support']:g}]), at n = {d['n_values'][-1]}", limit,
-                         float(n_values[-1] * d[name][-1]), positive_density_tolerance))
+        out.append(claim(
+            c.relatively_close_to, f"lemma21.iv.{name}", kind="paper", source="Lemma 2.1 (iv)", figure="Lemma 2.1",
+            text=f"n W1(m, mu_n) -> (b - a)/4 for a positive, non-uniform density (exp(-x) on [0, "
+                 f"{d[f'{name}_support']:g}]), at n = {d['n_values'][-1]}",
+            published=limit, measured=float(n_values[-1] * d[name][-1]), tolerance=positive_density_tolerance))
     for alpha in d["pareto_alpha"]:
         slope = rates.add(order(f"{PAPER}.lemma21.pareto_{alpha:g}", "n", n_values, d[f"pareto_{alpha:g}"], window))
-        out.append(claim(c.close_to, f"lemma21.pareto_{alpha:g}", "paper", "section 2, first tail example",
-                         "section 2", f"F = 1 - x^-alpha, alpha = {alpha:g}: W1 = O(n^(-1 + 1/alpha)); slope of log W1 "
-                         f"against log n on the {window} largest n", -1 + 1 / alpha, slope, pareto_tolerance))
+        out.append(claim(
+            c.close_to, f"lemma21.pareto_{alpha:g}", kind="paper", source="section 2, first tail example",
+            figure="section 2",
+            text=f"F = 1 - x^-alpha, alpha = {alpha:g}: W1 = O(n^(-1 + 1/alpha)); slope of log W1 "
+                 f"against log n on the {window} largest n",
+            published=-1 + 1 / alpha, measured=slope, tolerance=pareto_tolerance))
     lower, upper = weibull_band
     for alpha in d["weibull_alpha"]:
         slope = rates.add(fit(f"{PAPER}.lemma21.weibull_{alpha:g}", f"n W1 against (log n)^{1 / alpha:g}", "n",
                               n_values, np.log(n_values) ** (1 / alpha), n_values * d[f"weibull_{alpha:g}"], window))
-        out.append(claim(c.between, f"lemma21.weibull_{alpha:g}", "paper", "section 2, second tail example",
-                         "section 2", f"F = 1 - exp(-x^alpha), alpha = {alpha:g}: W1 of order (log n)^(1/alpha)/n: "
-                         f"slope of n W1 against (log n)^(1/alpha) on the {window} largest n, between the constants of "
-                         "the section's lower and upper bounds (0 for a 1/n error)", lower, upper, slope,
-                         published="(log n)^(1/alpha)/n"))
+        out.append(claim(
+            c.between, f"lemma21.weibull_{alpha:g}", kind="paper", source="section 2, second tail example",
+            figure="section 2",
+            text=f"F = 1 - exp(-x^alpha), alpha = {alpha:g}: W1 of order (log n)^(1/alpha)/n: "
+                 f"slope of n W1 against (log n)^(1/alpha) on the {window} largest n, between the constants of "
+                 "the section's lower and upper bounds (0 for a 1/n error)",
+            tolerance=(lower, upper), measured=slope, published="(log n)^(1/alpha)/n"))
     upper_values, heavy = d["heavy_upper"], d["heavy_errors"]
     increments = np.diff(heavy) / np.diff(np.log10(upper_values))
-    out.append(claim(c.at_least, "lemma21.i.heavy_tail", "check", "Lemma 2.1 (i), section 1.1.4", "Lemma 2.1",
-                     f"without a first moment W1(m, mu_n) is infinite: F = 1 - 1/x truncated to [1, R], n fixed, "
-                     f"R = {upper_values[0]:g}..{upper_values[-1]:g}: W1 grows from {heavy[0]:.3g} to {heavy[-1]:.3g}, "
-                     f"by {', '.join(f'{i:.3g}' for i in increments)} per decade; last increment over the previous one "
-                     "(a finite-moment tail shrinks it by a constant factor). The growth follows from that of the "
-                     "truncated law's mean, the paper's own argument, hence a check", growth_ratio,
-                     float(increments[-1] / increments[-2]), published="W1 = +inf"))
+    out.append(claim(
+        c.at_least, "lemma21.i.heavy_tail", kind="check", source="Lemma 2.1 (i), section 1.1.4", figure="Lemma 2.1",
+        text=f"without a first moment W1(m, mu_n) is infinite: F = 1 - 1/x truncated to [1, R], n fixed, "
+             f"R = {upper_values[0]:g}..{upper_values[-1]:g}: W1 grows from {heavy[0]:.3g} to {heavy[-1]:.3g}, "
+             f"by {', '.join(f'{i:.3g}' for i in increments)} per decade; last increment over the previous one "
+             "(a finite-moment tail shrinks it by a constant factor). The growth follows from that of the "
+             "truncated law's mean, the paper's own argument, hence a check",
+        tolerance=growth_ratio, measured=float(increments[-1] / increments[-2]), published="W1 = +inf"))
     return out
 
 
@@ -297,26 +330,34 @@ def tspd_claims(d, rates: Recorder, window: int, order_min: float, growth_max: f
                                 np.log(n), np.log(row / bound), window, f"t = {t:g}"))
                   for t, row, bound in zip(d["times"], d["n_errors"][c_index], d["bounds"][c_index])]
         out += [
-            claim(c.at_least, f"thm44.delta_order_{case}", "paper", "Proposition 4.1, Theorem 4.4", "Theorem 4.4",
-                  f"{case} case: the iterated TSPD is within C Delta of the MSPD; order in Delta against Delta = "
-                  f"{float(d['reference_delta']):g} on the {window} smallest Delta, smallest over n = "
-                  f"{', '.join(map(str, d['delta_n']))} per type and t = {times}", order_min, chosen(orders, min),
-                  published="O(Delta)"),
-            claim(c.at_most, f"thm44.delta_constant_{case}", "paper", "Proposition 4.1", "Theorem 4.4",
-                  f"{case} case: C depends neither on n nor on Delta: largest error / Delta at the smallest Delta "
-                  f"over t, for n = {', '.join(map(str, d['delta_n']))} ({', '.join(f'{v:.3g}' for v in constants)}); "
-                  "largest over smallest", constant_ratio, spread, published="C independent of n"),
-            claim(c.at_most, f"thm44.n_bound_{case}", "paper", "Theorem 4.4 (first term)", "Theorem 4.4",
-                  f"{case} case, Delta = {float(d['n_delta']):g}: error against n = {int(d['reference_n'])} stays "
-                  f"O(W1(m, mu_0) + t d L_LC / n): slope of log(error / that bound) against log n on the {window} "
-                  f"largest n, largest over t = {times} (1/2 for an n^(-1/2) error)", growth_max, chosen(growth, max),
-                  published="O(W1 + t/n)"),
+            claim(
+                c.at_least, f"thm44.delta_order_{case}", kind="paper", source="Proposition 4.1, Theorem 4.4",
+                figure="Theorem 4.4",
+                text=f"{case} case: the iterated TSPD is within C Delta of the MSPD; order in Delta against Delta = "
+                     f"{float(d['reference_delta']):g} on the {window} smallest Delta, smallest over n = "
+                     f"{', '.join(map(str, d['delta_n']))} per type and t = {times}",
+                tolerance=order_min, measured=chosen(orders, min), published="O(Delta)"),
+            claim(
+                c.at_most, f"thm44.delta_constant_{case}", kind="paper", source="Proposition 4.1", figure="Theorem 4.4",
+                text=f"{case} case: C depends neither on n nor on Delta: largest error / Delta at the smallest Delta "
+                     f"over t, for n = {', '.join(map(str, d['delta_n']))} "
+                     f"({', '.join(f'{v:.3g}' for v in constants)}); largest over smallest",
+                tolerance=constant_ratio, measured=spread, published="C independent of n"),
+            claim(
+                c.at_most, f"thm44.n_bound_{case}", kind="paper", source="Theorem 4.4 (first term)",
+                figure="Theorem 4.4",
+                text=f"{case} case, Delta = {float(d['n_delta']):g}: error against n = {int(d['reference_n'])} stays "
+                     f"O(W1(m, mu_0) + t d L_LC / n): slope of log(error / that bound) against log n on the {window} "
+                     f"largest n, largest over t = {times} (1/2 for an n^(-1/2) error)",
+                tolerance=growth_max, measured=chosen(growth, max), published="O(W1 + t/n)"),
         ]
     gaps = max((d["delta_reference_gap"] / d["delta_errors"].min(axis=(1, 3))).max(),
                (d["n_reference_gap"] / d["n_errors"].min(axis=2)).max())
-    out.append(claim(c.at_most, "thm44.references", "check", "Theorem 4.4 (our references)", "Theorem 4.4",
-                     "the references' own error is small: distance to a run with half their resolution over the "
-                     "smallest error measured against them, largest over cases and t", share, float(gaps)))
+    out.append(claim(
+        c.at_most, "thm44.references", kind="check", source="Theorem 4.4 (our references)", figure="Theorem 4.4",
+        text="the references' own error is small: distance to a run with half their resolution over the "
+             "smallest error measured against them, largest over cases and t",
+        tolerance=share, measured=float(gaps)))
     return out
 
 
@@ -390,48 +431,58 @@ def psystem_claims(rarefaction, shocks, shock_fraction: float, system):
     early = biggest / m if biggest >= 2 else 0.0  # a lone particle is no shock, whatever its mass
     max_time = float(shocks["max_time"])
     return [
-        claim(c.at_most, "fig4.order_preserved", "check", "section 5.2.2, Figure 4, (5.8)", "4",
-              "w0+ >= w0- case: w+ >= w- at all times, i.e. x+_k <= x-_k (guaranteed by the signs of the speeds "
-              "(5.8), hence a check); largest x+_k - x-_k over t > 0 in both runs", 0.0, float(order_gap),
-              published="w+ >= w-"),
-        claim(c.at_most, "fig4.no_same_type_collision", "paper", "section 5.2.2, Figure 4", "4",
-              f"particles of the same type never collide ({rarefaction['trajectories'].shape[-1]} per type): largest "
-              "same-type cluster over all steps", 1.0, float(largest_cluster(rarefaction["trajectories"])),
-              published="no collision"),
-        claim(c.at_most, "fig5.no_shock", "paper", "section 5.2.2, Figure 5", "5",
-              f"w- and w+ are rarefaction waves without any shock ({rarefaction['field_path'].shape[-1]} per type): "
-              "largest same-type cluster over all steps", 1.0, float(largest_cluster(rarefaction["field_path"])),
-              published="no shock"),
-        claim(c.at_most, "fig6.breakup_at_median", "paper", "Figure 6 caption", "6",
-              f"the + particles stay one cluster until the median - particle crosses it, which breaks it up "
-              f"({median_text}): distance in ranks from the median to the last crossing before the split",
-              0.0, median_miss, published="the median"),
-        claim(c.at_most, "fig6.breakup_threshold", "derived", "velocities (1.8), section 5.2.2", "6",
-              "the + cluster splits after the crossing of the - particle of rank "
-              f"{', '.join(map(str, thresholds.values()))} "
-              f"(n = {', '.join(map(str, thresholds))}), where the SPD of its members stops holding it together: "
-              f"{'; '.join(text for _, text in threshold_misses)}; distance in ranks, largest (the median misses "
-              f"by {field_median:g} at n = {shocks['field_path'].shape[-1]})", 0.0,
-              max(miss for miss, _ in threshold_misses), published="(our derivation)"),
-        claim(c.at_least, "fig6.minus_clusters_form", "paper", "section 5.2.2, Figure 6", "6",
-              f"particles of both types aggregate: largest - cluster ({n} per type)", 2.0,
-              float(largest_cluster(path, (MINUS,))), published="clusters"),
-        claim(c.at_most, "fig6.order_recovered", "check", "section 5.2.2, Figure 6, (5.8)", "6",
-              f"after a finite time w+ >= w- again: time from which x+_k <= x-_k for every k to the end of the run "
-              f"(both runs; the run may go on to t = {max_time:g}); the speeds (5.8) force it, hence a check",
-              max_time, recovery, published="finite"),
-        claim(c.at_most, "fig6.drift_apart", "paper", "section 5.2.2, Figure 6", "6",
-              f"then the particles drift away from each other: time from which w+ >= w- holds and no cluster is left "
-              f"({n} per type; at most t = {max_time:g})", max_time, float(shocks["trajectories_end"]),
-              published="finite"),
-        claim(c.at_least, "fig7.early_shocks", "paper", "section 5.2.2, Figure 7", "7",
-              f"shocks form at short times ({m} per type): largest - cluster (the + particles start as one), as a "
-              f"fraction of the {m}, before the end state (a shock holds at least {shock_fraction:g})",
-              shock_fraction, early,
-              published="shocks"),
-        claim(c.at_most, "fig7.late_rarefactions", "paper", "section 5.2.2, Figure 7", "7",
-              f"rarefaction waves at longer times ({m} per type): time from which no cluster is left and w+ >= w- "
-              f"(at most t = {max_time:g})", max_time, float(shocks["field_end"]), published="finite"),
+        claim(
+            c.at_most, "fig4.order_preserved", kind="check", source="section 5.2.2, Figure 4, (5.8)", figure="4",
+            text="w0+ >= w0- case: w+ >= w- at all times, i.e. x+_k <= x-_k (guaranteed by the signs of the speeds "
+                 "(5.8), hence a check); largest x+_k - x-_k over t > 0 in both runs",
+            tolerance=0.0, measured=float(order_gap), published="w+ >= w-"),
+        claim(
+            c.at_most, "fig4.no_same_type_collision", kind="paper", source="section 5.2.2, Figure 4", figure="4",
+            text=f"particles of the same type never collide ({rarefaction['trajectories'].shape[-1]} per type): "
+                 f"largest same-type cluster over all steps",
+            tolerance=1.0, measured=float(largest_cluster(rarefaction["trajectories"])), published="no collision"),
+        claim(
+            c.at_most, "fig5.no_shock", kind="paper", source="section 5.2.2, Figure 5", figure="5",
+            text=f"w- and w+ are rarefaction waves without any shock ({rarefaction['field_path'].shape[-1]} per type): "
+                 "largest same-type cluster over all steps",
+            tolerance=1.0, measured=float(largest_cluster(rarefaction["field_path"])), published="no shock"),
+        claim(
+            c.at_most, "fig6.breakup_at_median", kind="paper", source="Figure 6 caption", figure="6",
+            text=f"the + particles stay one cluster until the median - particle crosses it, which breaks it up "
+                 f"({median_text}): distance in ranks from the median to the last crossing before the split",
+            tolerance=0.0, measured=median_miss, published="the median"),
+        claim(
+            c.at_most, "fig6.breakup_threshold", kind="derived", source="velocities (1.8), section 5.2.2", figure="6",
+            text="the + cluster splits after the crossing of the - particle of rank "
+                 f"{', '.join(map(str, thresholds.values()))} "
+                 f"(n = {', '.join(map(str, thresholds))}), where the SPD of its members stops holding it together: "
+                 f"{'; '.join(text for _, text in threshold_misses)}; distance in ranks, largest (the median misses "
+                 f"by {field_median:g} at n = {shocks['field_path'].shape[-1]})",
+            tolerance=0.0, measured=max(miss for miss, _ in threshold_misses), published="(our derivation)"),
+        claim(
+            c.at_least, "fig6.minus_clusters_form", kind="paper", source="section 5.2.2, Figure 6", figure="6",
+            text=f"particles of both types aggregate: largest - cluster ({n} per type)", tolerance=2.0,
+            measured=float(largest_cluster(path, (MINUS,))), published="clusters"),
+        claim(
+            c.at_most, "fig6.order_recovered", kind="check", source="section 5.2.2, Figure 6, (5.8)", figure="6",
+            text=f"after a finite time w+ >= w- again: time from which x+_k <= x-_k for every k to the end of the run "
+                 f"(both runs; the run may go on to t = {max_time:g}); the speeds (5.8) force it, hence a check",
+            tolerance=max_time, measured=recovery, published="finite"),
+        claim(
+            c.at_most, "fig6.drift_apart", kind="paper", source="section 5.2.2, Figure 6", figure="6",
+            text=f"then the particles drift away from each other: time from which w+ >= w- holds and no cluster is "
+                 f"left ({n} per type; at most t = {max_time:g})",
+            tolerance=max_time, measured=float(shocks["trajectories_end"]), published="finite"),
+        claim(
+            c.at_least, "fig7.early_shocks", kind="paper", source="section 5.2.2, Figure 7", figure="7",
+            text=f"shocks form at short times ({m} per type): largest - cluster (the + particles start as one), as a "
+                 f"fraction of the {m}, before the end state (a shock holds at least {shock_fraction:g})",
+            tolerance=shock_fraction, measured=early, published="shocks"),
+        claim(
+            c.at_most, "fig7.late_rarefactions", kind="paper", source="section 5.2.2, Figure 7", figure="7",
+            text=f"rarefaction waves at longer times ({m} per type): time from which no cluster is left and w+ >= w- "
+                 f"(at most t = {max_time:g})",
+            tolerance=max_time, measured=float(shocks["field_end"]), published="finite"),
     ]
 
 
@@ -461,15 +512,17 @@ def cost_claims(d, rates: Recorder, window: int, band):
         kind = "check" if name == "tspd_steps" else "paper"
         fixed = f" (L = {int(d['tspd_steps'])})" if name == "tspd_n" else (
             f" (n = {int(d['steps_n'])})" if name == "tspd_steps" else "")
-        out.append(claim(c.between, f"cost.{name}", kind, source, source,
-                         f"{text}{fixed} is linear in {resolution}: exponent of the operations the kernels count "
-                         f"against {resolution} on the {window} largest sizes ({d[sizes][-window]}..{d[sizes][-1]})",
-                         lower, upper, exponent, published="linear"))
+        out.append(claim(
+            c.between, f"cost.{name}", kind=kind, source=source, figure=source,
+            text=f"{text}{fixed} is linear in {resolution}: exponent of the operations the kernels count "
+                 f"against {resolution} on the {window} largest sizes ({d[sizes][-window]}..{d[sizes][-1]})",
+            tolerance=(lower, upper), measured=exponent, published="linear"))
     listed = ", ".join(f"{name} {value:.2f}" for name, value in times.items())
-    made = claim(c.between, "cost.wall_time", "check", "our timing of sections 5.1.1 and 5.2.1", "cost",
-                 f"the counted operations are the cost: exponent of the best wall time (interleaved repeats) "
-                 f"against n or L on the same sizes, farthest from 1 of: {listed}; on {d['cpu']}", lower, upper,
-                 c.farthest_from_centre(list(times.values()), band))
+    made = claim(
+        c.between, "cost.wall_time", kind="check", source="our timing of sections 5.1.1 and 5.2.1", figure="cost",
+        text=f"the counted operations are the cost: exponent of the best wall time (interleaved repeats) "
+             f"against n or L on the same sizes, farthest from 1 of: {listed}; on {d['cpu']}",
+        tolerance=(lower, upper), measured=c.farthest_from_centre(list(times.values()), band))
     disturbed = disturbance(d)
     out.append(c.abstain(made, disturbed) if disturbed else made)
     return out
@@ -602,12 +655,14 @@ def separation_claim(p, case: str, runs, sizes, reference_error: float, referenc
     listed = "; ".join(f"{method}: N >= {smallest:g}, range [{band[0]:.3f}, {band[1]:.3f}]"
                        for method, (_, smallest, band) in ranges.items())
     competing = float(p["competing_exponent"])
-    return claim(c.at_least, f"beyond.exponent.separation_{case}", "check", "our reference and our ranges",
-                 f"p-system, {case}",
-                 f"{case} case: the exponent {competing:g} of a method of order below 1 lies above the predicted "
-                 f"ranges of the particle methods at the sizes their fits use ({listed}; the reference: {reference}, "
-                 f"own error {reference_error:.2g}), so that their claims tell it from first order with a log "
-                 "factor: its excess over the largest upper end", 0.0, competing - upper)
+    return claim(
+        c.at_least, f"beyond.exponent.separation_{case}", kind="check", source="our reference and our ranges",
+        figure=f"p-system, {case}",
+        text=f"{case} case: the exponent {competing:g} of a method of order below 1 lies above the predicted "
+             f"ranges of the particle methods at the sizes their fits use ({listed}; the reference: {reference}, "
+             f"own error {reference_error:.2g}), so that their claims tell it from first order with a log "
+             "factor: its excess over the largest upper end",
+        tolerance=0.0, measured=competing - upper)
 
 
 def beyond_exponent_claim(rates: Recorder, p, method: str, case: str, label: str, runs, sizes, reference_error: float,
@@ -628,11 +683,12 @@ def beyond_exponent_claim(rates: Recorder, p, method: str, case: str, label: str
         resolved = (f"; pairwise exponents with the reference's error ({reference}, own error {reference_error:.2g}) "
                     f"from the coarsest run: {pairs}; fitted on the most accurate runs whose pairwise exponents it "
                     f"leaves within +-{p['exponent_uncertainty']:g}")
-    return claim(c.between, f"beyond.exponent.{method}_{case}", "derived",
-                 COST_SOURCES.get(method, "section 5.2 (O(t^2/eps^2))"), label,
-                 f"{label}: {COST_TEXTS[method]} against 1/error, exponent on the {window} most accurate runs"
-                 f"{resolved}; predicted {k:g} ({log_text})", *band, exponent,
-                 published=f"{k:g} (O(eps^-{k:g}))")
+    return claim(
+        c.between, f"beyond.exponent.{method}_{case}", kind="derived",
+        source=COST_SOURCES.get(method, "section 5.2 (O(t^2/eps^2))"), figure=label,
+        text=f"{label}: {COST_TEXTS[method]} against 1/error, exponent on the {window} most accurate runs"
+             f"{resolved}; predicted {k:g} ({log_text})",
+        tolerance=band, measured=exponent, published=f"{k:g} (O(eps^-{k:g}))")
 
 
 def plus_wave(d, name: str, domain) -> tuple[dict[str, float], dict[str, float]]:
@@ -663,11 +719,14 @@ def beyond_claims(d, rates: Recorder, p):
             slopes[f"{method}_{name}"] = time_exponent(runs[1], runs[2], p["time_floor"], window)
         eps = common_error(spd[0], fv[0])
         ratio = value_at_error(fv[0], fv[2], eps) / value_at_error(spd[0], spd[2], eps)
-        timings.append(claim(c.at_least, f"beyond.ratio.scalar_{name}", "check", "our timing (sections 5.1.1 and "
-                             "5.2: the exponents 1 and 2 are the claims beyond.exponent.*)", label,
-                             f"{label}: wall time of the Godunov scheme over that of the SPD at the common error "
-                             f"eps* = {eps:.3g} (interpolated, never extrapolated)", p["scalar_ratio_min"], ratio,
-                             published="SPD cheaper (exponent 1 against 2)"))
+        timings.append(claim(
+            c.at_least, f"beyond.ratio.scalar_{name}", kind="check",
+            source="our timing (sections 5.1.1 and "
+                   "5.2: the exponents 1 and 2 are the claims beyond.exponent.*)",
+            figure=label,
+            text=f"{label}: wall time of the Godunov scheme over that of the SPD at the common error "
+                 f"eps* = {eps:.3g} (interpolated, never extrapolated)",
+            tolerance=p["scalar_ratio_min"], measured=ratio, published="SPD cheaper (exponent 1 against 2)"))
     sizes = {"tspd": d["tspd_n"], "exact": d["exact_n"], "upwind": d["upwind_cells"]}
     for name in d["cases"]:
         to_hll, gap_mspd, gap_hll = d[f"{name}_limit_to_hll"], float(d[f"{name}_mspd_gap"]), float(d[f"{name}_hll_gap"])
@@ -683,53 +742,73 @@ def beyond_claims(d, rates: Recorder, p):
         tspd, exact = runs["tspd"], runs["exact"]
         eps = common_error(tspd[0], exact[0])
         same_cost = value_at_error(exact[0], exact[2], eps) / value_at_error(tspd[0], tspd[2], eps)
-        timings.append(claim(c.between, f"beyond.ratio.same_cost_{name}", "check", "our timing (section 5.2: same "
-                             "cost as the exact simulation; the exponents are the claims beyond.exponent.*)",
-                             f"p-system, {name}", f"{name} case: wall time of the exact MSPD over that of the "
-                             f"iterated TSPD at the common error eps* = {eps:.3g}", *p["same_cost_band"], same_cost,
-                             published="same cost, O(n^2)"))
+        timings.append(claim(
+            c.between, f"beyond.ratio.same_cost_{name}", kind="check",
+            source="our timing (section 5.2: same "
+                   "cost as the exact simulation; the exponents are the claims beyond.exponent.*)",
+            figure=f"p-system, {name}",
+            text=f"{name} case: wall time of the exact MSPD over that of the "
+                 f"iterated TSPD at the common error eps* = {eps:.3g}",
+            tolerance=p["same_cost_band"], measured=same_cost, published="same cost, O(n^2)"))
         out += [
-            claim(c.between, f"beyond.exact.events_{name}", "derived", "section 5.2 (at most d(d-1)n^2/2 crossings)",
-                  f"p-system, {name}", f"{name} case: crossings of the exact MSPD up to t = {float(d['t']):g} against "
-                  f"n, exponent on the {window} largest n", *p["events_band"], events, published="O(n^2)"),
-            claim(c.at_least, f"beyond.cost.resolved_{name}", "check", "our reference", f"p-system, {name}",
-                  f"{name} case: the reference ({reference}, own error {reference_error:.2g}) leaves every method "
-                  f"{window} neighbouring runs whose pairwise cost exponents it moves by at most "
-                  f"+-{p['exponent_uncertainty']:g}; fewest",
-                  window, float(min(exponent_window(r[0], r[1], reference_error, window,
-                                                    p["exponent_uncertainty"]).size for r in runs.values()))),
+            claim(
+                c.between, f"beyond.exact.events_{name}", kind="derived",
+                source="section 5.2 (at most d(d-1)n^2/2 crossings)", figure=f"p-system, {name}",
+                text=f"{name} case: crossings of the exact MSPD up to t = {float(d['t']):g} against "
+                     f"n, exponent on the {window} largest n",
+                tolerance=p["events_band"], measured=events, published="O(n^2)"),
+            claim(
+                c.at_least, f"beyond.cost.resolved_{name}", kind="check", source="our reference",
+                figure=f"p-system, {name}",
+                text=f"{name} case: the reference ({reference}, own error {reference_error:.2g}) leaves every method "
+                     f"{window} neighbouring runs whose pairwise cost exponents it moves by at most "
+                     f"+-{p['exponent_uncertainty']:g}; fewest",
+                tolerance=window,
+                measured=float(min(exponent_window(r[0], r[1], reference_error, window,
+                                                   p["exponent_uncertainty"]).size for r in runs.values()))),
         ]
         if name == "rarefaction":
             limit_order = rates.add(order(f"{PAPER}.beyond.limit.{name}", "n", 1.0 / limit_n, to_hll, window, name))
             out += [
-                claim(c.at_least, f"beyond.limit.{name}", "derived", "Theorem 1.6, and our inference: without a "
-                      "shock the semigroup solution is the classical one", "p-system, rarefaction",
-                      f"rarefaction case: W1^(d) between the exact MSPD and the conservative HLL solution "
-                      f"({int(d['reference_cells'])} cells) decreases in n; order on the {window} largest n",
-                      p["limit_order_min"], limit_order, published="convergence"),
-                claim(c.at_most, f"beyond.limit.reference_{name}", "check", "our reference", "p-system, rarefaction",
-                      "rarefaction case: the HLL reference is accurate: its distance to the run on half as many "
-                      "cells over its distance to the exact MSPD with the largest n", p["reference_share"],
-                      gap_hll / float(to_hll[-1])),
+                claim(
+                    c.at_least, f"beyond.limit.{name}", kind="derived",
+                    source="Theorem 1.6, and our inference: without a "
+                           "shock the semigroup solution is the classical one",
+                    figure="p-system, rarefaction",
+                    text=f"rarefaction case: W1^(d) between the exact MSPD and the conservative HLL solution "
+                         f"({int(d['reference_cells'])} cells) decreases in n; order on the {window} largest n",
+                    tolerance=p["limit_order_min"], measured=limit_order, published="convergence"),
+                claim(
+                    c.at_most, f"beyond.limit.reference_{name}", kind="check", source="our reference",
+                    figure="p-system, rarefaction",
+                    text="rarefaction case: the HLL reference is accurate: its distance to the run on half as many "
+                         "cells over its distance to the exact MSPD with the largest n",
+                    tolerance=p["reference_share"], measured=gap_hll / float(to_hll[-1])),
             ]
         else:
             noise = gap_mspd + gap_hll
             medians, plus_distances = plus_wave(d, name, p["domain"])
             out += [
-                claim(c.at_least, f"beyond.limit.{name}", "check", "section 1.2.3 (nonconservative system); our "
-                      "question", "p-system, shocks",
-                      f"shock case: the MSPD's limit differs from the conservative entropy solution: W1^(d) between "
-                      f"the exact MSPD (n = {int(limit_n[-1])}) and HLL ({int(d['reference_cells'])} cells), "
-                      f"{to_hll[-1]:.3g}, over the sum of their self-distances at half resolution ({gap_mspd:.2g} + "
-                      f"{gap_hll:.2g})", p["separation"], float(to_hll[-1] / noise), published="differ"),
-                claim(c.at_least, f"beyond.limit.plus_wave_{name}", "check", "our question", "p-system, shocks",
-                      f"shock case: the conservative + wave is displaced from the MSPD's (the median of w+ at x = "
-                      f"{medians['mspd']:.4f} for the exact MSPD, {medians['hll']:.4f} for HLL, "
-                      f"{medians['upwind']:.4f} for the upwind scheme for (1.7)): W1 of the + type alone from the "
-                      f"exact MSPD to HLL, {plus_distances['hll']:.3g}, over its distance to the upwind scheme "
-                      f"({plus_distances['upwind']:.2g}, the same limit) plus HLL's self-distance ({gap_hll:.2g})",
-                      p["separation"], plus_distances["hll"] / (plus_distances["upwind"] + gap_hll),
-                      published="displaced"),
+                claim(
+                    c.at_least, f"beyond.limit.{name}", kind="check",
+                    source="section 1.2.3 (nonconservative system); our "
+                           "question",
+                    figure="p-system, shocks",
+                    text=f"shock case: the MSPD's limit differs from the conservative entropy solution: W1^(d) between "
+                         f"the exact MSPD (n = {int(limit_n[-1])}) and HLL ({int(d['reference_cells'])} cells), "
+                         f"{to_hll[-1]:.3g}, over the sum of their self-distances at half resolution ({gap_mspd:.2g} + "
+                         f"{gap_hll:.2g})",
+                    tolerance=p["separation"], measured=float(to_hll[-1] / noise), published="differ"),
+                claim(
+                    c.at_least, f"beyond.limit.plus_wave_{name}", kind="check", source="our question",
+                    figure="p-system, shocks",
+                    text=f"shock case: the conservative + wave is displaced from the MSPD's (the median of w+ at x = "
+                         f"{medians['mspd']:.4f} for the exact MSPD, {medians['hll']:.4f} for HLL, "
+                         f"{medians['upwind']:.4f} for the upwind scheme for (1.7)): W1 of the + type alone from the "
+                         f"exact MSPD to HLL, {plus_distances['hll']:.3g}, over its distance to the upwind scheme "
+                         f"({plus_distances['upwind']:.2g}, the same limit) plus HLL's self-distance ({gap_hll:.2g})",
+                    tolerance=p["separation"], measured=plus_distances["hll"] / (plus_distances["upwind"] + gap_hll),
+                    published="displaced"),
             ]
     band = p["time_band"]
     # The SPD's timed runs (0.01 to 0.07 s, n from 1.6e6 to 6.6e6) cross from the cache to memory: its time per
@@ -738,11 +817,13 @@ def beyond_claims(d, rates: Recorder, p):
     deciding = {key: value for key, value in slopes.items() if not key.startswith("spd_")}
     listed = ", ".join(f"{key} {value:.2f}" for key, value in deciding.items())
     memory = ", ".join(f"{key} {value:.2f}" for key, value in slopes.items() if key not in deciding)
-    timings.append(claim(c.between, "beyond.cost.wall_time", "check", "our timing", "all cost fits",
-                         f"the counted operations are the cost: exponent of the best wall time against them over the "
-                         f"(at most {window}) largest runs lasting at least {p['time_floor']:g} s, farthest from 1 of: "
-                         f"{listed} (the SPD's, {memory}, are reported: its largest runs cross from the cache to "
-                         f"memory); on {d['cpu']}", *band, c.farthest_from_centre(list(deciding.values()), band)))
+    timings.append(claim(
+        c.between, "beyond.cost.wall_time", kind="check", source="our timing", figure="all cost fits",
+        text=f"the counted operations are the cost: exponent of the best wall time against them over the "
+             f"(at most {window}) largest runs lasting at least {p['time_floor']:g} s, farthest from 1 of: "
+             f"{listed} (the SPD's, {memory}, are reported: its largest runs cross from the cache to "
+             f"memory); on {d['cpu']}",
+        tolerance=band, measured=c.farthest_from_centre(list(deciding.values()), band)))
     disturbed = disturbance(d)
     return out + [c.abstain(made, disturbed) if disturbed else made for made in timings]
 

@@ -69,25 +69,33 @@ def scalar_claims(d):
     identity_gap = max(float(np.abs(burgers - 0.25).max()), float(np.abs(per_flux["burgers"] - 0.5).max()),
                        float(np.abs(per_flux["concave"]).max()))
     return [
-        claim(c.at_most, "theory.prop32.bound", "paper", "Proposition 3.2", "Proposition 3.2",
-              f"||u_inf[x](t) - u_n[x](t)||_L1 <= t L_LC / n, u_inf[x] the entropy solution from the discrete data "
-              f"H*mu_0[x], exact for the cubic flux u^3/3 - u^2/2 from delta_0 (a shock to the tangency level 3/4, "
-              f"then a fan), n = {_listing(d['scalar_n'])}, t = {_listing(t)}: largest ratio to the bound (smallest "
-              f"{cubic.min():.3g}; Burgers and the concave flux give identities, theory.scalar_identities)",
-              1.0 + c.ROUNDING, float(cubic.max()), published="<= t L_LC / n"),
-        claim(c.at_most, "theory.eq33.bound", "check", "(3.3), proof of Proposition 3.2 (a bound far from the "
-              "values)", "Proposition 3.2",
-              f"||u_n[x](t) - u_2n[x^](t)||_L1 <= t L_LC / (2n), x^ each particle of x doubled, for the cubic flux "
-              f"over {cases}: largest ratio to the bound (smallest {per_flux['cubic'].min():.3g}). Even wrong "
-              "dynamics stay far below it (free flight, or twice the velocities, for both SPDs: a quarter of it from "
-              "delta_0), so it checks the step of the proof, not the proposition (theory.prop32.bound)",
-              1.0 + c.ROUNDING, float(per_flux["cubic"].max()), published="<= t L_LC / (2n)"),
-        claim(c.at_most, "theory.scalar_identities", "check", "Proposition 3.2 and (3.3) for Burgers and the concave "
-              "flux (identities)", "Proposition 3.2",
-              f"where the bounds of Proposition 3.2 and (3.3) are identities: Burgers' fans give exactly 1/4 and 1/2 "
-              f"of the bounds (every upward jump opens its own fan, t/(4n) each time), the concave flux 0 for (3.3) "
-              f"(Remark 3.3: both are the entropy solution of the same data); over {cases}: largest gap to the "
-              "identity, in units of the bound", c.ROUNDING, identity_gap, published="(our check)"),
+        claim(
+            c.at_most, "theory.prop32.bound", kind="paper", source="Proposition 3.2", figure="Proposition 3.2",
+            text=f"||u_inf[x](t) - u_n[x](t)||_L1 <= t L_LC / n, u_inf[x] the entropy solution from the discrete data "
+                 f"H*mu_0[x], exact for the cubic flux u^3/3 - u^2/2 from delta_0 (a shock to the tangency level 3/4, "
+                 f"then a fan), n = {_listing(d['scalar_n'])}, t = {_listing(t)}: largest ratio to the bound (smallest "
+                 f"{cubic.min():.3g}; Burgers and the concave flux give identities, theory.scalar_identities)",
+            tolerance=1.0 + c.ROUNDING, measured=float(cubic.max()), published="<= t L_LC / n"),
+        claim(
+            c.at_most, "theory.eq33.bound", kind="check",
+            source="(3.3), proof of Proposition 3.2 (a bound far from the "
+                   "values)",
+            figure="Proposition 3.2",
+            text=f"||u_n[x](t) - u_2n[x^](t)||_L1 <= t L_LC / (2n), x^ each particle of x doubled, for the cubic flux "
+                 f"over {cases}: largest ratio to the bound (smallest {per_flux['cubic'].min():.3g}). Even wrong "
+                 "dynamics stay far below it (free flight, or twice the velocities, for both SPDs: a quarter of it "
+                 "from delta_0), so it checks the step of the proof, not the proposition (theory.prop32.bound)",
+            tolerance=1.0 + c.ROUNDING, measured=float(per_flux["cubic"].max()), published="<= t L_LC / (2n)"),
+        claim(
+            c.at_most, "theory.scalar_identities", kind="check",
+            source="Proposition 3.2 and (3.3) for Burgers and the concave "
+                   "flux (identities)",
+            figure="Proposition 3.2",
+            text=f"where the bounds of Proposition 3.2 and (3.3) are identities: Burgers' fans give exactly 1/4 and "
+                 f"1/2 of the bounds (every upward jump opens its own fan, t/(4n) each time), the concave flux 0 for "
+                 f"(3.3) (Remark 3.3: both are the entropy solution of the same data); over {cases}: largest gap to "
+                 f"the identity, in units of the bound",
+            tolerance=c.ROUNDING, measured=identity_gap, published="(our check)"),
     ]
 
 
@@ -120,44 +128,52 @@ def step_claims(d):
     runs = (f"{', '.join(map(str, d['cases']))} cases from (1.9), n = {_listing(d['step_n'])} per type, Delta = "
             f"{_listing(d['step_deltas'])}, up to t = {float(d['step_t']):g}")
     return [
-        claim(c.at_most, "theory.lemma42.bound", "paper", "Lemma 4.2", "Lemma 4.2",
-              f"||Phi_Delta(y) - Phi~_Delta(y)||_1 <= 2 Delta L_LC N_Delta(y) / n^2 (L_LC = "
-              f"{float(d['lipschitz']):.4g}) for every iterate y of the iterated TSPD, Phi_Delta by the exact "
-              f"MSPD from y, N_Delta(y) its collisions within Delta ({runs}): largest ratio to the bound plus "
-              f"rounding (ROUNDING times the extent of the positions); {sharpest:.3g} over the steps with "
-              f"collisions, and a largest distance of {largest_free:.2g} over those without", 1.0,
-              float(np.nanmax(ratios)), published="<= 2 Delta L_LC N / n^2"),
-        claim(c.at_most, "theory.eq45.count", "check", "(4.5), proof of Proposition 4.1 (follows from the speed "
-              "bounds)", "Lemma 4.2",
-              f"by construction: every TSPD velocity is an average of characteristic speeds in [l, L_C], so a pair "
-              f"closes by at least L_USH Delta per step and meets within m steps; each pair (alpha:i, beta:j) is "
-              f"counted in N_Delta(y) of (4.3) at at most m = ceil(2 L_C / L_USH) = {m} iterates (L_C = "
-              f"{float(d['speed_bound']):.4g}, L_USH = {float(d['hyperbolicity']):.4g}) ({runs}; "
-              f"{counted}): largest count", float(m), float(d["largest_count"].max()), published=f"<= m = {m}"),
-        claim(c.at_least, "theory.remark43.shrink", "check", "Remark 4.3 (follows from the speed bounds)",
-              "Lemma 4.2",
-              f"by construction (every TSPD velocity is an average of characteristic speeds, and the speeds of two "
-              f"types differ by at least L_USH): one TSPD step brings every pair alpha < beta closer by at least "
-              f"L_USH Delta: z^beta_j - z^alpha_i <= y^beta_j - y^alpha_i - L_USH Delta ({runs}): smallest decrease "
-              f"over L_USH Delta", 1.0 - c.ROUNDING,
-              float(shrink.min()), published=">= L_USH Delta"),
-        claim(c.at_most, "theory.remark43.window", "check", "Remark 4.3 (follows from the speed bounds)",
-              "Lemma 4.2",
-              f"by construction (no particle moves faster than L_C): a pair of R(y) that collides within Delta in "
-              f"the MSPD from y starts at most 2 L_C Delta apart ({runs}): largest gap over 2 L_C Delta",
-              1.0 + c.ROUNDING, float(window.max()),
-              published="<= 2 L_C Delta"),
-        claim(c.at_most, "theory.prop41.grid_times", "check", "Proposition 4.1, (4.1) and (4.6) (a bound far from "
-              "the values)", "Theorem 4.4",
-              f"||Phi(x; t) - Phi~_Delta(x; t)||_1 <= C Delta at the multiples t of Delta only (the sup over t of the "
-              f"proposition is not sampled between them), with C of (4.6): the exact MSPD from (1.9) "
-              f"against the iterated TSPD at every multiple of Delta ({runs}), largest over t of error / Delta per run "
-              f"({_listing(np.round(per_time, 3))}; at t = {float(d['step_t']):g} at least {kept:.3g} of it) against "
-              f"C = d(d-1) L_1 L_LC m = {constant:.4g} L_1 at its smallest value L_1 = 1 (stricter than the "
-              f"statement). The bound is {constant / per_time.max():.3g} times the largest value: it cannot decide "
-              "the proposition, the Delta order and the constant across n of thm44.* do", constant,
-              float(per_time.max()),
-              published="<= C Delta, C of (4.6)"),
+        claim(
+            c.at_most, "theory.lemma42.bound", kind="paper", source="Lemma 4.2", figure="Lemma 4.2",
+            text=f"||Phi_Delta(y) - Phi~_Delta(y)||_1 <= 2 Delta L_LC N_Delta(y) / n^2 (L_LC = "
+                 f"{float(d['lipschitz']):.4g}) for every iterate y of the iterated TSPD, Phi_Delta by the exact "
+                 f"MSPD from y, N_Delta(y) its collisions within Delta ({runs}): largest ratio to the bound plus "
+                 f"rounding (ROUNDING times the extent of the positions); {sharpest:.3g} over the steps with "
+                 f"collisions, and a largest distance of {largest_free:.2g} over those without",
+            tolerance=1.0, measured=float(np.nanmax(ratios)), published="<= 2 Delta L_LC N / n^2"),
+        claim(
+            c.at_most, "theory.eq45.count", kind="check",
+            source="(4.5), proof of Proposition 4.1 (follows from the speed "
+                   "bounds)",
+            figure="Lemma 4.2",
+            text=f"by construction: every TSPD velocity is an average of characteristic speeds in [l, L_C], so a pair "
+                 f"closes by at least L_USH Delta per step and meets within m steps; each pair (alpha:i, beta:j) is "
+                 f"counted in N_Delta(y) of (4.3) at at most m = ceil(2 L_C / L_USH) = {m} iterates (L_C = "
+                 f"{float(d['speed_bound']):.4g}, L_USH = {float(d['hyperbolicity']):.4g}) ({runs}; "
+                 f"{counted}): largest count",
+            tolerance=float(m), measured=float(d["largest_count"].max()), published=f"<= m = {m}"),
+        claim(
+            c.at_least, "theory.remark43.shrink", kind="check", source="Remark 4.3 (follows from the speed bounds)",
+            figure="Lemma 4.2",
+            text=f"by construction (every TSPD velocity is an average of characteristic speeds, and the speeds of two "
+                 f"types differ by at least L_USH): one TSPD step brings every pair alpha < beta closer by at least "
+                 f"L_USH Delta: z^beta_j - z^alpha_i <= y^beta_j - y^alpha_i - L_USH Delta ({runs}): smallest decrease "
+                 f"over L_USH Delta",
+            tolerance=1.0 - c.ROUNDING, measured=float(shrink.min()), published=">= L_USH Delta"),
+        claim(
+            c.at_most, "theory.remark43.window", kind="check", source="Remark 4.3 (follows from the speed bounds)",
+            figure="Lemma 4.2",
+            text=f"by construction (no particle moves faster than L_C): a pair of R(y) that collides within Delta in "
+                 f"the MSPD from y starts at most 2 L_C Delta apart ({runs}): largest gap over 2 L_C Delta",
+            tolerance=1.0 + c.ROUNDING, measured=float(window.max()), published="<= 2 L_C Delta"),
+        claim(
+            c.at_most, "theory.prop41.grid_times", kind="check",
+            source="Proposition 4.1, (4.1) and (4.6) (a bound far from "
+                   "the values)",
+            figure="Theorem 4.4",
+            text=f"||Phi(x; t) - Phi~_Delta(x; t)||_1 <= C Delta at the multiples t of Delta only (the sup over t of "
+                 f"the proposition is not sampled between them), with C of (4.6): the exact MSPD from (1.9) "
+                 f"against the iterated TSPD at every multiple of Delta ({runs}), largest over t of error / Delta per "
+                 f"run ({_listing(np.round(per_time, 3))}; at t = {float(d['step_t']):g} at least {kept:.3g} of it) "
+                 f"against C = d(d-1) L_1 L_LC m = {constant:.4g} L_1 at its smallest value L_1 = 1 (stricter than the "
+                 f"statement). The bound is {constant / per_time.max():.3g} times the largest value: it cannot decide "
+                 "the proposition, the Delta order and the constant across n of thm44.* do",
+            tolerance=constant, measured=float(per_time.max()), published="<= C Delta, C of (4.6)"),
     ]
 
 
@@ -166,15 +182,17 @@ def constant_claims(d, study):
     m, constant = int(d["crossings_bound"]), constant_at_unit_stability(d)
     ratios = study["delta_errors"] / study["deltas"]
     per_case = ", ".join(f"{case} {row.max():.3g}" for case, row in zip(study["cases"], ratios))
-    return [claim(c.at_most, "theory.c46.study", "check", "(4.6), Proposition 4.1 (a bound far from the values)",
-                  "Theorem 4.4",
-                  f"C = d(d-1) L_1 L_LC ceil(2 L_C / L_USH) from the definitions of (C), (USH), (LC) for the p-system "
-                  f"of the config: d = {int(d['d'])}, L_LC = {float(d['lipschitz']):.4g}, L_C = "
-                  f"{float(d['speed_bound']):.4g}, L_USH = {float(d['hyperbolicity']):.4g}, m = {m}: C = "
-                  f"{constant:.4g} L_1; the Delta sweep of the Theorem 4.4 study (thm44.*), largest error / Delta over "
-                  f"its cases, n, t and Delta ({per_case}), against C at L_1 = 1 (stricter than the statement); the "
-                  f"bound is {constant / ratios.max():.3g} times the largest value, so it checks our constants, not "
-                  "the proposition", constant, float(ratios.max()), published="<= C, (4.6)")]
+    return [claim(
+        c.at_most, "theory.c46.study", kind="check", source="(4.6), Proposition 4.1 (a bound far from the values)",
+        figure="Theorem 4.4",
+        text=f"C = d(d-1) L_1 L_LC ceil(2 L_C / L_USH) from the definitions of (C), (USH), (LC) for the p-system "
+             f"of the config: d = {int(d['d'])}, L_LC = {float(d['lipschitz']):.4g}, L_C = "
+             f"{float(d['speed_bound']):.4g}, L_USH = {float(d['hyperbolicity']):.4g}, m = {m}: C = "
+             f"{constant:.4g} L_1; the Delta sweep of the Theorem 4.4 study (thm44.*), largest error / Delta over "
+             f"its cases, n, t and Delta ({per_case}), against C at L_1 = 1 (stricter than the statement); the "
+             f"bound is {constant / ratios.max():.3g} times the largest value, so it checks our constants, not "
+             "the proposition",
+        tolerance=constant, measured=float(ratios.max()), published="<= C, (4.6)")]
 
 
 def random_claims(d, recorder: Recorder, order_min: float, exponent_max: float, share: float, fewest: int):
@@ -222,30 +240,40 @@ def random_claims(d, recorder: Recorder, order_min: float, exponent_max: float, 
     sizes = f"n = {_listing(d['random_n'])} per type"
     resolved_text = f"fitted on the n whose error the reference resolves (at least 1/{share:g} of its own error)"
     return [
-        claim(c.at_least, "theory.cor46.convergence", "paper", "Corollary 4.6", "Corollary 4.6",
-              f"the MSPD from any configurations with W1^(d)(mu_0[x(n)], m) -> 0 converges to the semigroup "
-              f"solution: configurations of n draws of each m^gamma of both p-system cases ({seeds} seeds), {sizes}, "
-              f"t = {_listing(times)}, W1^(d) to the exact MSPD from (1.9) with n = {int(d['reference_n'])}, averaged "
-              f"over the seeds; order in n {resolved_text}, smallest over cases and times (one draw's own order "
-              f"scatters: {min(singles, default=math.nan):.2f} to {max(singles, default=math.nan):.2f})", order_min,
-              chosen(convergence, min), published="convergence"),
-        claim(c.at_least, "theory.cor46.premise", "check", "(4.12), premise of Corollary 4.6 (our random data)",
-              "Corollary 4.6", f"the random configurations satisfy (4.12): W1^(d)(mu_0[x(n)], m), exact, averaged over "
-              f"the {seeds} seeds, falls with n; order fitted on every n ({sizes}), smaller of the cases", order_min,
-              chosen(premise, min), published="-> 0"),
-        claim(c.at_most, "theory.t_exponent", "check", "section 5.2, O(t^2/eps^2) from Theorem 4.4 (one-sided: "
-              "our check)", "section 5.2",
-              f"an upper bound only, and the initial error W1(m, mu_0), which does not grow with t, dominates the "
-              f"errors at these t, so it cannot show the t^2: the iterated TSPD needs O(t^2/eps^2) operations for "
-              f"an error eps at time t: L = n steps of t/n from (1.9), {sizes} ({resolved_text}), t = "
-              f"{_listing(times)}; n needed at a common error eps* "
-              f"(the largest of the smallest errors over t, interpolated log-log, never extrapolated: "
-              f"{'; '.join(lows)}); exponent of d n L = d n^2 against t, largest over the cases", exponent_max,
-              float(np.max(exponents)), published="2 (t^2)"),
-        claim(c.at_least, "theory.references", "check", "Corollary 4.6 and section 5.2 (our references)",
-              "Corollary 4.6", f"the exact MSPD references (n = {int(d['reference_n'])}, own error: distance to "
-              f"n = {int(d['reference_n']) // 2}) resolve at least {fewest} runs of every fit (errors at least "
-              f"1/{share:g} of their own); fewest", fewest, float(min(kept))),
+        claim(
+            c.at_least, "theory.cor46.convergence", kind="paper", source="Corollary 4.6", figure="Corollary 4.6",
+            text=f"the MSPD from any configurations with W1^(d)(mu_0[x(n)], m) -> 0 converges to the semigroup "
+                 f"solution: configurations of n draws of each m^gamma of both p-system cases ({seeds} seeds), "
+                 f"{sizes}, t = {_listing(times)}, W1^(d) to the exact MSPD from (1.9) with n = "
+                 f"{int(d['reference_n'])}, averaged over the seeds; order in n {resolved_text}, smallest over cases "
+                 f"and times (one draw's own order scatters: {min(singles, default=math.nan):.2f} to "
+                 f"{max(singles, default=math.nan):.2f})",
+            tolerance=order_min, measured=chosen(convergence, min), published="convergence"),
+        claim(
+            c.at_least, "theory.cor46.premise", kind="check",
+            source="(4.12), premise of Corollary 4.6 (our random data)", figure="Corollary 4.6",
+            text=f"the random configurations satisfy (4.12): W1^(d)(mu_0[x(n)], m), exact, averaged over "
+                 f"the {seeds} seeds, falls with n; order fitted on every n ({sizes}), smaller of the cases",
+            tolerance=order_min, measured=chosen(premise, min), published="-> 0"),
+        claim(
+            c.at_most, "theory.t_exponent", kind="check",
+            source="section 5.2, O(t^2/eps^2) from Theorem 4.4 (one-sided: "
+                   "our check)",
+            figure="section 5.2",
+            text=f"an upper bound only, and the initial error W1(m, mu_0), which does not grow with t, dominates the "
+                 f"errors at these t, so it cannot show the t^2: the iterated TSPD needs O(t^2/eps^2) operations for "
+                 f"an error eps at time t: L = n steps of t/n from (1.9), {sizes} ({resolved_text}), t = "
+                 f"{_listing(times)}; n needed at a common error eps* "
+                 f"(the largest of the smallest errors over t, interpolated log-log, never extrapolated: "
+                 f"{'; '.join(lows)}); exponent of d n L = d n^2 against t, largest over the cases",
+            tolerance=exponent_max, measured=float(np.max(exponents)), published="2 (t^2)"),
+        claim(
+            c.at_least, "theory.references", kind="check", source="Corollary 4.6 and section 5.2 (our references)",
+            figure="Corollary 4.6",
+            text=f"the exact MSPD references (n = {int(d['reference_n'])}, own error: distance to "
+                 f"n = {int(d['reference_n']) // 2}) resolve at least {fewest} runs of every fit (errors at least "
+                 f"1/{share:g} of their own); fewest",
+            tolerance=fewest, measured=float(min(kept))),
     ]
 
 
