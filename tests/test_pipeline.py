@@ -26,6 +26,9 @@ CONFIG_MARGIN = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["r
 
 # One xdist worker runs this module (its quick run is a module fixture); the unit tests share the other cores.
 pytestmark = [pytest.mark.pipeline, pytest.mark.xdist_group("pipeline")]
+# The tests that need no quick run: a group of their own (pytest-xdist joins a test's group names), which another
+# worker takes while the quick run is made.
+WITHOUT_THE_RUN = pytest.mark.xdist_group("without_the_run")
 
 
 # What a clone holds besides the sources: never copied into the scratch repositories.
@@ -197,6 +200,7 @@ def test_another_machine_gives_the_same_verdicts(repository, workdir, tmp_path):
     assert not problems, "\n".join(problems)
 
 
+@WITHOUT_THE_RUN
 def test_value_comparison_sees_a_moved_value(tmp_path):
     import dataclasses
 
@@ -363,6 +367,7 @@ def test_a_configuration_of_ones_own_is_compared_with_nothing(workdir, tmp_path)
     assert "Nothing compared" in result.stdout and "sticky.lemma21.n_values" in result.stdout
 
 
+@WITHOUT_THE_RUN
 @pytest.mark.parametrize(
     "override, key",
     [
@@ -388,6 +393,7 @@ def test_bad_configuration_stops_at_start_naming_the_key(tmp_path, override, key
     assert not (tmp_path / "results").exists()
 
 
+@WITHOUT_THE_RUN
 def test_a_configuration_file_is_laid_over_the_full_one(tmp_path):
     """A file given with --configfile holds only what differs: a section it leaves out is the full run's
     (here every sticky job is planned from config/config.yaml's sticky section)."""
@@ -459,11 +465,23 @@ def test_two_builds_of_the_pdf_are_byte_identical(workdir):
         assert "Title:           Particle methods" in info and "Author:" in info
 
 
-def test_browsable_report_has_every_figure_with_its_caption(workdir):
-    report = workdir / "report.html"
-    result = snakemake(workdir, "--report", str(report))
+@pytest.fixture(scope="module")
+def report(workdir, tmp_path_factory):
+    """The browsable report a user gets (`snakemake --report report.zip`), made once for the tests that read it:
+    (its archive, the folder it is unpacked in)."""
+    import zipfile
+
+    folder = tmp_path_factory.mktemp("report")
+    archive = folder / "report.zip"
+    result = snakemake(workdir, "--report", str(archive))
     assert result.returncode == 0, result.stderr[-2000:]
-    html = report.read_text()
+    with zipfile.ZipFile(archive) as opened:
+        opened.extractall(folder)
+    return archive, folder
+
+
+def test_browsable_report_has_every_figure_with_its_caption(report):
+    html = (report[1] / "report" / "report.html").read_text()
     shown = {name for name in EXPECTED_FIGURES if name.endswith(".png") and name in html}
     assert shown == {name for name in EXPECTED_FIGURES if name.endswith(".png")}
     assert "Morse kernels" in html and "Brenier-Grenier hull" in html
@@ -489,7 +507,7 @@ async function view(name) {
 """
 
 
-def test_browsable_report_shows_the_claims_table_and_a_figure_in_chromium(workdir, tmp_path):
+def test_browsable_report_shows_the_claims_table_and_a_figure_in_chromium(workdir, report, tmp_path):
     """The report a user gets (report.zip) opened in headless Chromium: the claims table shows every claim as a
     table, and our own figures are marked and shown."""
     import zipfile
@@ -498,16 +516,13 @@ def test_browsable_report_shows_the_claims_table_and_a_figure_in_chromium(workdi
 
     if chromium.executable() is None:
         pytest.skip(chromium.MISSING)
-    archive = tmp_path / "report.zip"
-    result = snakemake(workdir, "--report", str(archive))
-    assert result.returncode == 0, result.stderr[-2000:]
+    archive, folder = report
     with zipfile.ZipFile(archive) as opened:
-        opened.extractall(tmp_path)
         names = opened.namelist()
     latex = shutil.which("latexmk") and shutil.which("pdflatex")
     for shipped in ("claims.html", "versions.html", "sticky.html", *(["ms.pdf"] if latex else [])):
         assert any(name.endswith(shipped) for name in names), shipped
-    page = (tmp_path / "report" / "report.html").as_uri()
+    page = (folder / "report" / "report.html").as_uri()
     claims = list(csv.DictReader((workdir / "results" / "claims.csv").open()))
     ours = next(f"{entry.name} (ours)" for entry in registry.PAPERS["blob"].figures if entry.ours)
     with chromium.Browser() as browser:
