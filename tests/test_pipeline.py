@@ -420,7 +420,8 @@ def test_a_forced_rerun_gives_an_identical_claims_table(workdir):
     before = table()
     result = snakemake(workdir, "--forceall", "--", "results/blob/claims.csv")
     assert result.returncode == 0, result.stderr[-2000:]
-    assert {"data_blob_fig1", "blob_fig5_case", "blob_claims"} <= planned_rules(result), planned_rules(result)
+    ran = set(re.findall(r"^localrule (\w+):", result.stdout + result.stderr, flags=re.MULTILINE))
+    assert {"data_blob_fig1", "blob_fig5_case", "blob_claims"} <= ran, ran
     result = snakemake(workdir, "--", "results/claims.csv")
     assert result.returncode == 0, result.stderr[-2000:]
     after = table()
