@@ -262,8 +262,11 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
                                                                      for ext in ("pdf", "png"))):
         (workdir / name).unlink()
     start = time.time()
+    # Ctrl-C's default action restored in the run: pytest started in the background (`pytest &`) ignores SIGINT,
+    # and so would the run it starts, which would then finish.
     process = subprocess.Popen(snakemake_command(workdir), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                               start_new_session=True, env=checkout_environment(workdir.parents[1]))
+                               start_new_session=True, env=checkout_environment(workdir.parents[1]),
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     log = workdir / "logs" / "blob" / "fig8_data.log"
     while not (log.exists() and log.stat().st_mtime >= start and log.read_text()):
         assert process.poll() is None and time.time() - start < 300, "the solver never started"
