@@ -451,6 +451,27 @@ def test_report_pdf_is_built_where_latex_is_installed(workdir):
     assert "measured@sticky.fig2d.order" in measured
 
 
+def test_no_figure_of_the_built_pdfs_prints_text_below_the_legible_size(workdir):
+    """The figure-size check of tests/test_built_report.py on the PDFs this run built (the quick run's figures
+    have the full run's layouts): every registered figure is found, none with text below 7 pt as printed."""
+    import shutil
+
+    if not (shutil.which("latexmk") and shutil.which("pdflatex")):
+        pytest.skip("no LaTeX toolchain: no PDF was built")
+    from test_built_report import figure_text_sizes
+
+    from particle_replication.plotting import MIN_PRINTED_SIZE
+
+    sizes = {}
+    for pdf in (workdir / "paper" / "ms.pdf", workdir / "paper" / "supplement.pdf"):
+        sizes |= figure_text_sizes(pdf)
+    labels = {paper.label(figure.name).removeprefix("Figure ") for paper in registry.PAPERS.values()
+              for figure in paper.figures}
+    assert set(sizes) == labels, f"figures not found: {sorted(labels - set(sizes))}; unknown: {set(sizes) - labels}"
+    small = {label: size for label, size in sizes.items() if size[0] < MIN_PRINTED_SIZE - 0.01}
+    assert not small, f"figure text below {MIN_PRINTED_SIZE} pt: {small}"
+
+
 def test_two_builds_of_the_pdf_are_byte_identical(workdir):
     import shutil
 
