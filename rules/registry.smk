@@ -32,7 +32,9 @@ def plot_parameters(paper, plot):
     paper's section of the config."""
     section = config[paper.id]
     captions = [
-        f"{paper.label(entry.name)}" + (f" ({OURS})" if entry.ours else "") + f". {entry.caption(section)}"
+        f"{paper.label(entry.name)}"
+        + (f" ({OURS})" if entry.ours else "")
+        + f". {entry.caption(section)}"
         for entry in plot.figures
     ]
     parameters = {"caption": " ".join(captions)}
