@@ -7,22 +7,32 @@ from __future__ import annotations
 import numpy as np
 from census import Entry as E
 
-from particle_methods import convergence, jit, norms, perturbation, systems, threads, validation
-from particle_methods.blob import aliasing, checks, exact, initial, kernels, mollifiers, newtonian_fmm, pair_sums
-from particle_methods.blob import radial, rings, solver, sums_1d, vector_erfc, vector_exp
-from particle_methods.cross import aggregates, distances, hull, methods, profiles
+from particle_methods import convergence, norms, perturbation, systems, threads, validation
+from particle_methods.blob import (
+    initial,
+    kernels,
+    mollifiers,
+    solver,
+)
+from particle_methods.cross import aggregates, hull, methods
 from particle_methods.cross import exact as cross_exact
-from particle_methods.finite_volume import fluxes, grids, psystem, riemann, scalar
-from particle_methods.ltp import checks as ltp_checks
-from particle_methods.ltp import exact as ltp_exact
+from particle_methods.finite_volume import fluxes
 from particle_methods.ltp import initial as ltp_initial
-from particle_methods.ltp import kernels as ltp_kernels
-from particle_methods.ltp import measures as ltp_measures
-from particle_methods.ltp import potentials, shapes, theorems
+from particle_methods.ltp import potentials, shapes
 from particle_methods.ltp import solver as ltp_solver
-from particle_methods.sticky import admissibility, cases, events, hopf, hull_reference, measures, mspd
+from particle_methods.sticky import (
+    admissibility,
+    cases,
+    events,
+    hopf,
+    hull_reference,
+    measures,
+    mspd,
+    multitype_events,
+    spd,
+    theory,
+)
 from particle_methods.sticky import exact as sticky_exact
-from particle_methods.sticky import multitype_events, spd, theory
 
 PM = "particle_methods."
 A = np.array
@@ -72,6 +82,8 @@ def V(function, **good):
              names={key: ("x",) for key in good})
 
 
+COUNTS = ("merges", "crossings", "splits", "member_updates")
+
 ENTRIES = {
     # validation
     PM + "validation.finite_values": V(validation.finite_values, name="x", values=X3),
@@ -115,6 +127,105 @@ ENTRIES = {
     PM + "threads.threads_for": E(threads.threads_for, {"size": 10, "threshold": 100},
                                     accepts={"size": [10**400], "threshold": [10**400]}),
     PM + "threads.available": E(threads.available, {}),
+    # sticky
+    PM + "sticky.admissibility.Admissibility": E(admissibility.Admissibility, {"rankine_hugoniot": 0.1, "entropy": 0.0,
+                                                                                "speed_scale": 1.0, "clusters": 2},
+                                                 accepts={"clusters": [10**400]}),
+    PM + "sticky.admissibility.flux_values": E(admissibility.flux_values, {"flux": fluxes.burgers_flux,
+                                                                          "states": A([0.0, 0.5])}),
+    PM + "sticky.admissibility.checked_sampling": E(admissibility.checked_sampling, {
+        "n": 4, "flux": fluxes.burgers_flux, "points": 4, "fewest_points": 1}),
+    PM + "sticky.admissibility.mass_levels": E(admissibility.mass_levels, {"masses": A([0.5, 0.5]), "particles": 2,
+                                                                          "order": A([0, 1])}),
+    PM + "sticky.admissibility.admissibility_violation": E(admissibility.admissibility_violation, {
+        "positions": A([0.0, 0.0, 1.0]), "velocities": A([0.5, 0.5, -1.0]), "flux": fluxes.burgers_flux,
+        "masses": A([0.25, 0.25, 0.5]), "points": 4}),
+    PM + "sticky.admissibility.spd_state": E(admissibility.spd_state, {"x": X3, "v": V3, "t": 0.5, "masses": None}),
+    PM + "sticky.multitype_events.EventCounts": E(multitype_events.EventCounts, {"merges": 1, "crossings": 2,
+                                                                                "splits": 0, "member_updates": 3},
+                                                     accepts={key: [10**400] for key in COUNTS}),
+    PM + "sticky.events.sticky_collisions": E(events.sticky_collisions, {"x": X3, "v": V3, "t": 0.5,
+                                                                        "masses": A([1.0, 1.0, 1.0])}),
+    PM + "sticky.hopf.hopf_gap": E(hopf.hopf_gap, {"initial": X3, "positions": spd.spd_positions(X3, V3, 0.5),
+                                                  "t": 0.5, "flux": fluxes.burgers_flux, "masses": None, "points": 4}),
+    PM + "sticky.hull_reference.HullIteration": E(hull_reference.HullIteration, {"k": 1, "before": (0,), "removed": (),
+                                                                                "after": (0, 1)}),
+    PM + "sticky.hull_reference.cumulative_free_positions": E(hull_reference.cumulative_free_positions,
+                                                              {"x": X3, "v": V3, "t": 0.5}),
+    PM + "sticky.hull_reference.hull_vertices": E(hull_reference.hull_vertices, {"q": A([0.0, 1.0, 1.5, 3.0])}),
+    PM + "sticky.hull_reference.spd_positions_python": E(hull_reference.spd_positions_python, {"x": X3, "v": V3,
+                                                                                              "t": 0.5}),
+    PM + "sticky.measures.QuantileMeasure": E(measures.QuantileMeasure, {}),
+    PM + "sticky.measures.QuantileMeasure.quantile": E(LAPLACE.quantile, {"w": A([0.1, 0.5, 0.9])}),
+    PM + "sticky.measures.QuantileMeasure.quantile_integral": E(LAPLACE.quantile_integral, {"w": A([0.0, 0.5, 1.0])}),
+    PM + "sticky.measures.QuantileMeasure.cdf": E(LAPLACE.cdf, {"x": X3}),
+    PM + "sticky.measures.checked_measure": E(measures.checked_measure, {"name": "measure", "measure": LAPLACE},
+                                              kinds={"name": "fixed"}),
+    PM + "sticky.measures.Atoms": E(measures.Atoms, {"positions": X3, "weights": A([0.2, 0.3, 0.5])}),
+    PM + "sticky.measures.Laplace": E(measures.Laplace, {"loc": 0.0}),
+    PM + "sticky.measures.Uniform": E(measures.Uniform, {"a": 0.0, "b": 1.0}),
+    PM + "sticky.measures.TruncatedExponential": E(measures.TruncatedExponential, {"b": 1.0}),
+    PM + "sticky.measures.Pareto": E(measures.Pareto, {"alpha": 2.0}),
+    PM + "sticky.measures.TruncatedPareto": E(measures.TruncatedPareto, {"alpha": 2.0, "upper": 3.0}),
+    PM + "sticky.measures.Weibull": E(measures.Weibull, {"alpha": 2.0}),
+    PM + "sticky.measures.median_quantiles": E(measures.median_quantiles, {"measure": LAPLACE, "n": 4}),
+    PM + "sticky.measures.averaged_quantiles": E(measures.averaged_quantiles, {"measure": LAPLACE, "n": 4}),
+    PM + "sticky.mspd.ScalarLaw": E(mspd.ScalarLaw, {"flux": fluxes.burgers_flux}),
+    PM + "sticky.mspd.ScalarLaw.speed_primitive": E(mspd.ScalarLaw(fluxes.burgers_flux).speed_primitive,
+                                                    {"gamma": 0, "levels": A([[0.0, 0.5], [0.5, 1.0]])}),
+    PM + "sticky.mspd.checked_configuration": E(mspd.checked_configuration, {"name": "x", "x": CONFIG,
+                                                                            "system": SYSTEM}, kinds={"name": "fixed"}),
+    PM + "sticky.mspd.rank_velocities": E(mspd.rank_velocities, {"x": CONFIG, "system": SYSTEM}),
+    PM + "sticky.mspd.mspd_trajectory": E(mspd.mspd_trajectory, {"x0": CONFIG, "system": SYSTEM, "delta": 0.05,
+                                                                "steps": 2}),
+    PM + "sticky.mspd.mspd_positions": E(mspd.mspd_positions, {"x0": CONFIG, "system": SYSTEM, "delta": 0.05,
+                                                              "steps": 2}),
+    PM + "sticky.spd.checked_state": E(spd.checked_state, {"x": X3, "v": V3}),
+    PM + "sticky.spd.checked_masses": E(spd.checked_masses, {"masses": A([1.0, 2.0, 1.0]), "x": X3}),
+    PM + "sticky.spd.check_reach": E(spd.check_reach, {"x": X3, "speed": 1.0, "t": 0.5}),
+    PM + "sticky.spd.spd_trajectories": E(spd.spd_trajectories, {"x": X3, "v": V3, "times": TIMES, "masses": None}),
+    PM + "sticky.spd.cluster_sizes": E(spd.cluster_sizes, {"positions": A([0.0, 0.0, 1.0])}),
+    PM + "sticky.spd.velocities_from_flux": E(spd.velocities_from_flux, {"flux": fluxes.burgers_flux, "n": 4}),
+    PM + "sticky.spd.velocities_from_levels": E(spd.velocities_from_levels, {"flux": fluxes.burgers_flux,
+                                                                            "levels": A([0.0, 0.5, 1.0])}),
+    PM + "sticky.theory.cubic_flux": E(theory.cubic_flux, {"u": A([0.0, 0.5, 1.0])}),
+    PM + "sticky.theory.CubicDiracSolution": E(theory.CubicDiracSolution, {"position": 0.0, "t": 0.5}),
+    PM + "sticky.theory.empirical_atoms": E(theory.empirical_atoms, {"x": X3}),
+    PM + "sticky.theory.duplicated": E(theory.duplicated, {"x": X3}),
+    PM + "sticky.theory.sampled_configuration": E(theory.sampled_configuration, {
+        "measures": [LAPLACE, LAPLACE], "n": 3, "rng": np.random.default_rng(1)}, kinds={"measures": "object"}),
+    PM + "sticky.theory.SystemConstants": E(theory.SystemConstants, {"d": 2, "speed_bound": 1.0, "hyperbolicity": 0.5,
+                                                                    "lipschitz": 1.0, "crossings_bound": 1}),
+    PM + "sticky.theory.psystem_constants": E(theory.psystem_constants, {"system": SYSTEM}),
+    PM + "sticky.theory.CollisionRecord": E(theory.CollisionRecord, {
+        "collisions": A([1.0]), "step_distances": A([0.1]), "pair_counts": A([1.0]), "smallest_shrink": 0.5,
+        "largest_collision_gap": 0.1, "mspd_distances": A([0.1]), "extent": 1.0}),
+    PM + "sticky.theory.collision_record": E(theory.collision_record, {"x0": CONFIG, "system": SYSTEM, "delta": 0.05,
+                                                                      "steps": 2}),
+    PM + "sticky.theory.doubling_distance": E(theory.doubling_distance, {"flux": fluxes.burgers_flux, "x": X3,
+                                                                        "t": 0.5}),
+    PM + "sticky.exact.lambert_w0": E(sticky_exact.lambert_w0, {"z": A([-0.3, -0.1, 0.0])}),
+    PM + "sticky.exact.BurgersSolution": E(sticky_exact.BurgersSolution, {"initial": LAPLACE, "t": 0.5}),
+    PM + "sticky.exact.ConcaveLaplaceSolution": E(sticky_exact.ConcaveLaplaceSolution, {"t": 0.5}),
+    PM + "sticky.cases.ScalarCase": E(cases.ScalarCase, {"initial": LAPLACE, "flux": fluxes.burgers_flux,
+                                                         "solution": SCALAR_CASE.solution, "flux_lipschitz": 1.0}),
+    PM + "sticky.cases.ScalarCase.initial_state": E(SCALAR_CASE.initial_state, {"n": 4}),
+    PM + "sticky.cases.ScalarCase.positions": E(SCALAR_CASE.positions, {"n": 4, "t": 0.5}),
+    PM + "sticky.cases.ScalarCase.error": E(SCALAR_CASE.error, {"n": 4, "t": 0.5}),
+    PM + "sticky.cases.psystem_initial_measures": E(cases.psystem_initial_measures, {"case": "rarefaction", "x0": 0.1}),
+    PM + "sticky.cases.psystem_initial_configuration": E(cases.psystem_initial_configuration, {
+        "case": "rarefaction", "x0": 0.1, "n": 4}),
+    PM + "sticky.cases.psystem_initial_cells": E(cases.psystem_initial_cells, {"case": "rarefaction", "x0": 0.1,
+                                                                              "x_edges": EDGES}),
+    PM + "sticky.cases.distance_to_cells": E(cases.distance_to_cells, {
+        "configuration": CONFIG, "w": cases.psystem_initial_cells("rarefaction", 0.0, EDGES), "x_edges": EDGES}),
+    PM + "sticky.cases.cells_distance": E(cases.cells_distance, {
+        "w_a": cases.psystem_initial_cells("rarefaction", 0.0, EDGES), "edges_a": EDGES,
+        "w_b": cases.psystem_initial_cells("rarefaction", 0.1, EDGES), "edges_b": EDGES}),
+    PM + "sticky.cases.cells_quantile": E(cases.cells_quantile, {"w": np.linspace(0.1, 1.0, 10), "x_edges": EDGES,
+                                                                 "level": 0.5}),
+    PM + "sticky.cases.configuration_distance": E(cases.configuration_distance, {"a": CONFIG, "b": CONFIG + 0.1}),
+    PM + "sticky.cases.empirical_cdf": E(cases.empirical_cdf, {"points": X3, "x": A([0.5, 2.0])}),
 }
 
 EXEMPT = {

@@ -16,7 +16,6 @@ import numpy as np
 
 from .jit import njit
 
-
 #: Most entries of one array argument: beyond every work limit of the package (the largest, the SPD's 10**8
 #: positions, included), so that an array far too large (a zero-stride view of 10**9 entries costs no memory) is
 #: refused before any copy or pass over it.
