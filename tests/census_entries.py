@@ -121,7 +121,7 @@ ENTRIES = {
                                  perturbation.set_nudge(0), {"ulps": 2, "seed": 0}, accepts={"seed": [10**400]}),
     PM + "perturbation.nudged": E(perturbation.nudged, {"values": X3}),
     PM + "threads.use_threads": E(lambda count: threads.use_threads(count) and threads.use_threads(1), {"count": 1},
-                                   accepts={"count": [10**400]}),  # clamped to the available threads
+                                   names={"count": ("threads",)}, accepts={"count": [10**400]}),  # clamped
     PM + "threads.numba_threads": E(lambda count: threads.numba_threads(count).__enter__(), {"count": 1},
                                       accepts={"count": [10**400]}),
     PM + "threads.threads_for": E(threads.threads_for, {"size": 10, "threshold": 100},

@@ -41,7 +41,7 @@ def use_threads(count) -> int:
     """Run numba's kernels and the BLAS/OpenMP libraries on ``count`` >= 1 threads, at most
     :func:`available`; returns the count used. Libraries loaded later read it from the
     environment; those already loaded are set through threadpoolctl."""
-    count = min(integer_at_least("count", count, 1), available())
+    count = min(integer_at_least("threads", count, 1), available())
     numba.set_num_threads(count)
     for variable in _LIBRARY_VARIABLES:
         os.environ[variable] = str(count)
@@ -55,9 +55,9 @@ def use_threads(count) -> int:
 def numba_threads(count: int):
     """Numba's kernels on ``count`` threads (at least 1, at most the current count) inside the block;
     the previous setting is restored on exit."""
-    count = integer_at_least("count", count, 1)
+    count = integer_at_least("count", count, 0)
     threads = numba.get_num_threads()
-    numba.set_num_threads(min(count, threads))
+    numba.set_num_threads(max(1, min(count, threads)))
     try:
         yield
     finally:
