@@ -386,6 +386,7 @@ def test_a_configuration_of_ones_own_is_compared_with_nothing(workdir, tmp_path)
          "count: 5}\n", "ltp.quadratic.eps_scan.eps_min"),
         ("blob:\n  fig1:\n    density_times: [0.0, 0.4, 5.0]\n", "blob.fig1.density_times"),
         ("sticky:\n  cost:\n    hull_n: [100, 1000, 1000000000000]\n", "sticky.cost.hull_n"),
+        ("sticky:\n  beyond:\n    repeats: 100000000\n", "sticky.beyond.repeats"),  # held to a solver's limit
     ],
 )
 def test_bad_configuration_stops_at_start_naming_the_key(tmp_path, override, key):

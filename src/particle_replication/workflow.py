@@ -54,13 +54,18 @@ def progress(message: str) -> None:
 #: timer's resolution, an interrupt or a cache left cold by the previous run is a visible share of a run.
 REPEAT_BELOW = 0.2
 
+#: Most rounds of :func:`interleaved`: each round of runs shorter than REPEAT_BELOW costs up to that long per run.
+MAX_REPEATS = 100
+
 
 def interleaved(runs, repeats: int, guard=None):
     """(best seconds, results) of the callables ``runs``, timed in ``repeats`` rounds over all of them, so that a
     passing disturbance of the machine hits every size alike rather than one; a run longer than
     :data:`REPEAT_BELOW` is timed in the first round only. ``results`` are those of the first round;
     ``guard`` (a :class:`LoadGuard`) samples the load before every run. Compile and warm the kernels first:
-    the first round is timed too."""
+    the first round is timed too. At most :data:`MAX_REPEATS` rounds."""
+    if isinstance(repeats, bool) or not isinstance(repeats, int) or not 1 <= repeats <= MAX_REPEATS:
+        raise ValueError(f"repeats must be an integer from 1 to MAX_REPEATS = {MAX_REPEATS}, got {repeats!r}")
     best, results = [math.inf] * len(runs), [None] * len(runs)
     for round_ in range(repeats):
         for i, run in enumerate(runs):
