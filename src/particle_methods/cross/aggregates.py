@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..finite_volume.grids import MAX_CELLS
+from ..finite_volume.scalar import MAX_CELL_STEPS
 from ..sticky.spd import spd_positions
 from ..validation import (
     finite_array,
@@ -33,7 +35,11 @@ from ..validation import (
     same_length,
 )
 from . import methods
-from .hull import HullSolution
+from .hull import HullSolution, bump_data
+
+#: Most readings of the gap one :func:`godunov_merger` call takes (a run of the scheme and the centres of two level
+#: ranges each, about 2 ms on 64 cells): (high - low) / (chunk steps) + chunk. The pipeline's settings take about 300.
+MAX_GAP_READINGS = 10**4
 
 
 def level_ranges(solution: HullSolution) -> np.ndarray:
@@ -217,11 +223,22 @@ def godunov_merger(data, cells: int, low: float, high: float, *, cfl: float = 0.
     steps, then at every step of the chunk in which it fell to one cell (from that chunk's saved state), and the
     crossing interpolated between two steps (:func:`first_within`). ValueError if low and high do not bracket such
     a time (two exact aggregates at low, more than a cell apart; within a cell by high)."""
-    cells = integer_at_least("cells", cells, 1)
+    cells = integer_at_least("cells", cells, 1, MAX_CELLS)
     chunk = integer_at_least("chunk", chunk, 1)
     low, high = nonnegative("low", low), nonnegative("high", high)
     if not low < high:
         raise ValueError(f"need low < high, got {low} and {high}")
+    with np.errstate(divide="ignore", over="ignore"):  # (a step that underflows to 0 needs infinitely many)
+        steps = (high - low) / np.float64(methods.godunov_time_step(np.linspace(-1.0, 1.0, cells + 1),
+                                                                    bump_data(data).mass, cfl))
+    if steps / chunk + chunk > MAX_GAP_READINGS:
+        raise ValueError(f"[low, high] = [{low}, {high}] takes {steps:.3g} steps of the scheme on {cells} cells (cfl "
+                         f"= {cfl}), read every chunk = {chunk}: more than MAX_GAP_READINGS = {MAX_GAP_READINGS:.0e} "
+                         "readings of the gap; raise cfl or chunk, or narrow [low, high]")
+    if (steps + chunk) * cells > MAX_CELL_STEPS:
+        raise ValueError(f"[low, high] = [{low}, {high}] takes {steps:.3g} steps of the scheme on {cells} cells (cfl "
+                         f"= {cfl}), more than MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates; raise cfl, use "
+                         "fewer cells or narrow [low, high]")
     solution = HullSolution(data, low)
     ranges = level_ranges(solution)
     if ranges.shape[0] != 2:

@@ -36,7 +36,7 @@ from ..blob.pair_sums import pair_sums
 from ..blob.solver import integrate_particles
 from ..finite_volume.fluxes import CONCAVE
 from ..finite_volume.grids import MAX_CELLS
-from ..finite_volume.scalar import cfl_time_step, godunov
+from ..finite_volume.scalar import MAX_CELL_STEPS, cfl_time_step, godunov
 from ..ltp.initial import InitialDensity
 from ..ltp.potentials import potential
 from ..ltp.solver import simulate
@@ -57,6 +57,11 @@ MAX_EQUAL_MASSES = 2**22
 #: Latest time of the SPDs: their velocities carry rounding errors of about 1e-16 (a cluster at rest moves at
 #: that speed), which t multiplies; up to 1e6 they move positions of order 1 by at most about 1e-10.
 MAX_TIME = 1e6
+#: Most times of one :func:`godunov_paths` call: each ends a run of the scheme (about 0.25 ms of fixed cost) and
+#: keeps its state; the pipeline asks for about 20.
+MAX_PATH_TIMES = 10**5
+#: Most cell values :func:`godunov_paths` keeps, times x cells (800 MB); the pipeline keeps about 3 * 10**5.
+MAX_PATH_VALUES = 10**8
 
 
 def _spd_time(t) -> float:
@@ -246,11 +251,20 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     ends with a step shortened to land on its time)."""
     _grid_density(data)  # supported in [-1, 1]
     cells = integer_at_least("cells", cells, 1, MAX_CELLS)
+    if isinstance(times, np.ndarray):  # from the shape, before any copy of the times
+        _check_path_size(times.size, cells)
     times = finite_array("times", times)
+    _check_path_size(times.size, cells)
     if times.size == 0 or times[0] < 0 or np.any(np.diff(times) < 0):
         raise ValueError(f"times must be non-negative and non-decreasing, at least one, got {times}")
     edges = np.linspace(-1.0, 1.0, cells + 1)
     initial = solution(data, 0.0)
+    # Every stretch checks its own steps; together they take at least t_last / dt steps of every cell.
+    with np.errstate(divide="ignore"):  # (a step that underflows to 0 needs infinitely many)
+        steps = times[-1] / np.float64(godunov_time_step(edges, initial.mass, cfl))
+    if steps * cells > MAX_CELL_STEPS:
+        raise ValueError(f"times up to {times[-1]:g} on {cells} cells need {steps:.3g} steps of the scheme, more than "
+                         f"MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce the times or cells or raise cfl")
     values = nudged(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges))  # the exact cell averages of F0
     out, now = [], 0.0
     for t in times:
@@ -258,6 +272,14 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
         out.append((edges, values))
         now = float(t)
     return out
+
+
+def _check_path_size(times: int, cells: int) -> None:
+    if times > MAX_PATH_TIMES:
+        raise ValueError(f"times holds {times} times, more than MAX_PATH_TIMES = {MAX_PATH_TIMES:.0e}")
+    if times * cells > MAX_PATH_VALUES:
+        raise ValueError(f"times holds {times} times of {cells} cells, {times * cells:.3g} values to keep, more than "
+                         f"MAX_PATH_VALUES = {MAX_PATH_VALUES:.0e}")
 
 
 def godunov_advance(edges, values, mass: float, t: float, *, cfl: float = 0.9) -> np.ndarray:
