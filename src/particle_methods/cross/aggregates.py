@@ -167,17 +167,19 @@ def first_within(times, gaps, threshold: float) -> float:
     g = finite_array("gaps", gaps)
     same_length(times=t, gaps=g)
     threshold = positive("threshold", threshold)
-    if t.size < 2 or np.any(np.diff(t) <= 0):
+    if t.size < 2 or np.any(t[1:] <= t[:-1]):
         raise ValueError("times must be increasing, at least two")
     below = np.flatnonzero(g <= threshold)
     if below.size == 0 or below[0] == 0:
         raise ValueError(f"gaps must fall to the threshold {threshold!r} after the first sample, got {g[[0, -1]]} "
                          "at the first and last")
     i = below[0]
-    with np.errstate(over="ignore", invalid="ignore"):  # a non-finite share fails the check just below
-        share = (g[i - 1] - threshold) / (g[i - 1] - g[i])  # in [0, 1): the gap falls by more than its excess
-        crossing = (1.0 - share) * t[i - 1] + share * t[i]
-    return finite_result("the crossing time", float(crossing), "gaps too large: their differences overflow")
+    # The share of the step at which the gap reaches the threshold, in [0, 1) (the gap falls by more than its
+    # excess), with the three values scaled by a power of two (exactly) so that their differences cannot overflow.
+    scale = np.ldexp(1.0, -max(int(np.frexp(max(abs(g[i - 1]), abs(g[i])))[1]), 0))
+    share = (g[i - 1] * scale - threshold * scale) / (g[i - 1] * scale - g[i] * scale)
+    crossing = (1.0 - share) * t[i - 1] + share * t[i]
+    return finite_result("the crossing time", float(crossing), "times too large: their interpolation overflows")
 
 
 def gap_path(positions, masses, ranges) -> np.ndarray:
