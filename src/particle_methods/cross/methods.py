@@ -299,7 +299,8 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     if steps * cells > MAX_CELL_STEPS:
         raise ValueError(f"times up to {times[-1]:g} on {cells} cells need {steps:.3g} steps of the scheme, more than "
                          f"MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce the times or cells or raise cfl")
-    values = nudged(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges))  # the exact cell averages of F0
+    # The exact cell averages of F0, in [0, M] (their differences' rounding, about eps M / dx, clipped).
+    values = nudged(np.clip(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges), 0.0, initial.mass))
     out, now = [], 0.0
     for t in times:
         values = godunov_advance(edges, values, initial.mass, float(t) - now, cfl=cfl)
