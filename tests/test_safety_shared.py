@@ -343,3 +343,42 @@ def test_names_of_the_wrong_type_are_parameter_type_errors(lookup, value):
     with pytest.raises(ValueError, match="unknown") as refused:
         calls[lookup]("no such name")
     assert not isinstance(refused.value, ParameterTypeError)
+
+
+def test_issue_46_cfl_and_flux_shape_are_checked():
+    """cfl_time_step(BURGERS, 0, 1, 0.1, None) returned NaN and cfl = -1 a negative step; ScalarFlux(shape=None)
+    raised a plain ValueError."""
+    from particle_methods.finite_volume.scalar import cfl_time_step
+
+    for cfl, error, message in [(None, TypeError, "cfl must be a real number"), (-1.0, ValueError, "cfl must be "
+                                "positive"), (float("nan"), ValueError, "cfl must be finite"),
+                                (2.0, ValueError, r"cfl must lie in \(0, 1\]")]:
+        with pytest.raises(error, match=message):
+            cfl_time_step(BURGERS, 0.0, 1.0, 0.1, cfl)
+    assert cfl_time_step(BURGERS, 0.0, 1.0, 0.1, 0.5) == pytest.approx(0.05, rel=1e-15)
+    with pytest.raises(ParameterTypeError, match=r"shape must be one of .* \(a string\), got None"):
+        ScalarFlux(BURGERS.f, BURGERS.derivative, 0.0, shape=None)
+
+
+def test_issue_46_spd_positions_refuses_from_the_shape_and_mspd_exact_compiles_one_layout():
+    """spd_positions on a zero-stride array of 10^9 entries took 8 GB and 29 s before refusing; mspd_exact compiled
+    its kernels again (12 s) for a non-contiguous x0."""
+    from particle_methods.sticky import multitype_events
+    from particle_methods.sticky.cases import psystem_initial_configuration
+    from particle_methods.sticky.spd import spd_positions
+    from particle_methods.systems import PSystem
+
+    huge = np.broadcast_to(np.float64(0.0), (10**9,))
+    for call in (lambda: spd_positions(huge, huge, 1.0), lambda: spd_positions(np.zeros(3), huge, 1.0),
+                 lambda: spd_positions(np.zeros(3), np.zeros(3), 1.0, masses=huge)):
+        with watchdog(), pytest.raises(ValueError, match="holds 1000000000 particles, more than MAX_POSITIONS"):
+            call()
+    x0 = psystem_initial_configuration("rarefaction", 0.1, 8)
+    wide = np.zeros((2, 16))
+    wide[:, ::2] = x0
+    expected = multitype_events.mspd_exact(x0, PSystem(), [0.5])
+    np.testing.assert_array_equal(multitype_events.mspd_exact(wide[:, ::2], PSystem(), [0.5]), expected)
+    for kernel in (multitype_events._start, multitype_events._advance):
+        layouts = {argument.layout for signature in kernel.signatures for argument in signature
+                   if hasattr(argument, "layout")}
+        assert layouts == {"C"}, (kernel, layouts)
