@@ -296,13 +296,26 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     assert "Nothing to be done" in resumed.stdout + resumed.stderr
 
 
+def result_times(workdir):
+    """The times of every file under the run's results, to put back once a test has rebuilt some of them with
+    the same content (the start of a run marks a table of a result that is gone for rebuilding, with time 0)."""
+    return {path: (stat.st_atime_ns, stat.st_mtime_ns)
+            for path in (workdir / "results").rglob("*") if path.is_file() and (stat := path.stat())}
+
+
+def put_back(times):
+    for path, ns in times.items():
+        if path.exists():
+            os.utime(path, ns=ns)
+
+
 def test_a_killed_run_resumes_by_running_the_same_command_again(workdir):
     """SIGKILL of Snakemake alone (its jobs go on): running the same command again stops while the killed run's
     job still writes, then removes the killed run's lock, saying so, and redoes the job it left unfinished."""
     import time
 
     target = workdir / "results/sticky/lemma21.npz"
-    before = target.stat()
+    times = result_times(workdir)
     target.unlink()
     start = time.time()
     command = snakemake_command(workdir, "--", "results/sticky/lemma21.npz")
@@ -332,7 +345,7 @@ def test_a_killed_run_resumes_by_running_the_same_command_again(workdir):
     # whatever the killed run's job wrote, it was marked incomplete: the rerun redid it
     assert re.search(r"^localrule data_sticky_lemma21:", output, flags=re.MULTILINE), output[-3000:]
     assert not list(workdir.rglob("*.tmp")) and not list((workdir / ".snakemake" / "locks").glob("*.lock"))
-    os.utime(target, ns=(before.st_atime_ns, before.st_mtime_ns))  # the same numbers: leave the run as it was
+    put_back(times)  # the job's numbers are the same: the run is left as it was
     assert "Nothing to be done" in (lambda r: r.stdout + r.stderr)(snakemake(workdir, "--dry-run"))
 
 
@@ -340,11 +353,10 @@ def test_a_damaged_result_is_rebuilt_and_verify_refuses_until_it_is(workdir):
     """A cached result truncated with its time kept is found at the next start and rebuilt; verify refuses a
     claims table whose results are missing or damaged, naming them, and passes once the run has rebuilt them."""
     result, table = workdir / "results/sticky/lemma21.npz", workdir / "results/sticky/claims.csv"
-    kept = table.read_bytes(), table.stat()
-    stat = result.stat()
+    kept, times = table.read_bytes(), result_times(workdir)
     with result.open("r+b") as handle:
         handle.truncate(1000)
-    os.utime(result, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    os.utime(result, ns=times[result])
     table.unlink()  # as a run that failed on the damaged file leaves it
     verify = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml"],
                             cwd=workdir.parents[1], env=checkout_environment(workdir.parents[1]),
@@ -358,12 +370,8 @@ def test_a_damaged_result_is_rebuilt_and_verify_refuses_until_it_is(workdir):
     # rebuilt: the job's numbers are the same, so the table and times put back leave the run as it was
     assert snakemake(workdir, "--", "results/sticky/lemma21.npz").returncode == 0
     assert workflow_damaged(result) == ""
-    os.utime(result, ns=(stat.st_atime_ns, stat.st_mtime_ns))
-    table.write_bytes(kept[0])
-    os.utime(table, ns=(kept[1].st_atime_ns, kept[1].st_mtime_ns))
-    for path in (workdir / "results").glob("*"):  # the tables marked for rebuilding at the start, put back
-        if path.is_file() and path.stat().st_mtime_ns == 0:
-            os.utime(path, ns=(kept[1].st_atime_ns, kept[1].st_mtime_ns))
+    table.write_bytes(kept)
+    put_back(times)
     assert "Nothing to be done" in (lambda r: r.stdout + r.stderr)(snakemake(workdir, "--dry-run"))
 
 
