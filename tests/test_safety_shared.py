@@ -382,3 +382,51 @@ def test_issue_46_spd_positions_refuses_from_the_shape_and_mspd_exact_compiles_o
         layouts = {argument.layout for signature in kernel.signatures for argument in signature
                    if hasattr(argument, "layout")}
         assert layouts == {"C"}, (kernel, layouts)
+
+
+# Issue 46, item 4: what the census of the public API found in the shared modules and the sticky records.
+
+
+def test_an_array_too_large_for_any_call_is_refused_before_any_pass_over_it():
+    from particle_methods.validation import MAX_ENTRIES
+
+    huge = np.broadcast_to(np.float64(0.5), (MAX_ENTRIES + 1,))  # no memory: a zero-stride view
+    with watchdog(), pytest.raises(ValueError, match=r"has \d+ entries, more than"):
+        w1_between_samples(huge, np.array([0.0, 1.0]))
+
+
+@pytest.mark.parametrize("mass", [float("nan"), None, "1"])
+def test_check_within_range_refuses_what_is_not_a_finite_mass(mass):
+    from particle_methods.norms import check_within_range
+
+    with pytest.raises((ValueError, TypeError), match="mass"):
+        check_within_range("x", np.array([0.0, 1.0]), mass)
+
+
+@pytest.mark.parametrize("arguments, name", [((float("nan"), 10), "size"), ((10, None), "threshold"),
+                                              (("4", 10), "size"), ((-1, 10), "size")])
+def test_threads_for_refuses_what_is_not_a_count(arguments, name):
+    from particle_methods.threads import threads_for
+
+    with pytest.raises((ValueError, TypeError), match=name):
+        threads_for(*arguments)
+
+
+@pytest.mark.parametrize("field, value", [("rankine_hugoniot", float("nan")), ("entropy", None), ("speed_scale", "1"),
+                                          ("entropy", -1.0), ("clusters", 1.5)])
+def test_admissibility_records_refuse_what_is_not_a_measure(field, value):
+    from particle_methods.sticky.admissibility import Admissibility
+
+    good = {"rankine_hugoniot": 0.0, "entropy": 0.0, "speed_scale": 1.0, "clusters": 2}
+    with pytest.raises((ValueError, TypeError), match=field):
+        Admissibility(**{**good, field: value})
+    assert Admissibility(**good).largest == 0.0
+
+
+@pytest.mark.parametrize("value", [float("nan"), None, "3", -1, 2.5])
+def test_event_counts_refuse_what_is_not_a_count(value):
+    from particle_methods.sticky.multitype_events import EventCounts
+
+    with pytest.raises((ValueError, TypeError), match="crossings"):
+        EventCounts(1, value, 0, 0)
+    assert EventCounts(1, 2, 0, 3).crossings == 2

@@ -19,6 +19,7 @@ from .validation import (
     finite_array,
     finite_number,
     finite_result,
+    finite_values,
     in_interval,
     integer_at_least,
     positive,
@@ -138,7 +139,9 @@ def _checked_measure(measure, methods: tuple[str, ...]) -> float:
 
 
 def check_within_range(name: str, x: np.ndarray, mass: float) -> None:
-    """Refuse positions ``x`` whose products x F(x) with values of F up to ``mass`` overflow."""
+    """Refuse positions ``x`` whose products x F(x) with values of F up to ``mass`` overflow (and positions that are
+    not finite reals, or a mass that is not a finite number, naming them)."""
+    x, mass = finite_values(name, x), finite_number("mass", mass)
     with np.errstate(over="ignore"):
         if x.size and not np.isfinite(np.max(np.abs(x)) * mass):
             raise ValueError(f"{name} are too large: {name} times the mass {mass!r} overflow")

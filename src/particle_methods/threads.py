@@ -55,6 +55,7 @@ def use_threads(count) -> int:
 def numba_threads(count: int):
     """Numba's kernels on ``count`` threads (at least 1, at most the current count) inside the block;
     the previous setting is restored on exit."""
+    count = integer_at_least("count", count, 0)
     threads = numba.get_num_threads()
     numba.set_num_threads(max(1, min(count, threads)))
     try:
@@ -65,5 +66,6 @@ def numba_threads(count: int):
 
 def threads_for(size, threshold):
     """Numba's current threads for a problem of at least ``threshold`` (particles, targets), one below it
-    (a context manager, :func:`numba_threads`)."""
+    (a context manager, :func:`numba_threads`); both are non-negative integers."""
+    size, threshold = integer_at_least("size", size, 0), integer_at_least("threshold", threshold, 0)
     return numba_threads(numba.get_num_threads() if size >= threshold else 1)

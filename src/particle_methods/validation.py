@@ -16,6 +16,11 @@ import numpy as np
 
 from .jit import njit
 
+#: Most entries of one array argument: beyond every work limit of the package (the largest, the SPD's 10**8
+#: positions, included), so that an array far too large (a zero-stride view of 10**9 entries costs no memory) is
+#: refused before any copy or pass over it.
+MAX_ENTRIES = 2 * 10**8
+
 
 class ParameterTypeError(TypeError, ValueError):
     """A parameter of the wrong type: a TypeError, and a ValueError for callers catching that."""
@@ -31,6 +36,8 @@ def real_array(name: str, values) -> np.ndarray:
         raise ParameterTypeError(f"{name} must be a rectangular array of real numbers ({error})") from None
     if array.dtype.kind not in "biuf":
         raise ParameterTypeError(f"{name} must hold real numbers, got dtype {array.dtype}")
+    if array.size > MAX_ENTRIES:
+        raise ValueError(f"{name} has {array.size} entries, more than {MAX_ENTRIES} (a limit on the work of one call)")
     return array.astype(np.float64, copy=False)
 
 

@@ -41,7 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import ParameterTypeError, finite_array, finite_result, integer_at_least, same_length
+from ..validation import ParameterTypeError, finite_array, finite_result, integer_at_least, nonnegative, same_length
 from .spd import MAX_POSITIONS, checked_masses, spd_positions
 
 #: States sampled inside each level interval (c_{k-1}, c_k) when the caller gives none.
@@ -70,6 +70,11 @@ class Admissibility:
     def largest(self) -> float:
         """The largest violation, relative to ``speed_scale``: 0 for the entropy solution, up to rounding."""
         return max(self.rankine_hugoniot, self.entropy)
+
+    def __post_init__(self):
+        for name in ("rankine_hugoniot", "entropy", "speed_scale"):
+            nonnegative(name, getattr(self, name))
+        integer_at_least("clusters", self.clusters, 0)
 
 
 def flux_values(flux, states: np.ndarray) -> np.ndarray:

@@ -54,7 +54,7 @@ import numpy as np
 
 from ..jit import NO_RUNTIME, njit
 from ..systems import PSystem, checked_primitive, speed_primitive_formula
-from ..validation import finite_array, finite_result, instance
+from ..validation import finite_array, finite_result, instance, integer_at_least
 from .mspd import checked_configuration, ranks_kernel
 from .spd import MAX_POSITIONS, check_reach
 
@@ -73,8 +73,7 @@ MAX_PYTHON_EVENTS = 10**6
 _NONE = -1
 
 
-class EventCounts(NamedTuple):
-    """Events processed by :func:`mspd_exact` up to its last requested time."""
+class _Counts(NamedTuple):
 
     merges: int
     """meetings of two clusters of one type, which stick"""
@@ -84,6 +83,16 @@ class EventCounts(NamedTuple):
     """clusters created by the splitting of a cluster after a crossing"""
     member_updates: int
     """velocities (1.8) recomputed at crossings: the work of the crossings"""
+
+
+class EventCounts(_Counts):
+    """Events processed by :func:`mspd_exact` up to its last requested time: counts, non-negative integers."""
+
+    __slots__ = ()
+
+    def __new__(cls, merges, crossings, splits, member_updates):
+        counts = (merges, crossings, splits, member_updates)
+        return super().__new__(cls, *(integer_at_least(name, value, 0) for name, value in zip(cls._fields, counts)))
 
 
 _primitive_formula = njit(speed_primitive_formula)
