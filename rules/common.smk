@@ -157,3 +157,21 @@ def remove_stale_locks():
 onstart:
     # Snakemake's file persistence knows the lock files this run holds; another backend records no owner.
     record_lock_owner(getattr(workflow.persistence, "_lockfile", {}).values())
+
+
+def current_claims_table(wildcards):
+    """No file: verify's refusal, before any job runs, of a claims table not built from the current results,
+    naming what is missing (a claims table or a result it is computed from) or damaged
+    (rebuild_what_is_not_current). Snakemake would take such a table as up to date; what it sees
+    out of date (a newer result, changed code or parameters) it rebuilds before verify judges."""
+    steps = claims_steps()
+    files = dict.fromkeys([*steps, *(path for inputs in steps.values() for path in inputs)])
+    problems = [f"{path} is missing" for path in files if not os.path.exists(path)]
+    problems += [f"{path} is damaged ({problem})" for path, problem in DAMAGED.items()]
+    if problems:
+        raise WorkflowError(
+            "verify judges only a claims table built from the current results, and "
+            + "; ".join(problems)
+            + ". Run the pipeline first (snakemake --cores 2, with the same --configfile): it rebuilds them."
+        )
+    return []

@@ -55,24 +55,6 @@ rule claims_table:
         "> {log} 2>&1"
 
 
-def current_claims_table(wildcards):
-    """No file: verify's refusal, before any job runs, of a claims table not built from the current results,
-    naming what is missing (a claims table or a result it is computed from) or damaged
-    (rebuild_what_is_not_current). Snakemake would take such a table as up to date; what it sees
-    out of date (a newer result, changed code or parameters) it rebuilds before verify judges."""
-    steps = claims_steps()
-    files = dict.fromkeys([*steps, *(path for inputs in steps.values() for path in inputs)])
-    problems = [f"{path} is missing" for path in files if not os.path.exists(path)]
-    problems += [f"{path} is damaged ({problem})" for path, problem in DAMAGED.items()]
-    if problems:
-        raise WorkflowError(
-            "verify judges only a claims table built from the current results, and "
-            + "; ".join(problems)
-            + ". Run the pipeline first (snakemake --cores 2, with the same --configfile): it rebuilds them."
-        )
-    return []
-
-
 rule verify:
     """Exit non-zero when a verdict differs from the expected verdicts of the config's `verdicts`
     file (a claim it does not list is expected to pass) or when a listed claim is missing (run as
