@@ -8,8 +8,8 @@ from fnmatch import fnmatchcase
 import pytest
 import yaml
 
-from particle_replication.configuration import _walk, check_configuration, overlay, repository_configuration
-from particle_replication.work_limits import LIMITS, check_work_limits, solver_limit
+from particle_replication.configuration import check_configuration, overlay, repository_configuration
+from particle_replication.work_limits import LIMITS, check_work_limits, solver_limit, walk
 from particle_replication.workflow import MAX_REPEATS, interleaved
 
 FULL = repository_configuration("full")
@@ -42,7 +42,7 @@ UNCHECKED = {
 
 
 def keys(config):
-    return [key for key, _ in _walk(config) if key and not key.split(".")[-1].isdigit()]
+    return [key for key, _ in walk(config) if key and not key.split(".")[-1].isdigit()]
 
 
 def test_the_limits_are_the_solvers_own():

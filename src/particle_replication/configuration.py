@@ -29,7 +29,7 @@ from pathlib import Path
 import yaml
 
 from .paths import REPOSITORY
-from .work_limits import check_work_limits, held
+from .work_limits import check_work_limits, held, walk
 
 MAX_COUNT = 10**8
 """Largest integer parameter (particles, cells, steps): 1e8 doubles are 0.8 GB per array."""
@@ -80,19 +80,6 @@ STEPS_TOLERANCE = 1e-9
 
 def _is_number(value) -> bool:
     return isinstance(value, Real) and not isinstance(value, bool)
-
-
-def _walk(node, path=()):
-    """(dotted path, value) of every leaf and every list of the configuration."""
-    if isinstance(node, dict):
-        for key, value in node.items():
-            yield from _walk(value, (*path, str(key)))
-    elif isinstance(node, list):
-        yield ".".join(path), node
-        for index, value in enumerate(node):
-            yield from _walk(value, (*path, str(index)))
-    else:
-        yield ".".join(path), node
 
 
 def _get(config, dotted):
@@ -179,7 +166,7 @@ def check_configuration(config: dict, schema_path: Path = SCHEMA) -> None:
     """Raise ValueError naming the first key whose value no run can use meaningfully (ranges: those
     ``schema_path`` declares)."""
     ranges = range_paths(Path(schema_path))
-    for path, value in _walk(config):
+    for path, value in walk(config):
         if isinstance(value, list):
             _check_list(path, value, ranges)
         elif isinstance(value, float) and not math.isfinite(value):

@@ -30,6 +30,19 @@ _OPERATORS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.m
               ast.Pow: operator.pow, ast.USub: operator.neg}
 
 
+def walk(node, path=()):
+    """(dotted path, value) of every leaf and every list of the configuration."""
+    if isinstance(node, dict):
+        for key, value in node.items():
+            yield from walk(value, (*path, str(key)))
+    elif isinstance(node, list):
+        yield ".".join(path), node
+        for index, value in enumerate(node):
+            yield from walk(value, (*path, str(index)))
+    else:
+        yield ".".join(path), node
+
+
 def _literal(node: ast.AST) -> float:
     """The value of a constant expression of numbers and + - * / ** (``2 * 10**9``, ``2.0**500``)."""
     if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) and not isinstance(node.value, bool):
@@ -311,11 +324,10 @@ def held(key: str, limits: tuple[Limit, ...] = LIMITS) -> bool:
 def check_work_limits(config: Mapping, limits: tuple[Limit, ...] = LIMITS) -> None:
     """Raise ValueError naming the first key of ``config`` whose value asks a solver for more than its work limit
     (:data:`LIMITS`): the key, its value, the work and the limit, with the module that sets it."""
-    from .configuration import _walk
 
     if not isinstance(config, Mapping):
         raise TypeError(f"config must be a mapping, got {type(config).__name__}")
-    for key, value in _walk(config):
+    for key, value in walk(config):
         parts = key.split(".")
         if not key or parts[-1].isdigit():
             continue  # a list's values are checked with its key
@@ -335,7 +347,7 @@ def check_work_limits(config: Mapping, limits: tuple[Limit, ...] = LIMITS) -> No
                 if not work <= limit_value:
                     module, name = limit.constant.rsplit(".", 1)
                     prefix = ".".join(parts[:-limit.up]) + "."
-                    named = ", ".join(f"{other} = {given}" for other, given in _walk(config)
+                    named = ", ".join(f"{other} = {given}" for other, given in walk(config)
                                       if other.startswith(prefix) and limit.matches(other))
                     raise ValueError(f"{named}: {limit.what} = {work:.3g}, beyond the limit {name} = "
                                      f"{limit_value:.3g} of the code it feeds ({module})")
