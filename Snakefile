@@ -28,6 +28,12 @@ include: "rules/common.smk"
 workdir: config["output_root"]
 
 
+# In the output root: a killed run's locks removed, damaged results and claims tables of results that are gone
+# marked for rebuilding (rules/common.smk).
+remove_stale_locks()
+DAMAGED = rebuild_what_is_not_current()
+
+
 include: "rules/sticky.smk"
 include: "rules/ltp.smk"
 include: "rules/blob.smk"

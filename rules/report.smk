@@ -58,8 +58,10 @@ rule claims_table:
 rule verify:
     """Exit non-zero when a verdict differs from the expected verdicts of the config's `verdicts`
     file (a claim it does not list is expected to pass) or when a listed claim is missing (run as
-    `snakemake verify`); print the paper claims with published and measured values."""
+    `snakemake verify`); print the paper claims with published and measured values. Refuses a claims table
+    not built from the current results (current_claims_table)."""
     input:
+        current_claims_table,
         claims="results/claims.csv",
         expected=VERDICTS,
     log:

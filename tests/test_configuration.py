@@ -73,8 +73,8 @@ def edited(path, value):
         ("ltp.quadratic.eps_scan.eps_min", 0.2, "must be below ltp.quadratic.eps_scan.eps_max"),
         ("blob.fig2.density_times", [0.0, 0.4, 1.5], "beyond blob.fig2.t_max"),
         ("sticky.cost.hull_n", [100000, 1000000, 10**12], "beyond"),
-        ("blob.fig4.inverse_h", [20, 40, 10**6], "1/h beyond"),
-        ("ltp.quadratic.h_values", [0.1, 0.05, 1e-9], "h below"),
+        ("blob.fig4.inverse_h", [20, 40, 10**6], "beyond the limit MAX_PARTICLES"),
+        ("ltp.quadratic.h_values", [0.1, 0.05, 1e-9], "beyond the limit MAX_PARTICLES"),
         # ranges by the schema's meaning, whatever their key (issue 30: these three passed the dry run)
         ("sticky.beyond.domain", [30.0, -30.0], "low < high"),
         ("sticky.beyond.scalar.concave_laplace.domain", [40.0, -40.0], "low < high"),

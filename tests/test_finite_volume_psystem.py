@@ -75,15 +75,16 @@ def test_hll_converges_to_the_exact_riemann_solution(case, lowest):
 
 
 def test_hll_conserves_u_and_v_up_to_the_boundary_fluxes(rng):
-    """Constant states near both ends: the boundary fluxes F = (-v, p(u)) of those states enter."""
+    """Constant states near both ends: the boundary fluxes F = (-v, p(u)) of those states enter. (Random data in
+    the p-system's domain: every spread |w^+ - w^-| of their invariants' box at most 0.83.)"""
     edges = np.linspace(-2.0, 2.0, 401)
     centres = 0.5 * (edges[1:] + edges[:-1])
-    (u_left, v_left), (u_right, v_right) = (0.1, 0.3), (0.4, -0.2)
+    (u_left, v_left), (u_right, v_right) = (0.1, 0.05), (0.4, -0.05)
     u0 = np.where(centres < 0, u_left, u_right)
     v0 = np.where(centres < 0, v_left, v_right)
     middle = np.abs(centres) < 0.5
-    u0[middle] = rng.uniform(0.0, 0.5, middle.sum())
-    v0[middle] = rng.uniform(-0.5, 0.5, middle.sum())
+    u0[middle] = rng.uniform(0.1, 0.4, middle.sum())
+    v0[middle] = rng.uniform(-0.05, 0.05, middle.sum())
     t, dx = 0.2, 0.01
     u, v = hll_psystem(SYSTEM, u0, v0, edges, t)
     assert (u[0], v[0], u[-1], v[-1]) == (u_left, v_left, u_right, v_right)  # nothing reached the ends
@@ -612,13 +613,30 @@ def test_hll_takes_data_at_the_ends_of_the_volume_range():
         np.testing.assert_array_equal(v, 0.0)
 
 
-def test_hll_refuses_a_negative_specific_volume():
-    # v jumping from 5 to -5: a rarefaction that the scheme took to u = -88 on 1000 cells, returned silently before.
-    system = PSystem(nu=1.0, kappa=1.0)
-    edges = np.linspace(-1.0, 1.0, 1001)
-    v0 = np.where(edges[:-1] < 0.0, 5.0, -5.0)
-    with pytest.raises(ValueError, match="negative specific volume"):
-        hll_psystem(system, np.full(1000, 0.3), v0, edges, 0.5)
+def test_hll_refuses_a_specific_volume_outside_zero_nu():
+    """Data in the p-system's domain whose Riemann problems have middle states at u = 0 or u = nu: the scheme
+    overshoots, to u = -0.14 nu (nu = 1, kappa = 50) and u = 1.014 nu (the paper's nu = 0.5, kappa = 5).
+    (The v0 jumping from 5 to -5 of issue 30, which took u to -88, is now refused as data.)"""
+    edges = np.linspace(-1.0, 1.0, 31)
+    for system, (w_minus, w_plus), message in [
+            (PSystem(nu=1.0, kappa=50.0), ([1.0, 1.0, 1.0], [1.0, 0.0, 0.0]), "negative specific volume"),
+            (PSystem(), ([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), "above nu")]:
+        u0, v0 = system.physical_variables(np.repeat(w_minus, 10), np.repeat(w_plus, 10))
+        with pytest.raises(ValueError, match=message):
+            hll_psystem(system, u0, v0, edges, 0.5)
+
+
+def test_hll_refuses_data_outside_the_domain_of_the_psystem():
+    """Issue 46: u0 = 0.2 with v0 jumping from -5 to 5 (invariants w^-+ = v0 -+ g(u0) spread over 10.3, where
+    section 5.2.2 has them in [0, 1]) returned u up to 6.96 > nu = 0.5. Refused before any step, naming u0 and v0;
+    a spread of 1 (invariants at the corners of [0, 1]^2, shifted in v) is taken."""
+    system = PSystem()
+    edges = np.linspace(-1.0, 1.0, 11)
+    with pytest.raises(ValueError, match=r"u0 and v0 .* spread \|w\^\+ - w\^-\| of 10\.29"):
+        hll_psystem(system, np.full(10, 0.2), np.r_[np.full(5, -5.0), np.full(5, 5.0)], edges, 0.5)
+    u0, v0 = system.physical_variables(np.r_[np.zeros(5), np.full(5, 0.5)], np.r_[np.full(5, 0.5), np.ones(5)])
+    u, _ = hll_psystem(system, u0, v0 + 7.0, edges, 0.05)
+    assert np.all((u >= 0.0) & (u <= system.nu))
 
 
 def test_grids_beyond_max_cells_are_refused_before_any_work():

@@ -14,6 +14,7 @@ import yaml
 
 from particle_replication import registry
 from particle_replication.claims import COLUMNS, KINDS, STATUSES, read_verdicts
+from particle_replication.workflow import damaged as workflow_damaged
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = ROOT / "config" / "quick.yaml"
@@ -295,6 +296,85 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     assert "Nothing to be done" in resumed.stdout + resumed.stderr
 
 
+def result_times(workdir):
+    """The times of every file under the run's results, to put back once a test has rebuilt some of them with
+    the same content (the start of a run marks a table of a result that is gone for rebuilding, with time 0)."""
+    return {path: (stat.st_atime_ns, stat.st_mtime_ns)
+            for path in (workdir / "results").rglob("*") if path.is_file() and (stat := path.stat())}
+
+
+def put_back(times):
+    for path, ns in times.items():
+        if path.exists():
+            os.utime(path, ns=ns)
+
+
+def test_a_killed_run_resumes_by_running_the_same_command_again(workdir):
+    """SIGKILL of Snakemake alone (its jobs go on): running the same command again stops while the killed run's
+    job still writes, then removes the killed run's lock, saying so, and redoes the job it left unfinished."""
+    import time
+
+    target = workdir / "results/sticky/lemma21.npz"
+    times = result_times(workdir)
+    target.unlink()
+    start = time.time()
+    command = snakemake_command(workdir, "--", "results/sticky/lemma21.npz")
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               start_new_session=True, env=checkout_environment(workdir.parents[1]))
+    log = workdir / "logs" / "sticky" / "lemma21_data.log"
+    while not (log.exists() and log.stat().st_mtime >= start and log.read_text()):
+        assert process.poll() is None and time.time() - start < 300, "the job never started"
+        time.sleep(0.1)
+    process.kill()  # Snakemake alone, as the OOM killer does; its job runs on in its process group
+    process.wait()
+    assert list((workdir / ".snakemake" / "locks").glob("*.lock"))
+    again = snakemake(workdir, "--", "results/sticky/lemma21.npz")
+    output = again.stdout + again.stderr
+    if again.returncode != 0:  # the job was still running
+        assert f"kill -- -{process.pid}" in output, output[-3000:]
+        while time.time() - start < 300:
+            try:
+                os.killpg(process.pid, 0)
+            except ProcessLookupError:
+                break
+            time.sleep(0.1)
+        again = snakemake(workdir, "--", "results/sticky/lemma21.npz")
+        output = again.stdout + again.stderr
+    assert again.returncode == 0, output[-3000:]
+    assert "the lock of a Snakemake run that was killed" in output
+    # whatever the killed run's job wrote, it was marked incomplete: the rerun redid it
+    assert re.search(r"^localrule data_sticky_lemma21:", output, flags=re.MULTILINE), output[-3000:]
+    assert not list(workdir.rglob("*.tmp")) and not list((workdir / ".snakemake" / "locks").glob("*.lock"))
+    put_back(times)  # the job's numbers are the same: the run is left as it was
+    assert "Nothing to be done" in (lambda r: r.stdout + r.stderr)(snakemake(workdir, "--dry-run"))
+
+
+def test_a_damaged_result_is_rebuilt_and_verify_refuses_until_it_is(workdir):
+    """A cached result truncated with its time kept is found at the next start and rebuilt; verify refuses a
+    claims table whose results are missing or damaged, naming them, and passes once the run has rebuilt them."""
+    result, table = workdir / "results/sticky/lemma21.npz", workdir / "results/sticky/claims.csv"
+    kept, times = table.read_bytes(), result_times(workdir)
+    with result.open("r+b") as handle:
+        handle.truncate(1000)
+    os.utime(result, ns=times[result])
+    table.unlink()  # as a run that failed on the damaged file leaves it
+    verify = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml"],
+                            cwd=workdir.parents[1], env=checkout_environment(workdir.parents[1]),
+                            capture_output=True, text=True, timeout=600)
+    output = verify.stdout + verify.stderr
+    assert verify.returncode != 0 and "0 differences" not in output
+    assert "results/sticky/claims.csv is missing" in output and "results/sticky/lemma21.npz is damaged" in output
+    plan = snakemake(workdir, "--dry-run", "--", "results/sticky/claims.csv")
+    assert "results/sticky/lemma21.npz is damaged" in plan.stderr
+    assert {"data_sticky_lemma21", "sticky_claims"} <= planned_rules(plan), plan.stdout[-3000:]
+    # rebuilt: the job's numbers are the same, so the table and times put back leave the run as it was
+    assert snakemake(workdir, "--", "results/sticky/lemma21.npz").returncode == 0
+    assert workflow_damaged(result) == ""
+    table.write_bytes(kept)
+    put_back(times)
+    assert "Nothing to be done" in (lambda r: r.stdout + r.stderr)(snakemake(workdir, "--dry-run"))
+
+
 def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
     override = tmp_path / "override.yaml"
     override.write_text("sticky:\n  lemma21:\n    n_values: [16, 64, 256, 1024, 2048]\n")
@@ -386,6 +466,7 @@ def test_a_configuration_of_ones_own_is_compared_with_nothing(workdir, tmp_path)
          "count: 5}\n", "ltp.quadratic.eps_scan.eps_min"),
         ("blob:\n  fig1:\n    density_times: [0.0, 0.4, 5.0]\n", "blob.fig1.density_times"),
         ("sticky:\n  cost:\n    hull_n: [100, 1000, 1000000000000]\n", "sticky.cost.hull_n"),
+        ("sticky:\n  beyond:\n    repeats: 100000000\n", "sticky.beyond.repeats"),  # held to a solver's limit
     ],
 )
 def test_bad_configuration_stops_at_start_naming_the_key(tmp_path, override, key):

@@ -343,3 +343,90 @@ def test_names_of_the_wrong_type_are_parameter_type_errors(lookup, value):
     with pytest.raises(ValueError, match="unknown") as refused:
         calls[lookup]("no such name")
     assert not isinstance(refused.value, ParameterTypeError)
+
+
+def test_issue_46_cfl_and_flux_shape_are_checked():
+    """cfl_time_step(BURGERS, 0, 1, 0.1, None) returned NaN and cfl = -1 a negative step; ScalarFlux(shape=None)
+    raised a plain ValueError."""
+    from particle_methods.finite_volume.scalar import cfl_time_step
+
+    for cfl, error, message in [(None, TypeError, "cfl must be a real number"), (-1.0, ValueError, "cfl must be "
+                                "positive"), (float("nan"), ValueError, "cfl must be finite"),
+                                (2.0, ValueError, r"cfl must lie in \(0, 1\]")]:
+        with pytest.raises(error, match=message):
+            cfl_time_step(BURGERS, 0.0, 1.0, 0.1, cfl)
+    assert cfl_time_step(BURGERS, 0.0, 1.0, 0.1, 0.5) == pytest.approx(0.05, rel=1e-15)
+    with pytest.raises(ParameterTypeError, match=r"shape must be one of .* \(a string\), got None"):
+        ScalarFlux(BURGERS.f, BURGERS.derivative, 0.0, shape=None)
+
+
+def test_issue_46_spd_positions_refuses_from_the_shape_and_mspd_exact_compiles_one_layout():
+    """spd_positions on a zero-stride array of 10^9 entries took 8 GB and 29 s before refusing; mspd_exact compiled
+    its kernels again (12 s) for a non-contiguous x0."""
+    from particle_methods.sticky import multitype_events
+    from particle_methods.sticky.cases import psystem_initial_configuration
+    from particle_methods.sticky.spd import spd_positions
+    from particle_methods.systems import PSystem
+
+    huge = np.broadcast_to(np.float64(0.0), (10**9,))
+    for call in (lambda: spd_positions(huge, huge, 1.0), lambda: spd_positions(np.zeros(3), huge, 1.0),
+                 lambda: spd_positions(np.zeros(3), np.zeros(3), 1.0, masses=huge)):
+        with watchdog(), pytest.raises(ValueError, match="holds 1000000000 particles, more than MAX_POSITIONS"):
+            call()
+    x0 = psystem_initial_configuration("rarefaction", 0.1, 8)
+    wide = np.zeros((2, 16))
+    wide[:, ::2] = x0
+    expected = multitype_events.mspd_exact(x0, PSystem(), [0.5])
+    np.testing.assert_array_equal(multitype_events.mspd_exact(wide[:, ::2], PSystem(), [0.5]), expected)
+    for kernel in (multitype_events._start, multitype_events._advance):
+        layouts = {argument.layout for signature in kernel.signatures for argument in signature
+                   if hasattr(argument, "layout")}
+        assert layouts == {"C"}, (kernel, layouts)
+
+
+# Issue 46, item 4: what the census of the public API found in the shared modules and the sticky records.
+
+
+def test_an_array_too_large_for_any_call_is_refused_before_any_pass_over_it():
+    from particle_methods.validation import MAX_ENTRIES
+
+    huge = np.broadcast_to(np.float64(0.5), (MAX_ENTRIES + 1,))  # no memory: a zero-stride view
+    with watchdog(), pytest.raises(ValueError, match=r"has \d+ entries, more than"):
+        w1_between_samples(huge, np.array([0.0, 1.0]))
+
+
+@pytest.mark.parametrize("mass", [float("nan"), None, "1"])
+def test_check_within_range_refuses_what_is_not_a_finite_mass(mass):
+    from particle_methods.norms import check_within_range
+
+    with pytest.raises((ValueError, TypeError), match="mass"):
+        check_within_range("x", np.array([0.0, 1.0]), mass)
+
+
+@pytest.mark.parametrize("arguments, name", [((float("nan"), 10), "size"), ((10, None), "threshold"),
+                                              (("4", 10), "size"), ((-1, 10), "size")])
+def test_threads_for_refuses_what_is_not_a_count(arguments, name):
+    from particle_methods.threads import threads_for
+
+    with pytest.raises((ValueError, TypeError), match=name):
+        threads_for(*arguments)
+
+
+@pytest.mark.parametrize("field, value", [("rankine_hugoniot", float("nan")), ("entropy", None), ("speed_scale", "1"),
+                                          ("entropy", -1.0), ("clusters", 1.5)])
+def test_admissibility_records_refuse_what_is_not_a_measure(field, value):
+    from particle_methods.sticky.admissibility import Admissibility
+
+    good = {"rankine_hugoniot": 0.0, "entropy": 0.0, "speed_scale": 1.0, "clusters": 2}
+    with pytest.raises((ValueError, TypeError), match=field):
+        Admissibility(**{**good, field: value})
+    assert Admissibility(**good).largest == 0.0
+
+
+@pytest.mark.parametrize("value", [float("nan"), None, "3", -1, 2.5])
+def test_event_counts_refuse_what_is_not_a_count(value):
+    from particle_methods.sticky.multitype_events import EventCounts
+
+    with pytest.raises((ValueError, TypeError), match="crossings"):
+        EventCounts(1, value, 0, 0)
+    assert EventCounts(1, 2, 0, 3).crossings == 2

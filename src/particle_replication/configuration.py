@@ -14,7 +14,8 @@ meaningless number hours later, with a ValueError naming the dotted key:
   their runs into a whole number of steps (:data:`WHOLE_STEPS`; the solver refuses them, but only once
   the job runs);
 - sizes beyond what one run can compute (:data:`MAX_COUNT` particles, steps or cells;
-  :data:`MAX_INVERSE_H` for 1/h).
+  :data:`MAX_INVERSE_H` for 1/h), and every size, count and time beyond the work limit of the solver it feeds
+  (:func:`particle_replication.work_limits.check_work_limits`).
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from pathlib import Path
 import yaml
 
 from .paths import REPOSITORY
+from .work_limits import check_work_limits, held, walk
 
 MAX_COUNT = 10**8
 """Largest integer parameter (particles, cells, steps): 1e8 doubles are 0.8 GB per array."""
@@ -78,19 +80,6 @@ STEPS_TOLERANCE = 1e-9
 
 def _is_number(value) -> bool:
     return isinstance(value, Real) and not isinstance(value, bool)
-
-
-def _walk(node, path=()):
-    """(dotted path, value) of every leaf and every list of the configuration."""
-    if isinstance(node, dict):
-        for key, value in node.items():
-            yield from _walk(value, (*path, str(key)))
-    elif isinstance(node, list):
-        yield ".".join(path), node
-        for index, value in enumerate(node):
-            yield from _walk(value, (*path, str(index)))
-    else:
-        yield ".".join(path), node
 
 
 def _get(config, dotted):
@@ -177,19 +166,19 @@ def check_configuration(config: dict, schema_path: Path = SCHEMA) -> None:
     """Raise ValueError naming the first key whose value no run can use meaningfully (ranges: those
     ``schema_path`` declares)."""
     ranges = range_paths(Path(schema_path))
-    for path, value in _walk(config):
+    for path, value in walk(config):
         if isinstance(value, list):
             _check_list(path, value, ranges)
         elif isinstance(value, float) and not math.isfinite(value):
             raise ValueError(f"{path} = {value}: every number must be finite")
-        elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > MAX_COUNT:
+        elif isinstance(value, int) and not held(path) and not isinstance(value, bool) and abs(value) > MAX_COUNT:
             raise ValueError(f"{path} = {value}: beyond {MAX_COUNT:.0e}, more than one run can compute")
         last = path.split(".")[-1]
-        if last in ("inverse_h", "extra_inverse_h") and isinstance(value, list):
+        if last in ("inverse_h", "extra_inverse_h") and isinstance(value, list) and not held(path):
             if any(_is_number(v) and v > MAX_INVERSE_H for v in value):
                 raise ValueError(f"{path} = {value}: 1/h beyond {MAX_INVERSE_H:.0e}")
         is_h = last == "h" or path.split(".")[-2:-1] == ["h_values"]
-        if is_h and _is_number(value) and 0 < value < 1 / MAX_INVERSE_H:
+        if is_h and _is_number(value) and 0 < value < 1 / MAX_INVERSE_H and not held(path):
             raise ValueError(f"{path} = {value}: h below {1 / MAX_INVERSE_H:g}")
         if last.endswith("_min") and _is_number(value):
             upper = _get(config, path[: -len("_min")] + "_max")
@@ -197,6 +186,7 @@ def check_configuration(config: dict, schema_path: Path = SCHEMA) -> None:
                 raise ValueError(f"{path} = {value} must be below {path[: -len('_min')]}_max = {upper}")
     _check_times_within(config)
     _check_whole_steps(config)
+    check_work_limits(config)
     for window_path, lists in FIT_WINDOWS.items():
         window = _get(config, window_path)
         for paths in lists:

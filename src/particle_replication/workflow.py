@@ -1,15 +1,21 @@
-"""Helpers for the pipeline scripts: logging to the rule's log, atomic result files."""
+"""Helpers for the pipeline scripts: logging to the rule's log, atomic result files checked where they are read
+and at the start of every run, and the owners of Snakemake's locks."""
 
 from __future__ import annotations
 
 import ast
 import contextlib
 import functools
+import json
 import math
 import os
+import socket
 import sys
 import time
 import traceback
+import zipfile
+import zlib
+from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 import numpy as np
@@ -54,13 +60,18 @@ def progress(message: str) -> None:
 #: timer's resolution, an interrupt or a cache left cold by the previous run is a visible share of a run.
 REPEAT_BELOW = 0.2
 
+#: Most rounds of :func:`interleaved`: each round of runs shorter than REPEAT_BELOW costs up to that long per run.
+MAX_REPEATS = 100
+
 
 def interleaved(runs, repeats: int, guard=None):
     """(best seconds, results) of the callables ``runs``, timed in ``repeats`` rounds over all of them, so that a
     passing disturbance of the machine hits every size alike rather than one; a run longer than
     :data:`REPEAT_BELOW` is timed in the first round only. ``results`` are those of the first round;
     ``guard`` (a :class:`LoadGuard`) samples the load before every run. Compile and warm the kernels first:
-    the first round is timed too."""
+    the first round is timed too. At most :data:`MAX_REPEATS` rounds."""
+    if isinstance(repeats, bool) or not isinstance(repeats, int) or not 1 <= repeats <= MAX_REPEATS:
+        raise ValueError(f"repeats must be an integer from 1 to MAX_REPEATS = {MAX_REPEATS}, got {repeats!r}")
     best, results = [math.inf] * len(runs), [None] * len(runs)
     for round_ in range(repeats):
         for i, run in enumerate(runs):
@@ -144,34 +155,176 @@ def disturbance(readings) -> str:
 
 
 def save_results(path, **arrays) -> None:
-    """Write ``arrays`` to an ``.npz`` file through a temporary name, so that an
-    interrupted run never leaves a truncated result behind. A file the registry knows
+    """Write ``arrays`` to an ``.npz`` file through a temporary file of this process's own, so that an
+    interrupted run never leaves a truncated result behind and two jobs writing one result (a killed run's job
+    still running beside its rerun) never write into one file. The zip file numpy writes records the CRC-32 of
+    every array, which :func:`load_results` and :func:`damaged_results` check. A file the registry knows
     (:mod:`particle_replication.registry`) must hold exactly its declared keys."""
     _check_keys(path, arrays)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    temporary = path.with_name(path.name + ".tmp")
+    temporary = path.with_name(f"{path.name}.{socket.gethostname()}.{os.getpid()}.tmp")
     try:
         with temporary.open("wb") as handle:
             np.savez(handle, **arrays)
+        os.replace(temporary, path)
     except BaseException:
         temporary.unlink(missing_ok=True)
         raise
-    os.replace(temporary, path)
 
 
 def load_results(path) -> dict:
-    """Load an ``.npz`` result file into a plain dictionary of arrays, checking a registered
-    file's keys against the registry (a file written by older code fails here, not later)."""
+    """Load an ``.npz`` result file into a plain dictionary of arrays, checking every array against the CRC-32
+    recorded when it was written (a truncated or altered file raises a ValueError naming it; the next Snakemake
+    run rebuilds it, :func:`damaged_results`) and a registered file's keys against the registry (a file written
+    by older code fails here, not later)."""
+    if problem := damaged(path):
+        raise ValueError(f"{path} is damaged ({problem}): the next snakemake run rebuilds it")
     with np.load(path) as data:
         _check_keys(path, data.files)
         return {key: data[key] for key in data.files}
+
+
+def damaged(path) -> str:
+    """Why the result file ``path`` is damaged, or '' if it is whole: it must be a zip file whose every member
+    (an array) reads back with the CRC-32 recorded when it was written. A truncated file has lost its zip
+    directory, a changed byte fails its array's CRC; the whole file is read (about 1 GB/s)."""
+    if not isinstance(path, str | os.PathLike):
+        raise TypeError(f"path must be a path, got {type(path).__name__}")
+    try:
+        with zipfile.ZipFile(path) as archive:
+            if not archive.namelist():
+                return "it holds no array"
+            if (name := archive.testzip()) is not None:
+                return f"the CRC-32 of its array {name.removesuffix('.npy')} does not match"
+    except (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, EOFError, ValueError, NotImplementedError,
+            RuntimeError, zlib.error) as error:
+        return f"{type(error).__name__}: {error}"
+    return ""
+
+
+def damaged_results(root) -> dict[str, str]:
+    """Every ``.npz`` file under the directory ``root`` (a run's ``results``) that is damaged, with why
+    (:func:`damaged`). The workflow checks them at every start (0.1 s for the 105 MB of the full run's results
+    once they are in the page cache, 0.5 s from disk) and reruns the jobs that write them: a file truncated or
+    altered with its time kept would otherwise be taken as up to date."""
+    root = Path(root)
+    if root.exists() and not root.is_dir():
+        raise ValueError(f"root must be a directory, got the file {root}")
+    return {str(path): problem for path in sorted(root.rglob("*.npz")) if (problem := damaged(path))}
+
+
+def missing_inputs(steps: Mapping[str, Iterable[str]]) -> dict[str, list[str]]:
+    """Of the ``steps`` (each output file with the files it is computed from), the outputs that exist although
+    some of their inputs do not, with those inputs. Snakemake takes such an output as up to date (a missing
+    input it could rebuild is taken for a temporary file), so a result deleted after its tables were made is
+    never rebuilt and the tables stay those of results that are gone."""
+    if not isinstance(steps, Mapping):
+        raise TypeError(f"steps must map each output to its inputs, got {type(steps).__name__}")
+    found = {}
+    for output, inputs in steps.items():
+        if isinstance(inputs, str):
+            raise TypeError(f"the inputs of {output} must be a list of paths, got the string {inputs!r}")
+        if os.path.exists(output) and (gone := [path for path in inputs if not os.path.exists(path)]):
+            found[output] = gone
+    return found
 
 
 def _check_keys(path, keys) -> None:
     entry = result(path)
     if entry is not None:
         entry.check_keys(keys)
+
+
+def record_lock_owner(lockfiles) -> None:
+    """Write beside each of Snakemake's lock files (``.snakemake/locks/<n>.input.lock`` and ``.output.lock``,
+    which name the files a run holds but not the run) the process that holds them: this one, with its start
+    time, process group and machine, which :func:`stale_locks` reads (the workflow calls it in ``onstart``)."""
+    if isinstance(lockfiles, str | os.PathLike) or not isinstance(lockfiles, Iterable):
+        raise TypeError(f"lockfiles must be a list of paths, got {type(lockfiles).__name__}")
+    owner = {"pid": os.getpid(), "started": _started(os.getpid()), "group": os.getpgrp(),
+             "host": socket.gethostname()}
+    for lock in lockfiles:
+        Path(f"{lock}.owner").write_text(json.dumps(owner))
+
+
+def stale_locks(lockdir) -> tuple[list[Path], dict[int, int]]:
+    """The lock files in ``lockdir`` whose Snakemake run is gone (killed: a run that ends removes its locks), and
+    the runs that are gone while jobs they started still run, by process id with their process group.
+
+    A lock counts only with an owner record (:func:`record_lock_owner`) of this machine; its run is gone when
+    no process has its id, or a process has it that started at another time (the id was reused) or is a
+    zombie. A run started as its process group's leader (from a shell, or in a session of its own) leaves
+    its jobs in that group: while one of them runs, its lock is not stale, as the jobs still write outputs."""
+    lockdir = Path(lockdir)
+    if lockdir.exists() and not lockdir.is_dir():
+        raise ValueError(f"lockdir must be a directory, got the file {lockdir}")
+    stale, running = [], {}
+    for record in sorted(lockdir.glob("*.lock.owner")):
+        try:
+            owner = json.loads(record.read_text())
+            pid, group, started, host = owner["pid"], owner["group"], owner["started"], owner["host"]
+        except (OSError, ValueError, KeyError, TypeError):
+            continue  # being written, or not ours: Snakemake's own lock check decides
+        lock = record.with_suffix("")
+        if host != socket.gethostname() or _alive(pid, started) or not lock.exists():
+            continue
+        if group == pid and _group_running(group):
+            running[pid] = group
+        else:
+            stale.append(lock)
+    return stale, running
+
+
+def _started(pid: int) -> str | None:
+    """The start time of the process ``pid`` (in clock ticks since boot, from /proc) or None where there is no
+    /proc or no such process."""
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[19]
+    except (OSError, IndexError):
+        return None
+
+
+def _state(pid: int) -> str | None:
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return None
+
+
+def _alive(pid: int, started: str | None) -> bool:
+    """Whether the process ``pid`` that started at ``started`` (:func:`_started`) still runs."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        pass  # another user's process has the id
+    if _state(pid) == "Z":
+        return False
+    now = _started(pid)
+    return started is None or now is None or now == started
+
+
+def _group_running(group: int) -> bool:
+    """Whether a process of the process group ``group`` runs (zombies aside, where /proc tells them)."""
+    proc = Path("/proc")
+    if not proc.is_dir():
+        try:
+            os.killpg(group, 0)
+        except ProcessLookupError:
+            return False
+        except PermissionError:
+            pass
+        return True
+    for stat in proc.glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if fields[2] == str(group) and fields[0] != "Z":
+            return True
+    return False
 
 
 def module_dependencies(script, package_dirs) -> list[str]:

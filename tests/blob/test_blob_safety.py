@@ -298,3 +298,26 @@ def test_an_absolute_tolerance_below_the_range_is_refused_naming_atol():
 
     with pytest.raises(ValueError, match="atol must lie in"):
         run_1d("smooth20", "newtonian_attractive", 0.1, [0.0, 0.1], atol=1e-300)
+
+
+def test_issue_46_near_field_pairs_are_counted_and_refused_before_the_sums():
+    """newtonian_sums on points within one width of each other took every pair in its near field (O(N^2): 10^6
+    random points of the unit square with width 1 ran for hours); the cell list's pairs are counted first (here all
+    N (N - 1)/2 = 5e9 of 10^5 points, in one cell) and refused beyond MAX_NEAR_PAIRS."""
+    from particle_methods.blob import newtonian_fmm
+
+    points = np.random.default_rng(46).random((10**5, 2))
+    with pytest.raises(ValueError, match=r"positions put 5e\+09 pairs in the near field .* MAX_NEAR_PAIRS"):
+        newtonian_fmm.newtonian_sums(points, np.ones(10**5), [1.0, -0.5], [1.0, 0.5])
+    # The count is the loop's: on a grid with a narrow width each point's partners are its few neighbours.
+    grid = np.stack(np.meshgrid(np.arange(30.0), np.arange(30.0)), axis=-1).reshape(-1, 2)
+    keys, columns = newtonian_fmm._cell_keys(grid[:, 0].copy(), grid[:, 1].copy(),
+                                             newtonian_fmm.GAUSS_CUTOFF * 0.1 / newtonian_fmm.CELL_SPLIT)
+    # cells 0.217 wide: one point per cell; the partners j > i within the stencil lie in the same row (none) and
+    # the next rows, up to CELL_SPLIT * 0.217 = 0.65 away: none on a grid of spacing 1.
+    assert newtonian_fmm._near_pair_count(np.sort(keys), columns) == 0
+
+
+def test_issue_46_mass_defect_refuses_points_of_no_dimension():
+    with pytest.raises(ValueError, match=r"points must have shape \(N, d\) with d = 1 or 2, got \(2, 0\)"):
+        mass_defect(np.zeros((2, 0)), [1.0, 1.0], [0.5, 0.5], kernel_1d("newtonian_attractive"), 0.1)  # IndexError

@@ -261,3 +261,80 @@ def test_the_fuzz_of_the_newest_entry_points_finds_only_named_refusals_and_finit
 
     counts = fuzz_counts.run()
     assert {key for key, value in counts.items() if value} <= {"refused, named", "answered"}, counts
+
+
+# Issue 46: work refused before it starts, and silent NaN or invalid input in the newest entry points
+
+def test_issue_46_work_of_the_exact_hull_and_of_godunov_is_refused_before_it_starts():
+    from particle_methods.cross import hull, methods
+    from particle_methods.cross.hull import Bump, BumpData, HullSolution, aggregate_paths, merger_time
+
+    with pytest.raises(ValueError, match=r"times ask for 1000000 exact solution.*MAX_HULL_WORK"):
+        aggregate_paths("two_bumps", np.linspace(0, 3, 10**6))  # 42 ms of CPU per time: about 12 h before
+    with pytest.raises(ValueError, match="MAX_HULL_WORK"):
+        aggregate_paths("two_bumps", [0.5] * 10**4)  # a list: refused once it is an array, before any solution
+    many = BumpData("100 bumps", tuple(Bump(1.0, -1.0 + (2 * k + 1) / 100, 0.009, 2) for k in range(100)))
+    with pytest.raises(ValueError, match=r"data ask for 1 exact solution\(s\) of 100 bumps.*MAX_HULL_WORK"):
+        HullSolution(many, 1.0)  # quadratic in the bumps: 20 bumps took 2.6 s, 40 bumps 10.8 s
+    seven = BumpData("7 bumps", many.bumps[:7])
+    with pytest.raises(ValueError, match=r"low and high ask for .* of 7 bumps.*MAX_HULL_WORK"):
+        merger_time(seven, 1.0, 2.0)  # about 55 solutions of the bisection
+    assert hull.MAX_HULL_WORK >= 60 * 2**2  # merger_time on two bumps, as the pipeline runs it
+    with pytest.raises(ValueError, match="times holds 10000000 times, more than MAX_PATH_TIMES"):
+        methods.godunov_paths("two_bumps", 64, np.linspace(0, 1, 10**7))  # every state kept: 40 min before
+    with pytest.raises(ValueError, match="MAX_PATH_VALUES"):
+        methods.godunov_paths("two_bumps", 10**6, np.linspace(0, 1, 1000))
+    with pytest.raises(ValueError, match="MAX_CELL_STEPS"):
+        methods.godunov_paths("two_bumps", 64, [1.0], cfl=5e-324)  # a time step that underflows to 0
+    with pytest.raises(ValueError, match=r"1\.45e\+07 steps .* MAX_GAP_READINGS"):
+        aggregates.godunov_merger("two_bumps", 64, 1.5, 2.5, cfl=1e-6)
+    with pytest.raises(ValueError, match="cells must be at most"):
+        aggregates.godunov_merger("two_bumps", 10**8, 1.5, 2.5)  # its grid was allocated before
+
+
+def test_issue_46_particle_velocities_refuse_what_gave_nan_and_negative_masses():
+    from particle_methods.cross.methods import MAX_VELOCITY_SPAN, particle_velocities
+
+    for x, masses, message in [([-1e300, 0.0, 1e300], [1.0, 1.0, 1.0], "x spans 2e\\+300.*MAX_VELOCITY_SPAN"),
+                               ([0.0, 1e200, 2e200], [1.0, 1.0, 1.0], "MAX_VELOCITY_SPAN"),
+                               ([0.0, 1.0], [1.7e308, 1.7e308], "masses must have a finite sum"),
+                               ([0.0, 1.0, 2.0], [1.0, -1.0, 1.0], "masses must be non-negative, got -1.0 at index 1")]:
+        with pytest.raises(ValueError, match=message):
+            particle_velocities(x, masses)  # NaN (or velocities of negative masses) before
+    span = MAX_VELOCITY_SPAN / 2
+    np.testing.assert_array_equal(particle_velocities([0.0, span, 2 * span], [1.0, 1.0, 1.0]), [1.0, 0.0, -1.0])
+    np.testing.assert_array_equal(particle_velocities([0.0, 5e-324, 1e-323], [1.0, 0.0, 1.0]), [0.5, 0.0, -0.5])
+
+
+def test_issue_46_first_within_interpolates_without_overflow():
+    assert aggregates.first_within([0.0, 1.0], [1e308, -1e308], 0.5) == 0.5  # 0.0 before
+    assert aggregates.first_within([0.0, 1.0], [1.7e308, -1.7e308], 1e-300) == 0.5
+    assert aggregates.first_within([0.0, 1.0], [1e-323, 0.0], 5e-324) == 0.5  # denormals: no scaling up
+    assert aggregates.first_within([0.0, 1.0, 2.0], [3.0, 2.5, 1.0], 2.0) == pytest.approx(4.0 / 3.0, rel=1e-15)
+
+
+def test_issue_46_godunov_advance_takes_and_returns_f_in_zero_mass():
+    from particle_methods.cross import methods
+
+    edges = np.linspace(-1.0, 1.0, 5)
+    with pytest.raises(ValueError, match=r"values must lie in \[0, mass\] = \[0, 1.0\]"):
+        methods.godunov_advance(edges, [-1.0, 0.2, 0.5, 2.0], 1.0, 0.5)  # returned F from -1 to 2 before
+    # Rounding of a run or the robustness nudge (1e-13 of the mass) is taken; the result lies in [0, M].
+    values = methods.godunov_advance(edges, [0.0, 0.2, 0.5, 1.0 + 1e-13], 1.0, 0.5)
+    assert values.min() >= 0.0 and values.max() <= 1.0
+    for _, f in methods.godunov_paths("smooth20", 4096, [1.0, 3.0]):  # rounding took F 5e-12 M beyond before
+        mass = exact_mass_function("smooth20", 0.0, [2.0])[0]
+        assert f.min() >= 0.0 and f.max() <= mass
+
+
+def test_issue_46_w1_particles_and_ltp_method_name_their_parameters():
+    from particle_methods.cross.methods import ltp_method, ltp_paths
+
+    with pytest.raises(TypeError, match="particles must be of type Particles"):
+        distances.w1_particles(AggregationSolution("smooth20", 0.5), None)  # AttributeError before
+    for call, message in [(lambda: ltp_method("smooth20", 0.1, 0.01, 0.505), r"^t = 0.505 must be a whole number"),
+                          (lambda: ltp_method("smooth20", 0.1, 1e-9, 1.0), r"^t / dt = 1e\+09 steps"),
+                          (lambda: ltp_paths("smooth20", 0.1, 1e-9, [0.5, 1.0]), r"^times / dt = 1e\+09 steps")]:
+        with pytest.raises(ValueError, match=message) as refusal:
+            call()
+        assert "t_final" not in str(refusal.value)

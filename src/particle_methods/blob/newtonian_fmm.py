@@ -52,6 +52,10 @@ GAUSS_CUTOFF = 6.5
 CLOSE_FRACTION = 1.0e-3
 #: Below this many particles the near-field loop runs on one thread (measured, benchmarks/bench_threads.py).
 PARALLEL_MIN_PARTICLES = 2000
+#: Most candidate pairs the near field of one call examines (the pairs in each particle's cells of the cell list,
+#: counted before the sums): a few ns each per Gaussian term, like the direct sums' MAX_PARTICLES^2 / 2 (about a
+#: second). Figure 5 extended to h = 1/160 examines 4.8 * 10^7; N points within one width examine N^2 / 2.
+MAX_NEAR_PAIRS = 4 * 10**8
 
 
 @functools.cache
@@ -220,6 +224,19 @@ def _near_sums(x, y, masses, keys, columns, g_weights, l_weights, inverse, cutof
     return sx, sy, sd, closest.min()
 
 
+def _near_pair_count(keys, columns) -> int:
+    """Pairs (i, j > i) :func:`_near_accumulate` examines, from the sorted cell keys: in each row of cells the
+    partners of a particle are a range of keys, counted by two binary searches per particle and row."""
+    rows, column = np.divmod(keys, columns)
+    total = np.int64(0)
+    for d, reach in enumerate(_REACH):
+        row = (rows + d) * columns
+        stop = np.searchsorted(keys, row + np.minimum(column + reach, columns - 1), side="right")
+        start = np.arange(1, keys.size + 1) if d == 0 else np.searchsorted(keys, row + np.maximum(column - reach, 0))
+        total += np.sum(stop - start)
+    return int(total)
+
+
 @functools.cache
 def _fmm_pool() -> concurrent.futures.ThreadPoolExecutor:
     """The one thread that runs the FMM beside the near field, started on first use."""
@@ -255,6 +272,11 @@ def newtonian_sums(positions, masses, coefficients, widths):
     x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
     keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
     order = np.argsort(keys, kind="stable")
+    pairs = _near_pair_count(keys[order], columns)
+    if pairs > MAX_NEAR_PAIRS:
+        raise ValueError(f"positions put {pairs:.3g} pairs in the near field of widths up to {np.max(widths):.3g} "
+                         f"(about N^2 / 2 when the N points lie within a few widths), more than MAX_NEAR_PAIRS = "
+                         f"{MAX_NEAR_PAIRS:.0e}: the Gaussian terms would be summed over every one")
     arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
                  cutoff * cutoff)
     threads = numba.get_num_threads() if x.size >= PARALLEL_MIN_PARTICLES else 1

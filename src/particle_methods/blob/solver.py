@@ -284,6 +284,8 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
     points = finite_array("points", points, ndim=2)
     rho0, masses = finite_array("rho0", rho0), finite_array("masses", masses)
     n, dimension = points.shape
+    if dimension not in (1, 2):
+        raise ValueError(f"points must have shape (N, d) with d = 1 or 2, got {points.shape}")
     same_length(points=points[:, 0], rho0=rho0, masses=masses)
     t, offset, threshold = nonnegative("t", t), positive("offset", offset), nonnegative("threshold", threshold)
     inside = rho0 > threshold

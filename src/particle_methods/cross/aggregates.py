@@ -21,6 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..finite_volume.grids import MAX_CELLS
+from ..finite_volume.scalar import MAX_CELL_STEPS
 from ..sticky.spd import spd_positions
 from ..validation import (
     finite_array,
@@ -33,7 +35,11 @@ from ..validation import (
     same_length,
 )
 from . import methods
-from .hull import HullSolution
+from .hull import HullSolution, bump_data
+
+#: Most readings of the gap one :func:`godunov_merger` call takes (a run of the scheme and the centres of two level
+#: ranges each, about 2 ms on 64 cells): (high - low) / (chunk steps) + chunk. The pipeline's settings take about 300.
+MAX_GAP_READINGS = 10**4
 
 
 def level_ranges(solution: HullSolution) -> np.ndarray:
@@ -161,17 +167,19 @@ def first_within(times, gaps, threshold: float) -> float:
     g = finite_array("gaps", gaps)
     same_length(times=t, gaps=g)
     threshold = positive("threshold", threshold)
-    if t.size < 2 or np.any(np.diff(t) <= 0):
+    if t.size < 2 or np.any(t[1:] <= t[:-1]):
         raise ValueError("times must be increasing, at least two")
     below = np.flatnonzero(g <= threshold)
     if below.size == 0 or below[0] == 0:
         raise ValueError(f"gaps must fall to the threshold {threshold!r} after the first sample, got {g[[0, -1]]} "
                          "at the first and last")
     i = below[0]
-    with np.errstate(over="ignore", invalid="ignore"):  # a non-finite share fails the check just below
-        share = (g[i - 1] - threshold) / (g[i - 1] - g[i])  # in [0, 1): the gap falls by more than its excess
-        crossing = (1.0 - share) * t[i - 1] + share * t[i]
-    return finite_result("the crossing time", float(crossing), "gaps too large: their differences overflow")
+    # The share of the step at which the gap reaches the threshold, in [0, 1) (the gap falls by more than its
+    # excess), with the three values scaled by a power of two (exactly) so that their differences cannot overflow.
+    scale = np.ldexp(1.0, -max(int(np.frexp(max(abs(g[i - 1]), abs(g[i])))[1]), 0))
+    share = (g[i - 1] * scale - threshold * scale) / (g[i - 1] * scale - g[i] * scale)
+    crossing = (1.0 - share) * t[i - 1] + share * t[i]
+    return finite_result("the crossing time", float(crossing), "times too large: their interpolation overflows")
 
 
 def gap_path(positions, masses, ranges) -> np.ndarray:
@@ -217,11 +225,22 @@ def godunov_merger(data, cells: int, low: float, high: float, *, cfl: float = 0.
     steps, then at every step of the chunk in which it fell to one cell (from that chunk's saved state), and the
     crossing interpolated between two steps (:func:`first_within`). ValueError if low and high do not bracket such
     a time (two exact aggregates at low, more than a cell apart; within a cell by high)."""
-    cells = integer_at_least("cells", cells, 1)
+    cells = integer_at_least("cells", cells, 1, MAX_CELLS)
     chunk = integer_at_least("chunk", chunk, 1)
     low, high = nonnegative("low", low), nonnegative("high", high)
     if not low < high:
         raise ValueError(f"need low < high, got {low} and {high}")
+    with np.errstate(divide="ignore", over="ignore"):  # (a step that underflows to 0 needs infinitely many)
+        steps = (high - low) / np.float64(methods.godunov_time_step(np.linspace(-1.0, 1.0, cells + 1),
+                                                                    bump_data(data).mass, cfl))
+    if steps / chunk + chunk > MAX_GAP_READINGS:
+        raise ValueError(f"[low, high] = [{low}, {high}] takes {steps:.3g} steps of the scheme on {cells} cells (cfl "
+                         f"= {cfl}), read every chunk = {chunk}: more than MAX_GAP_READINGS = {MAX_GAP_READINGS:.0e} "
+                         "readings of the gap; raise cfl or chunk, or narrow [low, high]")
+    if (steps + chunk) * cells > MAX_CELL_STEPS:
+        raise ValueError(f"[low, high] = [{low}, {high}] takes {steps:.3g} steps of the scheme on {cells} cells (cfl "
+                         f"= {cfl}), more than MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates; raise cfl, use "
+                         "fewer cells or narrow [low, high]")
     solution = HullSolution(data, low)
     ranges = level_ranges(solution)
     if ranges.shape[0] != 2:

@@ -16,6 +16,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ..ltp.solver import Particles
 from ..norms import check_within_range, l1_to_step_function, tail_integrals
 from ..validation import ParameterTypeError, finite_array, finite_result, instance, positive, sorted_array
 from .exact import AggregationSolution
@@ -133,5 +134,6 @@ def w1_particles(solution, particles) -> float:
     """W1 between the exact solution and LTP or SP particles (a :class:`~particle_methods.ltp.solver.Particles`):
     :func:`w1_smooth` with the breaks of every particle's shape, where F_h is a polynomial between them, and pieces
     at most the smallest particle width."""
+    instance("particles", particles, Particles)
     breaks = np.unique(particles.centres[:, None] + particles.widths[:, None] * particles.shape.breaks[None, :])
     return w1_smooth(solution, particles.cumulative_mass, breaks, particles.widths.min())

@@ -57,6 +57,11 @@ from .profiles import limited, monotone_root
 POSITION_STEPS = 80
 #: Latest time: the positions are found to the rounding of a bracket of width about t M (1e-10 at t = 1e6).
 MAX_TIME = 1e6
+#: Largest work of one call, in squared bump counts summed over the solutions it builds: a solution with b bumps
+#: finds each of its up to 2 b - 1 boundaries by Brent's method over the up to 2 b pieces, so it costs about b^2
+#: units of 10 to 25 ms (two_bumps: 30 to 95 ms; 20 bumps 7 s), and 2000 units take about a minute at most. The
+#: pipeline's calls build one solution of two bumps at a time.
+MAX_HULL_WORK = 2000
 #: A jump of F smaller than this share of the mass is no aggregate (two pieces that meet continuously).
 JUMP_SHARE = 1e-13
 #: ... and at a gap of the data, where Brent's x may stop inside the upper piece (a false jump of up to about
@@ -210,6 +215,15 @@ SKEWED_BUMPS = BumpData("skewed bumps 1.3 (1 - s^2)_+^2 on [-0.9, 0] peaked at -
 BUMP_DATA = {"two_bumps": TWO_BUMPS, "skewed_bumps": SKEWED_BUMPS}
 
 
+def check_hull_work(data: BumpData, solutions: int, name: str = "data") -> None:
+    """Refuse ``solutions`` exact solutions of ``data`` beyond :data:`MAX_HULL_WORK` (b^2 units each, b bumps)."""
+    work = solutions * len(data.bumps) ** 2
+    if work > MAX_HULL_WORK:
+        raise ValueError(f"{name} ask for {solutions} exact solution(s) of {len(data.bumps)} bumps, {work} units of "
+                         f"(bumps)^2, more than MAX_HULL_WORK = {MAX_HULL_WORK} (the hull's work is quadratic in the "
+                         "number of bumps): use fewer bumps or times")
+
+
 def bump_data(data) -> BumpData:
     """``data`` itself, or the data named by it: 'two_bumps', 'skewed_bumps', or a symmetric polynomial datum of
     :data:`~particle_methods.blob.initial.DATA_1D` ('smooth20', 'indicator', 'smooth10') as one bump."""
@@ -245,6 +259,7 @@ class HullSolution:
 
     def __init__(self, data, t: float):
         self.data = bump_data(data)
+        check_hull_work(self.data, 1)
         self.t = nonnegative("t", t)
         if self.t > MAX_TIME:
             raise ValueError(f"t = {t:g} is beyond MAX_TIME = {MAX_TIME:g}: the aggregates' positions are found in a "
@@ -406,9 +421,13 @@ class HullSolution:
 
 def aggregate_paths(data, times):
     """(positions, masses) of the aggregates at each of the ``times``, as lists of arrays (one per time)."""
+    data = bump_data(data)
+    if isinstance(times, np.ndarray) and times.ndim == 1:  # from the shape, before any copy of the times
+        check_hull_work(data, times.size, "times")
     times = finite_values("times", times)
     if times.ndim != 1 or times.size == 0:
         raise ValueError(f"times must be a non-empty 1D array, got shape {times.shape}")
+    check_hull_work(data, times.size, "times")
     solutions = [HullSolution(data, float(t)) for t in times]
     return [s.aggregates[0] for s in solutions], [s.aggregates[1] for s in solutions]
 
@@ -421,6 +440,11 @@ def merger_time(data, low: float, high: float) -> float:
         raise ValueError(f"need low < high, got low = {low} and high = {high}")
     if high > MAX_TIME:
         raise ValueError(f"high = {high:g} is beyond MAX_TIME = {MAX_TIME:g}")
+    data = bump_data(data)
+    # Two solutions, then one per halving of [low, high] down to the spacing of the doubles at the merger: at least
+    # as many as down to their spacing at high.
+    halvings = math.ceil(math.log2(high - low) - math.log2(np.spacing(high)))
+    check_hull_work(data, 2 + halvings, "low and high")
     count = lambda t: HullSolution(data, t).aggregates[0].size  # noqa: E731
     before, after = count(low), count(high)
     if not before > after:

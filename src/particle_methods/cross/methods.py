@@ -36,14 +36,15 @@ from ..blob.pair_sums import pair_sums
 from ..blob.solver import integrate_particles
 from ..finite_volume.fluxes import CONCAVE
 from ..finite_volume.grids import MAX_CELLS
-from ..finite_volume.scalar import cfl_time_step, godunov
+from ..finite_volume.scalar import MAX_CELL_STEPS, cfl_time_step, godunov
 from ..ltp.initial import InitialDensity
 from ..ltp.potentials import potential
+from ..ltp.solver import MAX_STEPS as MAX_LTP_STEPS
 from ..ltp.solver import simulate
 from ..norms import cdf_antiderivative
 from ..perturbation import nudged
 from ..sticky.spd import MAX_POSITIONS, spd_positions
-from ..validation import finite_array, integer_at_least, nonnegative, positive, same_length
+from ..validation import finite_array, finite_result, integer_at_least, nonnegative, positive, same_length
 from .exact import solution
 from .hull import BUMP_DATA, BumpData, bump_data
 from .profiles import Profile, profile
@@ -57,6 +58,17 @@ MAX_EQUAL_MASSES = 2**22
 #: Latest time of the SPDs: their velocities carry rounding errors of about 1e-16 (a cluster at rest moves at
 #: that speed), which t multiplies; up to 1e6 they move positions of order 1 by at most about 1e-10.
 MAX_TIME = 1e6
+#: Widest span of the positions :func:`particle_velocities` takes: the pair sums square the distances between them,
+#: which overflow from 1.3e154 on (NaN velocities before issue 46).
+MAX_VELOCITY_SPAN = 1e150
+#: Rounding allowed in the values of F that :func:`godunov_advance` takes, relative to the mass: the robustness run's
+#: nudge (1024 units in the last place, 2.3e-13) and a rounding error of one of its own runs (clipped to [0, M]).
+F_ROUNDING = 1e-12
+#: Most times of one :func:`godunov_paths` call: each ends a run of the scheme (about 0.25 ms of fixed cost) and
+#: keeps its state; the pipeline asks for about 20.
+MAX_PATH_TIMES = 10**5
+#: Most cell values :func:`godunov_paths` keeps, times x cells (800 MB); the pipeline keeps about 3 * 10**5.
+MAX_PATH_VALUES = 10**8
 
 
 def _spd_time(t) -> float:
@@ -143,15 +155,28 @@ def weighted_velocities(masses) -> np.ndarray:
 
 def particle_velocities(x, masses) -> np.ndarray:
     """-sum_j m_j K'(x_i - x_j) with K = |x|/2 and K'(0) = 0 at any positions (ties exert no force): the
-    right-hand side of the particle method, by the blob package's pair sums."""
+    right-hand side of the particle method, by the blob package's pair sums. Masses are non-negative with a finite
+    sum; the positions span at most :data:`MAX_VELOCITY_SPAN` (the pair sums square the distances)."""
+    if isinstance(x, np.ndarray) and x.size > MAX_PARTICLES:  # from the shape, before any copy
+        raise ValueError(f"x has {x.size} points, more than MAX_PARTICLES = {MAX_PARTICLES} (a limit on the O(n^2) "
+                         "work of the pair sums)")
     x = finite_array("x", x)
     masses = finite_array("masses", masses)
     same_length(x=x, masses=masses)
     if x.size > MAX_PARTICLES:
         raise ValueError(f"x has {x.size} points, more than MAX_PARTICLES = {MAX_PARTICLES} (a limit on the O(n^2) "
                          "work of the pair sums)")
+    if np.any(masses < 0):
+        raise ValueError(f"masses must be non-negative, got {float(masses.min())!r} at index {int(masses.argmin())}")
+    with np.errstate(over="ignore"):
+        if not np.isfinite(np.sum(masses)):
+            raise ValueError("masses must have a finite sum: their total overflows")
+        span = np.ptp(x) if x.size else 0.0
+    if not span <= MAX_VELOCITY_SPAN:
+        raise ValueError(f"x spans {span:.3g}, more than MAX_VELOCITY_SPAN = {MAX_VELOCITY_SPAN:.0e}: the pair sums "
+                         "square the distances, which overflow beyond 1.3e154")
     velocity, _ = pair_sums(x[:, None], masses, *kernel_1d(KERNEL).arrays())
-    return velocity[:, 0]
+    return finite_result("the velocities", velocity[:, 0], "the masses are too large: their sums overflow")
 
 
 def spd_equal(data, n: int, t: float):
@@ -215,9 +240,22 @@ def initial_density(data) -> InitialDensity:
 def ltp_method(data, h: float, dt: float, t: float, *, method: str = "ltp", eps: float | None = None):
     """The LTP (or SP, with width ``eps``) particles at t for W = |x|/2: a
     :class:`~particle_methods.ltp.solver.Particles` with ``cumulative_mass``."""
-    t = positive("t", t)  # checked here so that the error names this function's parameter, not simulate's t_final
+    t = positive("t", t)  # checked here so that the errors name this function's parameter, not simulate's t_final
+    _check_ltp_run("t", t, dt)
     return simulate(initial_density(data), potential("newtonian"), h, dt, t, shape=SHAPE, method=method,
                     eps=eps).at(-1)
+
+
+def _check_ltp_run(name: str, t: float, dt) -> None:
+    """simulate's checks of its final time, naming this module's parameter (``t`` or ``times``) instead of its
+    t_final: at most MAX_STEPS steps, a whole number of steps dt. (Its limit on pair interactions does not apply:
+    the Newtonian potential's sums take one pass per particle.)"""
+    dt = positive("dt", dt)
+    ratio = t / dt
+    if not ratio <= MAX_LTP_STEPS:
+        raise ValueError(f"{name} / dt = {ratio:.3g} steps, beyond the limit MAX_STEPS = {MAX_LTP_STEPS} of one run")
+    if abs(round(ratio) * dt - t) > 1e-9 * max(t, dt):
+        raise ValueError(f"{name} = {t} must be a whole number of steps dt = {dt}")
 
 
 def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: float | None = None):
@@ -230,6 +268,7 @@ def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: flo
     steps = np.rint(times / dt).astype(np.int64)
     if np.any(np.abs(steps * dt - times) > 1e-9 * np.maximum(times, dt)):
         raise ValueError(f"every time must be a whole number of steps dt = {dt}, got {times}")
+    _check_ltp_run("times", float(times[-1]), dt)
     run = simulate(initial_density(data), potential("newtonian"), h, dt, float(times[-1]), shape=SHAPE, method=method,
                    eps=eps, record_every=1)
     return [run.at(int(np.searchsorted(run.steps, step))) for step in steps]
@@ -246,12 +285,22 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     ends with a step shortened to land on its time)."""
     _grid_density(data)  # supported in [-1, 1]
     cells = integer_at_least("cells", cells, 1, MAX_CELLS)
+    if isinstance(times, np.ndarray):  # from the shape, before any copy of the times
+        _check_path_size(times.size, cells)
     times = finite_array("times", times)
+    _check_path_size(times.size, cells)
     if times.size == 0 or times[0] < 0 or np.any(np.diff(times) < 0):
         raise ValueError(f"times must be non-negative and non-decreasing, at least one, got {times}")
     edges = np.linspace(-1.0, 1.0, cells + 1)
     initial = solution(data, 0.0)
-    values = nudged(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges))  # the exact cell averages of F0
+    # Every stretch checks its own steps; together they take at least t_last / dt steps of every cell.
+    with np.errstate(divide="ignore"):  # (a step that underflows to 0 needs infinitely many)
+        steps = times[-1] / np.float64(godunov_time_step(edges, initial.mass, cfl))
+    if steps * cells > MAX_CELL_STEPS:
+        raise ValueError(f"times up to {times[-1]:g} on {cells} cells need {steps:.3g} steps of the scheme, more than "
+                         f"MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce the times or cells or raise cfl")
+    # The exact cell averages of F0, in [0, M] (their differences' rounding, about eps M / dx, clipped).
+    values = nudged(np.clip(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges), 0.0, initial.mass))
     out, now = [], 0.0
     for t in times:
         values = godunov_advance(edges, values, initial.mass, float(t) - now, cfl=cfl)
@@ -260,13 +309,28 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     return out
 
 
+def _check_path_size(times: int, cells: int) -> None:
+    if times > MAX_PATH_TIMES:
+        raise ValueError(f"times holds {times} times, more than MAX_PATH_TIMES = {MAX_PATH_TIMES:.0e}")
+    if times * cells > MAX_PATH_VALUES:
+        raise ValueError(f"times holds {times} times of {cells} cells, {times * cells:.3g} values to keep, more than "
+                         f"MAX_PATH_VALUES = {MAX_PATH_VALUES:.0e}")
+
+
 def godunov_advance(edges, values, mass: float, t: float, *, cfl: float = 0.9) -> np.ndarray:
     """F after a time t of Godunov's scheme from the cell values ``values`` of F on ``edges`` (ghost states 0 and
-    ``mass``): with u = F/M and tau = M t, :func:`particle_methods.finite_volume.godunov` for (5.3)."""
+    ``mass``): with u = F/M and tau = M t, :func:`particle_methods.finite_volume.godunov` for (5.3). F is a
+    cumulative mass: ``values`` lie in [0, M] up to :data:`F_ROUNDING` M, and the scheme, which keeps the range of
+    its data and ghost states (the maximum principle) up to its rounding (5e-12 M after t = 3 on 16384 cells), is
+    read in [0, M] (both clipped there)."""
     mass = positive("mass", mass)
     values = finite_array("values", values)
-    u = godunov(CONCAVE, values / mass, edges, mass * nonnegative("t", t), cfl=cfl, left=0.0, right=1.0)
-    return mass * u
+    if values.size and not (values.min() >= -F_ROUNDING * mass and values.max() <= (1.0 + F_ROUNDING) * mass):
+        raise ValueError(f"values must lie in [0, mass] = [0, {mass!r}] (a cumulative mass), got values from "
+                         f"{float(values.min())!r} to {float(values.max())!r}")
+    u = godunov(CONCAVE, np.clip(values / mass, 0.0, 1.0), edges, mass * nonnegative("t", t), cfl=cfl, left=0.0,
+                right=1.0)
+    return mass * np.clip(u, 0.0, 1.0)
 
 
 def godunov_time_step(edges, mass: float, cfl: float = 0.9) -> float:

@@ -66,7 +66,9 @@ class ScalarFlux:
         if not callable(self.derivative):
             raise ParameterTypeError(f"derivative must be callable, got {self.derivative!r}")
         object.__setattr__(self, "extremum", finite_number("extremum", self.extremum))
-        if not isinstance(self.shape, str) or self.shape not in _SHAPES:
+        if not isinstance(self.shape, str):
+            raise ParameterTypeError(f"shape must be one of {_SHAPES} (a string), got {self.shape!r}")
+        if self.shape not in _SHAPES:
             raise ValueError(f"shape must be one of {_SHAPES}, got {self.shape!r}")
 
     def max_speed(self, lo, hi) -> float:

@@ -77,6 +77,10 @@ MAX_UPWIND_STEPS = 10**6
 #: :func:`invariants_from_conservative` clips by default.
 VOLUME_TOLERANCE = 1e-12
 
+#: Rounding allowed beyond 1 in the largest spread |w^+ - w^-| of the box of the data's Riemann invariants that
+#: :func:`hll_psystem` takes (data computed from invariants in [0, 1] carry a few rounding errors).
+BOX_TOLERANCE = 1e-12
+
 #: Relative size, against |P(a)| + |P(b)|, below which a fluctuation dP = P(a) - P(b) is left out
 #: of the time step of :func:`upwind_diagonal`: with primitives computed to a few ulps, 2^16
 #: machine epsilons keep the error of the other averaged speeds below about 1e-4.
@@ -108,8 +112,18 @@ def _largest_sound_speed(system: PSystem, u: np.ndarray, v: np.ndarray) -> float
     Solutions of (5.7) keep their invariants in that box (the conservative solution may leave
     it behind shocks: see the module docstring). On it the spread w^+ - w^- = 2 g(u) is nearest
     to 0, u nearest to nu/2 where c peaks, at clip(0, min w^+ - max w^-, max w^+ - min w^-).
+
+    The box must lie in the domain of the p-system, |w^+ - w^-| <= 1 (section 5.2.2: (5.6) recovers u in
+    [0, nu] from w^-+ in [0, 1], and v shifts both invariants alike), up to :data:`BOX_TOLERANCE`: otherwise two
+    states of the data meet in a middle state (w^- of the left one, w^+ of the right one, or the reverse) with no
+    specific volume in [0, nu], and the scheme leaves it (u up to 14 nu from v jumping by 10).
     """
     w_minus, w_plus = system.riemann_invariants(u, v)
+    widest = max(w_plus.max() - w_minus.min(), w_minus.max() - w_plus.min())
+    if widest > 1.0 + BOX_TOLERANCE:
+        raise ValueError(f"u0 and v0 have Riemann invariants w^-+ = v0 -+ g(u0) whose ranges combine into a spread "
+                         f"|w^+ - w^-| of {widest:.6g}, more than 1 (section 5.2.2): the data meet in states outside "
+                         "u in [0, nu]; reduce the range of v0 or of u0")
     spread = np.clip(0.0, w_plus.min() - w_minus.max(), w_plus.max() - w_minus.min())
     spread = float(np.clip(spread, -1.0, 1.0))  # |w^+ - w^-| = 2 |g(u)| <= 1, up to rounding
     nearest, _ = system.physical_variables(0.5 * (1.0 - spread), 0.5 * (1.0 + spread))
@@ -157,8 +171,9 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9) -> tuple[
     sound speed over the box of the initial ranges of the Riemann invariants w^-+ = v -+ g(u)
     (the peak c(nu/2) as soon as the data have w^+ - w^- of both signs, as both data of
     section 5.2.2 do). A run whose face speeds S exceed dx/dt, possible only if its states
-    leave that box towards nu/2, is refused. Nothing keeps the result in [0, nu]: see the
-    module docstring and :func:`invariants_from_conservative`.
+    leave that box towards nu/2, is refused; so are data whose box leaves the domain |w^+ - w^-| <= 1 of
+    section 5.2.2 (:func:`_largest_sound_speed`). Nothing keeps the result in [0, nu] (see the module docstring and
+    :func:`invariants_from_conservative`): one outside it by more than VOLUME_TOLERANCE nu is refused.
     """
     system = _checked_psystem(system)
     u, v, edges = _conservative_data(system, u0, v0, x_edges)
@@ -176,6 +191,10 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9) -> tuple[
                              "invariant region of the data and broke the CFL condition; reduce cfl")
     u, v = u_all[1:-1], v_all[1:-1]
     finite_result("the HLL solution", np.concatenate([u, v]), "the scheme overflowed")
+    if u.max() > (1.0 + VOLUME_TOLERANCE) * system.nu:
+        raise ValueError(f"the HLL solution has a specific volume u = {u.max():.6g} above nu = {system.nu}: the scheme "
+                         "left [0, nu] (nothing in it keeps u there: module docstring); reduce cfl or the jumps of the "
+                         "data")
     if u.min() < -VOLUME_TOLERANCE * system.nu:
         raise ValueError(f"the HLL solution has a negative specific volume, u = {u.min():.6g}: the data (u0, v0) hold "
                          "a rarefaction the scheme does not resolve inside u >= 0 (nothing in it keeps u there: module "

@@ -55,12 +55,14 @@ def _evolve(u, dx, dt, t, flux_id, convex, extremum, left, right):
 
 def cfl_time_step(flux: ScalarFlux, low: float, high: float, dx: float, cfl: float = 0.9) -> float:
     """The time step of :func:`godunov` on cells of width ``dx`` for states (ghost states included) in
-    [low, high]: cfl dx / max|f'| there. ValueError if the flux moves none of these states."""
+    [low, high]: cfl dx / max|f'| there, cfl in (0, 1]. ValueError if the flux moves none of these states."""
     flux = checked_flux(flux)
+    _, cfl = checked_time_and_cfl(0.0, cfl)
+    dx = positive("dx", dx)
     speed = flux.max_speed(finite_number("low", low), finite_number("high", high))
     if speed == 0:
         raise ValueError(f"the flux moves no state in [low, high] = [{low}, {high}]: no time step")
-    return float(np.float64(cfl) * positive("dx", dx) / speed)
+    return float(np.float64(cfl) * dx / speed)
 
 
 def godunov(flux: ScalarFlux, u0, x_edges, t, cfl: float = 0.9, left=None, right=None, return_steps: bool = False):

@@ -538,8 +538,9 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     Raises ValueError if a velocity the run computes breaks (USH) (checked on every one, against those of
     the other types computed before) or could carry a particle beyond the double range by the last time.
     """
-    x0 = checked_configuration("x0", x0, system)
-    times = finite_array("times", times)
+    # Contiguous copies: the compiled kernels would be compiled again for any other layout (12 s).
+    x0 = np.ascontiguousarray(checked_configuration("x0", x0, system))
+    times = np.ascontiguousarray(finite_array("times", times))
     if times.size == 0:
         raise ValueError("times must contain at least one time")
     if times[0] < 0 or np.any(np.diff(times) < 0):

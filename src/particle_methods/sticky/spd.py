@@ -226,6 +226,10 @@ def spd_positions(x, v, t: float, masses=None, return_operations: bool = False):
     return_operations : also return the operations the hull pass made (counted by the kernel:
         :func:`hull_positions_kernel`).
     """
+    # From the shape, before any copy (a zero-stride array holds its 10^9 entries in one).
+    for name, values in (("x", x), ("v", v), ("masses", masses)):
+        if isinstance(values, np.ndarray) and values.size > MAX_POSITIONS:
+            raise ValueError(f"{name} holds {values.size} particles, more than MAX_POSITIONS = {MAX_POSITIONS:.0e}")
     x, v = checked_state(x, v)
     t = nonnegative("t", t)
     masses = None if masses is None else checked_masses(masses, x)
