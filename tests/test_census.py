@@ -140,6 +140,7 @@ NOT_YET_IN_THE_CENSUS = {
     "particle_methods.cross.hull.HullSolution.quantile_integral",
     "particle_methods.cross.hull.aggregate_paths",
     "particle_methods.cross.hull.bump_data",
+    "particle_methods.cross.hull.check_hull_work",
     "particle_methods.cross.hull.merger_time",
     "particle_methods.cross.methods.aggregation_flux",
     "particle_methods.cross.methods.blob_method",
