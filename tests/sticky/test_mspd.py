@@ -145,5 +145,5 @@ def test_compiled_tspd_steps_are_the_python_steps_to_the_bit(case, x0, n, steps)
 def test_compiled_tspd_refuses_a_reach_that_could_overflow_as_the_python_loop_does():
     x = psystem_initial_configuration("shocks", -4.0, 10)
     for system in (SYSTEM, _PythonPath()):
-        with pytest.raises(ValueError, match=r"x \+ Delta velocities may overflow"):
+        with pytest.raises(ValueError, match=r"x0 \+ Delta velocities may overflow"):
             mspd_positions(x, system, 1e306, 2)

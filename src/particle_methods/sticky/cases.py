@@ -11,7 +11,7 @@ from ..finite_volume.fluxes import burgers_flux, concave_flux
 from ..finite_volume.grids import l1_between_cell_functions, l1_distance_to_step_cdf
 from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
 from ..perturbation import nudged
-from ..validation import finite_array, finite_number, instance, integer_at_least, sorted_array
+from ..validation import finite_array, finite_number, finite_result, instance, integer_at_least, sorted_array
 from .exact import BurgersSolution, ConcaveLaplaceSolution
 from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
 from .spd import spd_positions, velocities_from_flux
@@ -135,7 +135,8 @@ def configuration_distance(a, b) -> float:
     a, b = finite_array("a", a, ndim=2), finite_array("b", b, ndim=2)
     if a.shape[0] != b.shape[0]:
         raise ValueError(f"a and b must be configurations (d, n) with the same d, got shapes {a.shape} and {b.shape}")
-    return float(sum(w1_between_samples(x, y) for x, y in zip(a, b)))
+    distance = float(sum(w1_between_samples(x, y) for x, y in zip(a, b)))
+    return finite_result("the distance between a and b", distance, "their positions are too far apart")
 
 
 def empirical_cdf(points, x) -> np.ndarray:

@@ -162,11 +162,12 @@ def _checked_velocities(x, system) -> tuple[np.ndarray, float, int]:
     return velocities, speed, operations
 
 
-def _tspd_step(x, system, delta, out) -> int:
+def _tspd_step(x, system, delta, out, position_name: str = "x") -> int:
     """One TSPD step from ``x`` into ``out``; returns its operations, as the kernels count them: those of the
-    ranks (:func:`ranks_kernel`) and of the d hull passes (:func:`.spd.hull_positions_kernel`)."""
+    ranks (:func:`ranks_kernel`) and of the d hull passes (:func:`.spd.hull_positions_kernel`); ``position_name``
+    names ``x`` in the errors (x0 at the first step)."""
     velocities, speed, operations = _checked_velocities(x, system)
-    check_reach(x, speed, delta, "Delta", "velocities")
+    check_reach(x, speed, delta, "Delta", "velocities", position_name=position_name)
     for gamma in range(x.shape[0]):
         operations += hull_positions_kernel(x[gamma], velocities[gamma], delta, out[gamma])[1]
     return operations
@@ -244,7 +245,9 @@ def _tspd_psystem(x0, system, delta, steps):
         raise ValueError("the velocities (1.8) are not finite: system.speed_primitive returned non-finite values, "
                          "or values whose differences overflow")
     if status == _TOO_FAR:
-        check_reach(buffers[int(report[0]) % 2], np.abs(velocities).max(), delta, "Delta", "velocities")
+        step = int(report[0])
+        check_reach(buffers[step % 2], np.abs(velocities).max(), delta, "Delta", "velocities",
+                    position_name="x0" if step == 0 else "x")
         raise AssertionError("the compiled reach check and check_reach disagree")  # check_reach raised above
     return buffers[int(report[1])], int(report[0])
 
@@ -260,7 +263,7 @@ def mspd_trajectory(x0, system, delta: float, steps: int) -> np.ndarray:
     path = np.empty((steps + 1, *x0.shape))
     path[0] = x0
     for step in range(steps):
-        _tspd_step(path[step], system, delta, path[step + 1])
+        _tspd_step(path[step], system, delta, path[step + 1], "x0" if step == 0 else "x")
     return path
 
 
@@ -276,7 +279,7 @@ def mspd_positions(x0, system, delta: float, steps: int, return_operations: bool
         return (current, operations) if return_operations else current
     current, following = x0.copy(), np.empty_like(x0)
     operations = 0
-    for _ in range(steps):
-        operations += _tspd_step(current, system, delta, following)
+    for step in range(steps):
+        operations += _tspd_step(current, system, delta, following, "x0" if step == 0 else "x")
         current, following = following, current
     return (current, operations) if return_operations else current

@@ -181,7 +181,8 @@ def checked_masses(masses, x) -> np.ndarray:
     return np.ldexp(masses, -int(np.frexp(largest)[1]))
 
 
-def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: str = "v", masses=None) -> None:
+def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: str = "v", masses=None,
+                position_name: str = "x") -> None:
     """Refuse free positions x + t v that could overflow the sums of the hull.
 
     With R = max |x| + t |v| and total mass M, a free position and its product with a mass m_k <= 1
@@ -191,7 +192,7 @@ def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: 
     finite. The unweighted kernel sums free positions and multiplies by particle counts: M = n
     (``masses=None``); the weighted one gets the masses scaled below 1 by
     :func:`checked_masses`, so M <= n there too. ``x`` is sorted along its last axis (one row
-    per type) and ``speed`` is max |v|.
+    per type), named ``position_name`` in the message, and ``speed`` is max |v|.
     """
     n = x.shape[-1]
     total_mass = n if masses is None else float(masses.sum())
@@ -200,7 +201,8 @@ def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: 
     limit = LARGEST / max(total_mass, 1.0) ** 2
     if not reach <= limit:
         raise ValueError(
-            f"x + {time_name} {velocity_name} may overflow: |x| + {time_name} |{velocity_name}| reaches {reach:.3g}, "
+            f"{position_name} + {time_name} {velocity_name} may overflow: |{position_name}| + {time_name} "
+            f"|{velocity_name}| reaches {reach:.3g}, "
             f"above {limit:.3g} (the largest double / max(M, 1)^2, M = {total_mass:.6g} the total mass in "
             f"particles or in scaled masses); reduce {time_name} or {velocity_name}"
         )

@@ -35,6 +35,7 @@ from ..validation import (
     integer_at_least,
     nonnegative,
     positive,
+    real_array,
     sorted_array,
 )
 from .measures import Atoms, QuantileMeasure, checked_measure
@@ -115,7 +116,7 @@ def empirical_atoms(x) -> Atoms:
 def duplicated(x) -> np.ndarray:
     """x^ of the proofs of Propositions 3.2 and 4.5: every particle of a configuration (a sorted row, or one
     sorted row per type) doubled, x^_{2k-1} = x^_{2k} = x_k; the empirical measures do not change (4.9)."""
-    x = np.asarray(x)
+    x = real_array("x", x)
     rows = sorted_array("x", x, ndim=max(x.ndim, 1))
     if rows.ndim > 2 or rows.size == 0:
         raise ValueError(f"x must be a non-empty configuration (n,) or (d, n), got shape {rows.shape}")
