@@ -308,7 +308,10 @@ def velocities_from_levels(flux, levels) -> np.ndarray:
         widths = np.diff(levels)
     if not np.all(widths > 0):
         raise ValueError(f"levels must increase strictly (index {int(np.argmin(widths > 0)) + 1} does not)")
-    values = finite_array("flux values", flux(levels))
+    try:
+        values = finite_array("flux values", flux(levels))
+    except ValueError as error:  # the flux's own refusal (an overflow) names its argument u: name the levels
+        raise ValueError(f"flux(levels) failed at these levels: {error}") from None
     if values.size != levels.size:
         raise ValueError(f"flux must return one value per level ({levels.size}), got {values.size}")
     with np.errstate(over="ignore"):

@@ -128,6 +128,7 @@ def sampled_configuration(measures, n: int, rng) -> np.ndarray:
     """A random configuration (d, n): for each measure m^gamma, n independent draws F^{-1}(U), U uniform on
     (0, 1) (exact quantiles), sorted. W1(mu_0[x(n)], m) -> 0 almost surely when m has a first moment, so
     such sequences satisfy (4.12) of Corollary 4.6 without being the discretisations (1.9) or (4.7)."""
+    instance("measures", measures, (list, tuple))
     measures = [checked_measure("measures[gamma]", m) for m in measures]
     if not measures:
         raise ValueError("measures must hold at least one measure (one per type)")
