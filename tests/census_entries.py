@@ -17,6 +17,8 @@ from particle_methods.blob import (
 from particle_methods.cross import aggregates, hull, methods
 from particle_methods.cross import exact as cross_exact
 from particle_methods.finite_volume import fluxes
+from particle_methods.finite_volume import grids as fv_grids
+from particle_methods.finite_volume import scalar as fv_scalar
 from particle_methods.ltp import initial as ltp_initial
 from particle_methods.ltp import potentials, shapes
 from particle_methods.ltp import solver as ltp_solver
@@ -231,6 +233,42 @@ ENTRIES = {
                                                                  "level": 0.5}),
     PM + "sticky.cases.configuration_distance": E(cases.configuration_distance, {"a": CONFIG, "b": CONFIG + 0.1}),
     PM + "sticky.cases.empirical_cdf": E(cases.empirical_cdf, {"points": X3, "x": A([0.5, 2.0])}),
+    # systems
+    PM + "systems.PSystem": E(systems.PSystem, {"nu": 1.0, "kappa": 1.0}),
+    PM + "systems.PSystem.g": E(SYSTEM.g, {"u": A([0.5, 1.0])}),
+    PM + "systems.PSystem.pressure": E(SYSTEM.pressure, {"u": A([0.5, 1.0])}),
+    PM + "systems.PSystem.sound_speed": E(SYSTEM.sound_speed, {"u": A([0.5, 1.0])}),
+    PM + "systems.PSystem.riemann_invariants": E(SYSTEM.riemann_invariants, {"u": A([0.5, 1.0]), "v": A([0.0, 0.1])}),
+    PM + "systems.PSystem.physical_variables": E(SYSTEM.physical_variables, {"w_minus": A([0.0, 0.1]),
+                                                                           "w_plus": A([0.2, 0.3])}),
+    PM + "systems.PSystem.speeds": E(SYSTEM.speeds, {"w_minus": A([0.0, 0.1]), "w_plus": A([0.2, 0.3])}),
+    PM + "systems.PSystem.speed_primitive": E(SYSTEM.speed_primitive, {"gamma": 0, "levels": A([[0.2, 0.5]])}),
+    PM + "systems.checked_primitive": E(systems.checked_primitive, {"system": SYSTEM, "gamma": 0,
+                                                                    "levels": A([[0.2, 0.5]])}),
+    PM + "systems.checked_system": E(systems.checked_system, {"system": SYSTEM}),
+    # finite volumes
+    PM + "finite_volume.fluxes.burgers_flux": E(fluxes.burgers_flux, {"u": A([0.0, 0.5, 1.0])}),
+    PM + "finite_volume.fluxes.concave_flux": E(fluxes.concave_flux, {"u": A([0.0, 0.5, 1.0])}),
+    PM + "finite_volume.fluxes.checked_flux": E(fluxes.checked_flux, {"flux": BURGERS}),
+    PM + "finite_volume.fluxes.ScalarFlux.max_speed": E(BURGERS.max_speed, {"lo": 0.0, "hi": 1.0}),
+    PM + "finite_volume.fluxes.godunov_flux": E(fluxes.godunov_flux, {"flux": BURGERS, "left": A([0.0, 1.0]),
+                                                                     "right": A([1.0, 0.0])}),
+    PM + "finite_volume.grids.checked_edges": E(fv_grids.checked_edges, {"x_edges": EDGES, "name": "x_edges"},
+                                                kinds={"name": "fixed"}),
+    PM + "finite_volume.grids.uniform_width": E(fv_grids.uniform_width, {"edges": EDGES}),
+    PM + "finite_volume.grids.l1_between_cell_functions": E(fv_grids.l1_between_cell_functions, {
+        "values_a": np.linspace(0.0, 1.0, 10), "edges_a": EDGES, "values_b": np.linspace(0.1, 1.0, 10),
+        "edges_b": EDGES}),
+    PM + "finite_volume.scalar.cfl_time_step": E(fv_scalar.cfl_time_step, {"flux": BURGERS, "low": 0.0, "high": 1.0,
+                                                                         "dx": 0.1, "cfl": 0.9}),
+    PM + "finite_volume.scalar.godunov": E(fv_scalar.godunov, {"flux": BURGERS, "u0": np.linspace(0.0, 1.0, 10),
+                                                               "x_edges": EDGES, "t": 0.1, "cfl": 0.9,
+                                                               "left": None, "right": None},
+                                           accepts={"left": [None], "right": [None]}),
+    # issue46-b's
+    PM + "sticky.spd.spd_positions": E(spd.spd_positions, {"x": X3, "v": V3, "t": 0.5, "masses": None}),
+    PM + "sticky.multitype_events.mspd_exact": E(multitype_events.mspd_exact, {"x0": CONFIG, "system": SYSTEM,
+                                                                              "times": TIMES}),
 }
 
 EXEMPT = {

@@ -36,6 +36,7 @@ def checked_edges(x_edges, name: str = "x_edges") -> np.ndarray:
 
 def uniform_width(edges: np.ndarray) -> float:
     """Common width of the cells, or a ValueError if the edges are not uniformly spaced."""
+    edges = checked_edges(edges, "edges")
     dx = (edges[-1] - edges[0]) / (edges.size - 1)
     rounding = 8.0 * np.spacing(np.max(np.abs(edges)))
     if not np.allclose(np.diff(edges), dx, rtol=1e-9, atol=rounding):

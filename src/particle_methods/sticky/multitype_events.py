@@ -565,7 +565,8 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     # Every velocity (1.8) of the p-system is an average of lambda^gamma, at most A = speed_scale in
     # magnitude; the rounding of n (P((k+1)/n) - P(k/n)) adds about 8 n eps |P| with |P| <= A
     # (|atan(sinh(y))| <= |y|), below A for any n accepted: 2 A bounds every velocity the run computes.
-    check_reach(x0, 2.0 * system.speed_scale if compiled else float(np.abs(lam).max()), last, "times", "velocities")
+    check_reach(x0, 2.0 * system.speed_scale if compiled else float(np.abs(lam).max()), last, "times", "velocities",
+                position_name="x0")
     run = _Run.allocate(lam)
     status = _start(x0, ranks, run.lam, run.clusters, run.motion, run.counts, run.starts, run.sums, run.rows, run.state,
                     run.extremes, run.report)
@@ -580,7 +581,8 @@ def mspd_exact(x0, system, times, return_events: bool = False):
             break
         for (gamma, lo, hi), row in zip(run.request.reshape(2, 3), run.rows):
             run.lam[gamma, lo:hi] = _python_speeds(system, int(gamma), int(lo), int(hi), row, n)
-            check_reach(x0, float(np.abs(run.lam[gamma, lo:hi]).max()), last, "times", "velocities")
+            check_reach(x0, float(np.abs(run.lam[gamma, lo:hi]).max()), last, "times", "velocities",
+                        position_name="x0")
         run.state[_STAGE] = _SUPPLIED
     if status == _VIOLATES_USH:
         lower, lowest, highest = run.report

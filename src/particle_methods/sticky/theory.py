@@ -218,6 +218,8 @@ def collision_record(x0, system, delta: float, steps: int) -> CollisionRecord:
     d = checked_system(system)
     delta = positive("delta", delta)
     steps = integer_at_least("steps", steps, 1, MAX_STEPS)
+    if not math.isfinite(delta * steps):
+        raise ValueError(f"delta * steps, the last time, overflows: delta = {delta:.3g} is too large")
     n = x0.shape[1]
     pairs = _type_pairs(d)
     if len(pairs) * n * n > MAX_PAIRS:
