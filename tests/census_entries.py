@@ -4,6 +4,10 @@ and the callables exempt from it with the reason. Tiny sizes and short times, so
 
 from __future__ import annotations
 
+import census_blob
+import census_cross
+import census_finite_volume
+import census_ltp
 import numpy as np
 from census import Entry as E
 
@@ -294,3 +298,8 @@ TRUSTING = {
     "blob.sums_1d.pair_sums_1d", "blob.sums_1d.log_pair_sums_1d",
 }
 EXEMPT.update({PM + name: "trusts its caller's checks (its docstring says so)" for name in TRUSTING})
+
+# The parts of the census kept in files of their own (one per subpackage).
+for part in (census_blob, census_ltp, census_cross, census_finite_volume):
+    ENTRIES.update(part.ENTRIES)
+    EXEMPT.update(part.EXEMPT)
