@@ -102,6 +102,13 @@ class Limit:
         return any(fnmatchcase(key, pattern) for pattern in self.keys)
 
 
+@functools.cache
+def _holding(key: str, limits: tuple[Limit, ...]) -> tuple[Limit, ...]:
+    """The limits of ``limits`` whose patterns match a dotted key (cached: every check of a configuration, at every
+    job's start, asks it of every key)."""
+    return tuple(limit for limit in limits if limit.matches(key))
+
+
 def _largest(values) -> float:
     """The largest number of a value or a list of them (0 for none)."""
     values = values if isinstance(values, list) else [values]
@@ -318,7 +325,7 @@ def held(key: str, limits: tuple[Limit, ...] = LIMITS) -> bool:
     """Whether a dotted key (or a value of a list key: ``key.3``) is held to a work limit of :data:`LIMITS`."""
     parts = key.split(".")
     key = ".".join(parts[:-1]) if parts[-1].isdigit() else key
-    return any(limit.matches(key) for limit in limits)
+    return bool(_holding(key, limits))
 
 
 def check_work_limits(config: Mapping, limits: tuple[Limit, ...] = LIMITS) -> None:
@@ -332,9 +339,7 @@ def check_work_limits(config: Mapping, limits: tuple[Limit, ...] = LIMITS) -> No
         if not key or parts[-1].isdigit():
             continue  # a list's values are checked with its key
         values = value if isinstance(value, list) else [value]
-        for limit in limits:
-            if not limit.matches(key):
-                continue
+        for limit in _holding(key, limits):
             section = _section(config, parts[:-limit.up])
             limit_value = solver_limit(limit.constant)
             for v in values:
