@@ -268,7 +268,7 @@ ENTRIES = {
     PM + "finite_volume.scalar.godunov": E(fv_scalar.godunov, {"flux": BURGERS, "u0": np.linspace(0.0, 1.0, 10),
                                                                "x_edges": EDGES, "t": 0.1, "cfl": 0.9,
                                                                "left": None, "right": None},
-                                           accepts={"left": [None], "right": [None]}),
+                                           kinds={"left": "number", "right": "number"}),  # None: the default
     # issue46-b's
     PM + "sticky.spd.spd_positions": E(spd.spd_positions, {"x": X3, "v": V3, "t": 0.5, "masses": None}),
     PM + "sticky.multitype_events.mspd_exact": E(multitype_events.mspd_exact, {"x0": CONFIG, "system": SYSTEM,
