@@ -12,22 +12,7 @@ from census_entries import ENTRIES, EXEMPT
 AWAITING_ISSUE46B = set()
 #: Failures the census found in the sticky modules that issue46-c did not fix in its hour (its report lists them):
 #: strict, so that each fails once fixed.
-KNOWN_FAILING_ISSUE46C = {
-    "particle_methods.sticky.admissibility.admissibility_violation",
-    "particle_methods.sticky.admissibility.checked_sampling",
-    "particle_methods.sticky.admissibility.flux_values",
-    "particle_methods.sticky.admissibility.mass_levels",
-    "particle_methods.sticky.cases.ScalarCase",
-    "particle_methods.sticky.cases.cells_distance",
-    "particle_methods.sticky.cases.distance_to_cells",
-    "particle_methods.sticky.hull_reference.HullIteration",
-    "particle_methods.sticky.mspd.ScalarLaw",
-    "particle_methods.sticky.mspd.ScalarLaw.speed_primitive",
-    "particle_methods.sticky.spd.check_reach",
-    "particle_methods.sticky.spd.checked_masses",
-    "particle_methods.sticky.theory.CollisionRecord",
-    "particle_methods.sticky.theory.SystemConstants",
-}
+KNOWN_FAILING_ISSUE46C = set()
 #: Public callables issue46-c had no time to give an entry (its report lists them): the gap, named. A callable
 #: added to the package and not here fails the census at once; one given an entry must leave this list.
 NOT_YET_IN_THE_CENSUS = {
