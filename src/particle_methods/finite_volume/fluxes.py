@@ -75,8 +75,9 @@ class ScalarFlux:
         for name, function in (("f", self.f), ("derivative", self.derivative)):
             try:
                 value = real_array(f"{name}(extremum)", function(np.array([self.extremum])))
-            except (ValueError, TypeError) as error:
-                raise type(error)(f"{name}(extremum) failed at extremum = {self.extremum}: {error}") from None
+            except (ValueError, TypeError) as error:  # a TypeError of numpy's may take no message: ours does
+                kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+                raise kind(f"{name}(extremum) failed at extremum = {self.extremum}: {error}") from None
             finite_result(f"{name}(extremum)", value, f"{name} returned NaN or inf at extremum = {self.extremum}")
 
     def max_speed(self, lo, hi) -> float:
@@ -122,7 +123,8 @@ def _flux_at(flux: ScalarFlux, states: np.ndarray, name: str) -> np.ndarray:
     try:
         return real_array("f(u)", flux.f(states))
     except (ValueError, TypeError) as error:
-        raise type(error)(f"{name}: {error}") from None
+        kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+        raise kind(f"{name}: {error}") from None
 
 
 def godunov_flux(flux: ScalarFlux, left, right):
