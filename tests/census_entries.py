@@ -10,6 +10,7 @@ import census_finite_volume
 import census_ltp
 import numpy as np
 from census import Entry as E
+from census import nan_function
 
 from particle_methods import convergence, norms, perturbation, systems, threads, validation
 from particle_methods.blob import (
@@ -145,7 +146,9 @@ ENTRIES = {
     PM + "sticky.admissibility.flux_values": E(admissibility.flux_values, {"flux": fluxes.burgers_flux,
                                                                           "states": A([0.0, 0.5])}),
     PM + "sticky.admissibility.checked_sampling": E(admissibility.checked_sampling, {
-        "n": 4, "flux": fluxes.burgers_flux, "points": 4, "fewest_points": 1}),
+        "n": 4, "flux": fluxes.burgers_flux, "points": 4, "fewest_points": 1},
+        # it checks that the flux is callable and never calls it: flux_values checks the values where it is called
+        accepts={"flux": [nan_function]}),
     PM + "sticky.admissibility.mass_levels": E(admissibility.mass_levels, {"masses": A([0.5, 0.5]),
                                                                           "particles": A([0.0, 1.0]),
                                                                           "order": A([0, 1])}),
@@ -268,7 +271,7 @@ ENTRIES = {
     PM + "finite_volume.scalar.godunov": E(fv_scalar.godunov, {"flux": BURGERS, "u0": np.linspace(0.0, 1.0, 10),
                                                                "x_edges": EDGES, "t": 0.1, "cfl": 0.9,
                                                                "left": None, "right": None},
-                                           accepts={"left": [None], "right": [None]}),
+                                           kinds={"left": "number", "right": "number"}),  # None: the default
     # issue46-b's
     PM + "sticky.spd.spd_positions": E(spd.spd_positions, {"x": X3, "v": V3, "t": 0.5, "masses": None}),
     PM + "sticky.multitype_events.mspd_exact": E(multitype_events.mspd_exact, {"x0": CONFIG, "system": SYSTEM,

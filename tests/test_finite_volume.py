@@ -300,3 +300,50 @@ def test_cfl_time_step_is_the_step_godunov_takes():
         cfl_time_step(CONCAVE, 0.5, 0.5, 0.1)
     with pytest.raises(ValueError, match="dx"):
         cfl_time_step(CONCAVE, 0.0, 1.0, -0.1)
+
+
+def test_extreme_states_are_refused_by_the_parameter_they_come_from():
+    """Issue 46 (census): overflows and ranges name the argument that caused them."""
+    from particle_methods.finite_volume.grids import check_cell_steps, check_cells_match, l1_between_cell_functions
+    from particle_methods.finite_volume.riemann import Wave
+
+    with pytest.raises(ValueError, match="^left: the Burgers flux"):
+        godunov_flux(BURGERS, [1e300, 0.0], [0.0, 0.0])
+    with pytest.raises(ValueError, match="^right: the Burgers flux"):
+        godunov_flux(BURGERS, [0.0, 0.0], [0.0, -1.7e308])
+    with pytest.raises(ValueError, match="values_a - values_b"):
+        l1_between_cell_functions(np.full(10, -1.7e308), EDGES, np.full(10, 1.7e308), EDGES)
+    with pytest.raises(ValueError, match="low must not exceed high"):
+        cfl_time_step(BURGERS, 1e300, 1.0, 0.1)
+    with pytest.raises(ValueError, match=r"dx = 0.1 is too large for the speed .* in \[low, high\]"):
+        cfl_time_step(BURGERS, 0.0, 5e-324, 0.1)  # cfl dx / 5e-324 overflows: was inf
+    with pytest.raises(ValueError, match="lower the speeds of u0 and the ghost states left, right"):
+        godunov(BURGERS, U0, EDGES, 0.1, left=1e300)
+    with pytest.raises(TypeError, match="left must be a real number"):
+        godunov(BURGERS, U0, EDGES, 0.1, left="1")
+    with pytest.raises(ValueError, match="f\\(extremum\\) is not finite"):
+        ScalarFlux(lambda u: np.full(np.shape(u), np.nan), np.asarray, 0.0, "convex")
+    with pytest.raises(TypeError, match="derivative\\(extremum\\) failed"):
+        ScalarFlux(burgers_flux, lambda u: None, 0.0, "convex")
+    with pytest.raises(TypeError, match="cells must be an integer"):
+        check_cell_steps(0.1, 0.01, None, 1000)
+    with pytest.raises(ValueError, match="dt must be finite"):
+        check_cell_steps(0.1, np.nan, 10, 1000)
+    with pytest.raises(ValueError, match="more than the limit of 3e\\+00 cell updates"):
+        check_cell_steps(0.1, 0.01, 10, 3)
+    with pytest.raises(TypeError, match="u0 must be an array"):
+        check_cells_match("u0", None, EDGES)
+    with pytest.raises(ValueError, match="u0 must be an array of cell values"):
+        check_cells_match("u0", 3.0, EDGES)
+    with pytest.raises(ValueError, match="family must be 1 or 2"):
+        Wave(None, 0.0, 0.0)
+    with pytest.raises(ValueError, match="left_edge must be finite"):
+        Wave(1, np.nan, 0.0)
+    with pytest.raises(TypeError, match="right_edge must be a real number"):
+        Wave(2, 0.0, "1")
+
+
+def test_godunov_takes_one_step_when_the_speeds_underflow():
+    """Speeds of 5e-324: cfl dx / speed overflows, yet one step of length t keeps the CFL condition."""
+    u0 = np.full(10, 5e-324)
+    np.testing.assert_array_equal(godunov(BURGERS, u0, EDGES, 0.1), u0)

@@ -519,8 +519,10 @@ W0 = np.full((2, 4), 0.5)
     (lambda: hll_psystem(SYSTEM, U0, V0, EDGES, -1.0), ValueError, "t must be non-negative"),
     (lambda: hll_psystem(SYSTEM, U0, V0, EDGES, 1.0, cfl=1.5), ValueError, r"cfl must lie in \(0, 1\]"),
     (lambda: hll_psystem(SYSTEM, U0, V0, EDGES, 1e12), ValueError,
-     re.escape(f"more than {MAX_CELL_STEPS:.0e} cell updates")),
+     re.escape(f"more than the limit of {MAX_CELL_STEPS:.0e} cell updates")),
     (lambda: hll_psystem(SYSTEM, U0[None], V0[None], EDGES, 1.0), ValueError, "u0 must be a 1-dimensional"),
+    (lambda: hll_psystem(SYSTEM, U0, np.full(4, -1.7e308), EDGES, 0.05), ValueError,
+     "overflowed on data u0, v0 this large"),  # issue 46 (census): named the data
     (lambda: upwind_diagonal(None, W0, EDGES, 1.0), ParameterTypeError, "system must be a diagonal system"),
     (lambda: upwind_diagonal(BURGERS_LAW, W0, EDGES, 1.0), ValueError, "w0 must have one row per type"),
     (lambda: upwind_diagonal(SYSTEM, W0[0], EDGES, 1.0), ValueError, "w0 must be a 2-dimensional"),

@@ -254,7 +254,7 @@ def test_rates_round_trip_and_refuse_bad_paths_and_fits(tmp_path):
 @pytest.mark.parametrize("call, error, message", [
     # Work limits.
     (lambda: godunov(BURGERS, np.full(5, 1e8), EDGES, 1.0), ValueError,
-     re.escape(f"more than {MAX_CELL_STEPS:.0e} cell updates")),
+     re.escape(f"more than the limit of {MAX_CELL_STEPS:.0e} cell updates")),
     (lambda: window_slopes(np.arange(101.0), np.arange(101.0)), ValueError, "at most MAX_POINTS = 100"),
     (lambda: run_until(decay, np.ones(2), 1e-300, 0.0, 1.0, lambda t, s: 0.0), ValueError, "MAX_CHUNKS"),
     # Overflows: were inf or NaN.

@@ -67,3 +67,11 @@ def test_speed_primitive_differentiates_to_the_speed(gamma, rng):
 def test_bad_input(make, message):
     with pytest.raises(ValueError, match=message):
         make()
+
+
+def test_checked_primitive_refuses_what_is_not_a_system():
+    """Issue 46 (census): an AttributeError before."""
+    from particle_methods.systems import checked_primitive
+
+    with pytest.raises(TypeError, match="system must be a diagonal system"):
+        checked_primitive(None, 0, np.array([[0.2, 0.5]]))

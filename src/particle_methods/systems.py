@@ -46,6 +46,7 @@ def checked_system(system) -> int:
 
 def checked_primitive(system, gamma: int, levels: np.ndarray) -> np.ndarray:
     """system.speed_primitive(gamma, levels), one real value per row of ``levels`` (else a ValueError)."""
+    checked_system(system)
     name = f"system.speed_primitive({gamma}, levels)"
     values = real_array(name, system.speed_primitive(gamma, levels))
     if values.shape != levels.shape[:1]:

@@ -221,3 +221,28 @@ def test_entry_points_return_finite_values_or_refuse(state, flux, points, t):
         assert result.rankine_hugoniot >= 0 and result.entropy >= 0
     safe_call(naming(spd_state, "x", "v", "t", "particles", "masses"), np.sort(positions) if
               isinstance(positions, np.ndarray) and positions.dtype.kind == "f" else positions, velocities, t, masses)
+
+
+def test_the_helpers_check_their_arguments_by_name():
+    """Issue 46 (census): flux_values took any callable and states, mass_levels indexed with any order."""
+    from particle_methods.finite_volume import burgers_flux
+    from particle_methods.sticky.admissibility import checked_sampling, flux_values, mass_levels
+
+    with pytest.raises(ParameterTypeError, match="flux must be callable"):
+        flux_values(None, np.array([0.0, 1.0]))
+    with pytest.raises(ValueError, match="flux refused states: the Burgers flux"):
+        flux_values(burgers_flux, np.array([0.0, 1e300]))
+    with pytest.raises(ValueError, match="states contains NaN"):
+        flux_values(burgers_flux, np.array([0.0, np.nan]))
+    with pytest.raises(ParameterTypeError, match="fewest_points must be an integer"):
+        checked_sampling(4, burgers_flux, 4, None)
+    with pytest.raises(ValueError, match="points must be at least fewest_points = 255"):
+        checked_sampling(4, burgers_flux, 4, 255)
+    with pytest.raises(ValueError, match="particles contains NaN"):
+        mass_levels([0.5, 0.5], [0.0, np.nan], np.array([0, 1]))
+    with pytest.raises(ParameterTypeError, match="order must hold one integer index per particle"):
+        mass_levels([0.5, 0.5], [0.0, 1.0], np.array([0.0, 1.0]))
+    with pytest.raises(ValueError, match="order must be a permutation"):
+        mass_levels([0.5, 0.5], [0.0, 1.0], np.array([0, 0]))
+    with pytest.raises(ValueError, match="flux refused the levels of the masses"):
+        admissibility_violation([0.0, 0.0, 1.0], [0.5, 0.5, -1.0], burgers_flux, [1e300, 1e300, 1e300], points=4)

@@ -127,3 +127,26 @@ def test_cells_distance_is_the_sum_over_types_of_the_l1_distances():
     assert cells_distance(a, fine, a, fine) == 0.0
     with pytest.raises(ValueError, match="types"):
         cells_distance(a, fine, b[:1], coarse)
+
+
+def test_cases_and_cell_distances_name_what_they_refuse():
+    """Issue 46 (census): ScalarCase took any field; the distances named values_a and no configuration."""
+    from particle_methods.finite_volume import burgers_flux
+    from particle_methods.sticky.cases import SCALAR_CASES, ScalarCase, distance_to_cells
+
+    case = SCALAR_CASES["burgers_two_atoms"]
+    with pytest.raises(ValueError, match="flux_lipschitz must be finite"):
+        ScalarCase(case.initial, burgers_flux, case.solution, np.nan)
+    with pytest.raises(TypeError, match="solution must be callable"):
+        ScalarCase(case.initial, burgers_flux, None, 1.0)
+    with pytest.raises(ValueError, match="flux values contains NaN"):
+        ScalarCase(case.initial, lambda u: np.full(np.shape(u), np.nan), case.solution, 1.0)
+    edges = np.linspace(-1.0, 1.0, 5)
+    with pytest.raises(ValueError, match=r"w_a\[0\] and w_b\[0\]: the L1 distance is not finite"):
+        cells_distance(np.full((1, 4), -1.7e308), edges, np.full((1, 4), 1.7e308), edges)
+    with pytest.raises(ValueError, match="the particles of configuration span"):
+        distance_to_cells(np.array([[0.0, 2.0]]), np.zeros((1, 4)), edges)
+    with pytest.raises(ValueError, match="configuration must be sorted"):
+        distance_to_cells(np.array([[0.5, 0.0]]), np.zeros((1, 4)), edges)
+    with pytest.raises(ValueError, match="x_edges must contain at least 2 edges"):
+        distance_to_cells(np.array([[0.0]]), np.zeros((1, 4)), [])

@@ -147,3 +147,11 @@ def test_compiled_tspd_refuses_a_reach_that_could_overflow_as_the_python_loop_do
     for system in (SYSTEM, _PythonPath()):
         with pytest.raises(ValueError, match=r"x0 \+ Delta velocities may overflow"):
             mspd_positions(x, system, 1e306, 2)
+
+
+def test_a_scalar_law_checks_its_flux_and_names_the_levels_it_refuses():
+    """Issue 46 (census): a flux answering NaN was accepted, an overflow named no argument."""
+    with pytest.raises(ValueError, match="flux must be finite at u = 0 and 1"):
+        ScalarLaw(lambda u: np.full(np.shape(u), np.nan))
+    with pytest.raises(ValueError, match="flux refused levels: the Burgers flux"):
+        ScalarLaw(burgers_flux).speed_primitive(0, np.array([[0.0], [1e300]]))

@@ -134,3 +134,27 @@ def test_the_hull_counts_its_pushes_writes_tests_and_pops():
     assert one == 3 * n + 2 * (n - 1) - n
     with pytest.raises(TypeError, match="return_operations"):
         spd_positions(x, v, 0.7, return_operations=1)
+
+
+def test_check_reach_checked_masses_and_hull_iterations_check_their_arguments():
+    """Issue 46 (census): AttributeError, IndexError, NaN and any field accepted before."""
+    from particle_methods.sticky.hull_reference import HullIteration
+    from particle_methods.sticky.spd import check_reach, checked_masses
+    from particle_methods.validation import ParameterTypeError
+
+    with pytest.raises(ParameterTypeError, match="x must be an array"):
+        check_reach(None, 1.0, 0.5)
+    with pytest.raises(ValueError, match="x contains NaN"):
+        check_reach(np.array([1.0, np.nan]), 1.0, 0.5)
+    with pytest.raises(ValueError, match=r"speed \(max \|v\|\) must be finite"):
+        check_reach(np.array([0.0, 1.0]), np.inf, 0.5)
+    with pytest.raises(ValueError, match="t must be non-negative"):
+        check_reach(np.array([0.0, 1.0]), 1.0, -1.0)
+    with pytest.raises(ValueError, match=r"the speed max \|v\| is 1.7e\+308"):
+        check_reach(np.array([0.0, 1.0]), 1.7e308, 0.5)
+    with pytest.raises(ValueError, match="x must be an array of positions"):
+        checked_masses([1.0], 3.0)
+    with pytest.raises(ParameterTypeError, match="k must be an integer"):
+        HullIteration(np.nan, (0,), (), (0, 1))
+    with pytest.raises(ParameterTypeError, match="after must be a tuple of vertex indices"):
+        HullIteration(1, (0,), (), None)

@@ -155,3 +155,26 @@ def test_inputs_are_checked():
         psystem_constants("p-system")
     with pytest.raises(ValueError, match="rows"):
         collision_record(np.zeros((3, 2)), SYSTEM, 0.1, 3)
+
+
+def test_records_and_constants_check_their_fields():
+    """Issue 46 (census): CollisionRecord and SystemConstants took None, strings and NaN; their documented
+    sentinels (-inf gap with no collision, +inf shrink with no type pair) stay allowed."""
+    from particle_methods.sticky.theory import CollisionRecord, SystemConstants
+
+    good = dict(collisions=np.array([1]), step_distances=np.array([0.1]), pair_counts=np.ones((1, 2, 2)),
+                smallest_shrink=0.5, largest_collision_gap=0.1, mspd_distances=np.array([0.1, 0.2]), extent=1.0)
+    assert CollisionRecord(**good).collisions.dtype.kind == "i"  # counts stay integers
+    with pytest.raises(ValueError, match="step_distances contains NaN"):
+        CollisionRecord(**good | {"step_distances": np.array([np.nan])})
+    with pytest.raises(ValueError, match="largest_collision_gap must be finite"):
+        CollisionRecord(**good | {"largest_collision_gap": -np.inf})
+    assert CollisionRecord(**good | {"collisions": np.array([0]), "largest_collision_gap": -np.inf})
+    assert CollisionRecord(**good | {"pair_counts": np.zeros((0, 2, 2)), "smallest_shrink": np.inf})
+    with pytest.raises(ParameterTypeError, match="extent must be a real number"):
+        CollisionRecord(**good | {"extent": None})
+    with pytest.raises(ParameterTypeError, match="d must be an integer"):
+        SystemConstants("2", 1.0, 0.5, 1.0, 1)
+    with pytest.raises(ValueError, match="hyperbolicity must be finite"):
+        SystemConstants(2, 1.0, np.nan, 1.0, 1)
+    assert SystemConstants(2, 1.0, 0.5, 1.0, 1).constant_over_stability == 2.0

@@ -70,6 +70,15 @@ class ScalarFlux:
             raise ParameterTypeError(f"shape must be one of {_SHAPES} (a string), got {self.shape!r}")
         if self.shape not in _SHAPES:
             raise ValueError(f"shape must be one of {_SHAPES}, got {self.shape!r}")
+        # One evaluation of each function at u*: a function that answers NaN, inf or no number is refused here,
+        # by its name, rather than met later inside a scheme.
+        for name, function in (("f", self.f), ("derivative", self.derivative)):
+            try:
+                value = real_array(f"{name}(extremum)", function(np.array([self.extremum])))
+            except (ValueError, TypeError) as error:  # a TypeError of numpy's may take no message: ours does
+                kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+                raise kind(f"{name}(extremum) failed at extremum = {self.extremum}: {error}") from None
+            finite_result(f"{name}(extremum)", value, f"{name} returned NaN or inf at extremum = {self.extremum}")
 
     def max_speed(self, lo, hi) -> float:
         """max |f'(u)| over lo <= u <= hi."""
@@ -109,6 +118,15 @@ def checked_flux(flux) -> ScalarFlux:
     return flux
 
 
+def _flux_at(flux: ScalarFlux, states: np.ndarray, name: str) -> np.ndarray:
+    """flux.f(states), its refusal (an overflow: u^2/2 of u = 1e300) re-raised naming the parameter ``name``."""
+    try:
+        return real_array("f(u)", flux.f(states))
+    except (ValueError, TypeError) as error:
+        kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+        raise kind(f"{name}: {error}") from None
+
+
 def godunov_flux(flux: ScalarFlux, left, right):
     """Exact Godunov flux F(left, right), element-wise over broadcast arrays.
 
@@ -122,13 +140,13 @@ def godunov_flux(flux: ScalarFlux, left, right):
     except ValueError:
         raise ValueError(f"left and right must broadcast together, got shapes {a.shape} and {b.shape}") from None
     low, high = np.minimum(a, b), np.maximum(a, b)
-    at_extremum = flux.f(np.clip(flux.extremum, low, high))
-    f_a, f_b = flux.f(a), flux.f(b)
+    at_extremum = _flux_at(flux, np.clip(flux.extremum, low, high), "left and right")
+    f_a, f_b = _flux_at(flux, a, "left"), _flux_at(flux, b, "right")
     if flux.shape == "convex":
         value = np.where(a <= b, at_extremum, np.maximum(f_a, f_b))
     else:
         value = np.where(a <= b, np.minimum(f_a, f_b), at_extremum)
-    value = finite_result("the Godunov flux", real_array("f(u)", value), "f overflowed at these states")
+    value = finite_result("the Godunov flux", real_array("f(u)", value), "f overflowed at these left and right states")
     return float(value) if value.ndim == 0 else value
 
 

@@ -12,7 +12,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..validation import finite_array, finite_number, finite_result, positive, sorted_array
+from ..validation import (
+    finite_array,
+    finite_number,
+    finite_result,
+    integer_at_least,
+    nonnegative,
+    positive,
+    real_array,
+    sorted_array,
+)
 
 #: Most cells of one grid: every scheme and exact average keeps several arrays of this length (and the schemes
 #: take more steps on more cells); 1e8 cells ended in a MemoryError after minutes (issue 30). The pipeline's
@@ -44,7 +53,12 @@ def uniform_width(edges: np.ndarray) -> float:
     return float(dx)
 
 
-def check_cells_match(name: str, values: np.ndarray, edges: np.ndarray, edges_name: str = "x_edges") -> None:
+def check_cells_match(name: str, values, edges, edges_name: str = "x_edges") -> None:
+    """A ValueError unless the last axis of ``values`` has one entry per cell of ``edges`` (names as given)."""
+    values = real_array(name, values)
+    edges = real_array(edges_name, edges)
+    if values.ndim == 0:
+        raise ValueError(f"{name} must be an array of cell values, got a number")
     if values.shape[-1] != edges.size - 1:
         raise ValueError(f"{name} has {values.shape[-1]} cells but {edges_name} has {edges.size} edges: need "
                          f"len({edges_name}) == {name}.shape[-1] + 1")
@@ -61,17 +75,21 @@ def checked_time_and_cfl(t, cfl) -> tuple[float, float]:
     return t, cfl
 
 
-def check_cell_steps(t: float, dt: float, cells: int, limit: int) -> None:
+def check_cell_steps(t: float, dt: float, cells: int, limit: int, speeds: str = "the data") -> None:
     """Refuse a run of ceil(t / dt) steps over ``cells`` cells beyond ``limit`` cell updates (and a time step that
     underflows to 0, from a cfl near the smallest double)."""
+    t = nonnegative("t", t)
+    dt = nonnegative("dt", dt)
+    cells = integer_at_least("cells", cells, 0, MAX_CELLS)
+    limit = integer_at_least("limit", limit, 0, 2**63)
     if t > 0 and not dt > 0:
         raise ValueError(f"the time step cfl dx / speed underflows to {dt}: raise cfl")
     with np.errstate(divide="ignore", over="ignore"):
         steps = np.ceil(np.float64(t) / np.float64(dt)) if t > 0 else 0.0
-    if steps * cells > limit:
+    if steps * float(cells) > limit:
         raise ValueError(
-            f"t={t} on x_edges with {cells} cells needs {steps:.3g} time steps, more than "
-            f"{limit:.0e} cell updates: reduce t, use fewer cells or raise cfl"
+            f"t={t} on x_edges with {cells} cells needs {steps:.3g} time steps, more than the limit of "
+            f"{limit:.0e} cell updates: reduce t, use fewer cells, raise cfl or lower the speeds of {speeds}"
         )
 
 
@@ -151,4 +169,4 @@ def l1_between_cell_functions(values_a, edges_a, values_b, edges_b) -> float:
     in_b = np.clip(np.searchsorted(second, starts, side="right") - 1, 0, b.size - 1)
     with np.errstate(over="ignore", invalid="ignore"):
         total = float(np.sum(np.abs(a[in_a] - b[in_b]) * np.diff(breaks)))
-    return finite_result("the L1 distance", total, "the values times the widths of the cells overflow")
+    return finite_result("the L1 distance", total, "values_a - values_b times the widths of the cells overflows")

@@ -181,7 +181,7 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9) -> tuple[
     t, cfl = checked_time_and_cfl(t, cfl)
     speed = _largest_sound_speed(system, u, v)
     dt = cfl * dx / speed
-    check_cell_steps(t, dt, u.size, MAX_CELL_STEPS)
+    check_cell_steps(t, dt, u.size, MAX_CELL_STEPS, speeds="u0, v0")
     u_all = np.concatenate([u[:1], u, u[-1:]])
     v_all = np.concatenate([v[:1], v, v[-1:]])
     if t > 0:
@@ -190,7 +190,7 @@ def hll_psystem(system: PSystem, u0, v0, x_edges, t, cfl: float = 0.9) -> tuple[
             raise ValueError(f"a face speed S = {largest:.6g} exceeded dx/dt = {dx / dt:.6g}: the scheme left the "
                              "invariant region of the data and broke the CFL condition; reduce cfl")
     u, v = u_all[1:-1], v_all[1:-1]
-    finite_result("the HLL solution", np.concatenate([u, v]), "the scheme overflowed")
+    finite_result("the HLL solution", np.concatenate([u, v]), "the scheme overflowed on data u0, v0 this large")
     if u.max() > (1.0 + VOLUME_TOLERANCE) * system.nu:
         raise ValueError(f"the HLL solution has a specific volume u = {u.max():.6g} above nu = {system.nu}: the scheme "
                          "left [0, nu] (nothing in it keeps u there: module docstring); reduce cfl or the jumps of the "

@@ -50,6 +50,12 @@ class Wave:
     left_edge: float
     right_edge: float
 
+    def __post_init__(self):
+        if isinstance(self.family, bool) or self.family not in (1, 2):
+            raise ValueError(f"family must be 1 or 2, got {self.family!r}")
+        object.__setattr__(self, "left_edge", finite_number("left_edge", self.left_edge))
+        object.__setattr__(self, "right_edge", finite_number("right_edge", self.right_edge))
+
     @property
     def shock(self) -> bool:
         return self.left_edge == self.right_edge

@@ -41,7 +41,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import ParameterTypeError, finite_array, finite_result, integer_at_least, nonnegative, same_length
+from ..validation import (
+    ParameterTypeError,
+    finite_array,
+    finite_result,
+    finite_values,
+    integer_at_least,
+    nonnegative,
+    same_length,
+)
 from .spd import MAX_POSITIONS, checked_masses, spd_positions
 
 #: States sampled inside each level interval (c_{k-1}, c_k) when the caller gives none.
@@ -77,9 +85,17 @@ class Admissibility:
         integer_at_least("clusters", self.clusters, 0)
 
 
-def flux_values(flux, states: np.ndarray) -> np.ndarray:
-    """Lambda at ``states``, checked: finite, one value per state."""
-    values = finite_array("flux values", flux(states))
+def flux_values(flux, states: np.ndarray, name: str = "states") -> np.ndarray:
+    """Lambda at ``states`` (named ``name`` in a refusal of the flux), checked: finite, one value per state."""
+    if not callable(flux):
+        raise ParameterTypeError(f"flux must be callable (the flux Lambda of (1.1)), got {flux!r}")
+    states = finite_values("states", states)
+    try:
+        values = flux(states)
+    except (ValueError, TypeError) as error:  # the flux's own refusal (u^2/2 overflows): say at which states
+        kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+        raise kind(f"flux refused {name}: {error}") from None
+    values = finite_values("flux values", values)
     if values.size != states.size:
         raise ValueError(f"flux must return one value per state ({states.size}), got {values.size}")
     return values.ravel()
@@ -89,9 +105,12 @@ def checked_sampling(n: int, flux, points: int, fewest_points: int) -> int:
     """Refuse what a test of n particles against ``flux`` sampled at ``points`` states per level interval
     cannot take (a flux that is not callable, too many particles or sampled states); returns ``points``."""
     integer_at_least("number of particles n", n, 1, MAX_POSITIONS)
+    fewest_points = integer_at_least("fewest_points", fewest_points, 0, MAX_POINTS)
     if not callable(flux):
         raise ParameterTypeError(f"flux must be callable (the flux Lambda of (1.1)), got {flux!r}")
-    points = integer_at_least("points", points, fewest_points, MAX_POINTS)
+    points = integer_at_least("points", points, 0, MAX_POINTS)
+    if points < fewest_points:
+        raise ValueError(f"points must be at least fewest_points = {fewest_points}, got {points}")
     if n * (points + 1) > MAX_POSITIONS:
         raise ValueError(f"{n} particles with points = {points} give {n * (points + 1):.3g} sampled states, more "
                          f"than MAX_POSITIONS = {MAX_POSITIONS:.0e}: lower points")
@@ -102,9 +121,17 @@ def mass_levels(masses, particles, order) -> tuple[np.ndarray, np.ndarray]:
     """The masses (checked: finite, positive, one per particle of ``particles``) in the sorted ``order``, and
     the levels 0 = c_0 < c_1 < ... < c_n of their partial sums (unscaled: Lambda(c_k) depends on them)."""
     masses = finite_array("masses", masses)
-    same_length(positions=particles, masses=masses)
+    n = same_length(particles=finite_array("particles", particles), masses=masses)
     if not masses.min() > 0:
         raise ValueError(f"masses must be positive, got {masses.min()} at index {int(masses.argmin())}")
+    try:
+        order = np.asarray(order)
+    except ValueError:  # ragged
+        raise ParameterTypeError(f"order must be an array of integers, got {order!r:.80}") from None
+    if order.dtype.kind not in "iu" or order.shape != (n,):
+        raise ParameterTypeError(f"order must hold one integer index per particle ({n}), got {order!r:.80}")
+    if order.min() < 0 or order.max() >= n or np.bincount(order, minlength=n).max() != 1:
+        raise ValueError(f"order must be a permutation of 0 .. {n - 1}, got {order!r:.80}")
     masses = masses[order]
     with np.errstate(over="ignore"):
         levels = finite_result("the total of the masses", np.concatenate(([0.0], np.cumsum(masses))),
@@ -144,7 +171,7 @@ def admissibility_violation(positions, velocities, flux, masses=None, points: in
     else:
         sorted_masses, levels = mass_levels(masses, positions, order)
         cluster_mass = np.add.reduceat(sorted_masses, starts)
-    level_values = flux_values(flux, levels)
+    level_values = flux_values(flux, levels, "the levels of the masses (their partial sums)")
     lower, upper = levels[starts], levels[ends]
     with np.errstate(over="ignore", invalid="ignore"):
         sigma = finite_result("a Rankine-Hugoniot speed (Lambda(u_+) - Lambda(u_-)) / (u_+ - u_-)",

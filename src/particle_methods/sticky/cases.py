@@ -8,12 +8,22 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..finite_volume.fluxes import burgers_flux, concave_flux
-from ..finite_volume.grids import l1_between_cell_functions, l1_distance_to_step_cdf
+from ..finite_volume.grids import checked_edges, l1_between_cell_functions, l1_distance_to_step_cdf
 from ..norms import cdf_antiderivative, w1_between_samples, w1_to_measure
 from ..perturbation import nudged
-from ..validation import finite_array, finite_number, finite_result, instance, integer_at_least, sorted_array
+from ..validation import (
+    ParameterTypeError,
+    finite_array,
+    finite_number,
+    finite_result,
+    instance,
+    integer_at_least,
+    nonnegative,
+    sorted_array,
+)
+from .admissibility import flux_values
 from .exact import BurgersSolution, ConcaveLaplaceSolution
-from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, median_quantiles
+from .measures import Atoms, Laplace, QuantileMeasure, averaged_quantiles, checked_measure, median_quantiles
 from .spd import spd_positions, velocities_from_flux
 
 
@@ -26,6 +36,15 @@ class ScalarCase:
     solution: Callable[[float], QuantileMeasure]
     flux_lipschitz: float
     """L_LC, the Lipschitz constant of lambda = flux' (assumption (LC))."""
+
+    def __post_init__(self):
+        checked_measure("initial", self.initial)
+        flux_values(self.flux, np.array([0.0, 1.0]), "the levels 0 and 1 of u")  # u is a CDF: its levels
+        if not callable(self.solution):
+            raise ParameterTypeError(f"solution must be callable (t -> the entropy solution's measure), got "
+                                     f"{self.solution!r}")
+        checked_measure("solution(1)", self.solution(1.0))  # one evaluation: a measure, or refused by its name
+        object.__setattr__(self, "flux_lipschitz", nonnegative("flux_lipschitz", self.flux_lipschitz))
 
     def initial_state(self, n: int):
         """Positions (2.1) and velocities (section 1.1.3) of n particles."""
@@ -95,14 +114,16 @@ def psystem_initial_cells(case: str, x0: float, x_edges) -> np.ndarray:
 def distance_to_cells(configuration, w, x_edges) -> float:
     """W1^(d) (1.10) between a configuration (d, n) and cell values w (d, cells) of the CDFs: the sum
     over types of the exact L1 distances on the grid, which must hold every particle."""
-    configuration, w = np.asarray(configuration), np.asarray(w)
-    if configuration.ndim != 2 or w.ndim != 2 or configuration.shape[0] != w.shape[0]:
+    configuration = sorted_array("configuration", configuration, ndim=2)
+    w = finite_array("w", w, ndim=2)
+    if configuration.shape[0] != w.shape[0]:
         raise ValueError(f"configuration (d, n) and w (d, cells) must have the same d, got shapes "
                          f"{configuration.shape} and {w.shape}")
-    edges = sorted_array("x_edges", x_edges)
+    edges = checked_edges(x_edges)
     if configuration.size and (configuration.min() < edges[0] or configuration.max() > edges[-1]):
-        raise ValueError(f"the particles span [{configuration.min():.6g}, {configuration.max():.6g}], beyond the grid "
-                         f"[{edges[0]:.6g}, {edges[-1]:.6g}]: widen x_edges")
+        raise ValueError(f"the particles of configuration span [{configuration.min():.6g}, "
+                         f"{configuration.max():.6g}], beyond the grid [{edges[0]:.6g}, {edges[-1]:.6g}]: "
+                         "widen x_edges")
     return sum(l1_distance_to_step_cdf(values, edges, points) for values, points in zip(w, configuration))
 
 
@@ -112,7 +133,14 @@ def cells_distance(w_a, edges_a, w_b, edges_b) -> float:
     w_a, w_b = finite_array("w_a", w_a, ndim=2), finite_array("w_b", w_b, ndim=2)
     if w_a.shape[0] != w_b.shape[0]:
         raise ValueError(f"w_a and w_b must have the same number of types d, got shapes {w_a.shape} and {w_b.shape}")
-    return float(sum(l1_between_cell_functions(a, edges_a, b, edges_b) for a, b in zip(w_a, w_b)))
+    total = 0.0
+    for gamma, (a, b) in enumerate(zip(w_a, w_b)):
+        try:
+            total += l1_between_cell_functions(a, edges_a, b, edges_b)
+        except ValueError as error:  # it names values_a and values_b: these are the rows gamma of w_a and w_b
+            kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+            raise kind(f"w_a[{gamma}] and w_b[{gamma}]: {error}") from None
+    return finite_result("the distance between w_a and w_b", total, "their rows' distances overflow in the sum")
 
 
 def cells_quantile(w, x_edges, level: float) -> float:

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..validation import ParameterTypeError, finite_array, nonnegative
-from .spd import check_reach, checked_state
+from ..validation import ParameterTypeError, finite_array, integer_at_least, nonnegative
+from .spd import MAX_POSITIONS, check_reach, checked_state
 
 
 @dataclass(frozen=True)
@@ -24,6 +24,14 @@ class HullIteration:
     before: tuple[int, ...]
     removed: tuple[int, ...]
     after: tuple[int, ...]
+
+    def __post_init__(self):
+        integer_at_least("k", self.k, 0, MAX_POSITIONS)
+        for name in ("before", "removed", "after"):
+            vertices = getattr(self, name)
+            if not isinstance(vertices, tuple) or not all(
+                    isinstance(v, (int, np.integer)) and not isinstance(v, bool) and v >= 0 for v in vertices):
+                raise ParameterTypeError(f"{name} must be a tuple of vertex indices (integers >= 0), got {vertices!r}")
 
 
 def cumulative_free_positions(x, v, t: float) -> np.ndarray:

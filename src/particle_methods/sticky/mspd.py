@@ -91,6 +91,15 @@ class ScalarLaw:
     def __init__(self, flux):
         if not callable(flux):
             raise ParameterTypeError(f"flux must be callable, got {flux!r}")
+        # One evaluation at the ends of the levels [0, 1] of a probability: a flux answering NaN, inf or no
+        # number is refused here, by its name, not inside a solver.
+        try:
+            probe = real_array("flux(u)", flux(np.array([0.0, 1.0])))
+        except (ValueError, TypeError) as error:
+            kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+            raise kind(f"flux failed at u = 0, 1: {error}") from None
+        if not np.all(np.isfinite(probe)):
+            raise ValueError(f"flux must be finite at u = 0 and 1, got {probe}")
         self.flux = flux
 
     def speed_primitive(self, gamma, levels):
@@ -100,7 +109,11 @@ class ScalarLaw:
         levels = real_array("levels", levels)
         if levels.ndim == 0 or levels.shape[-1] != 1:
             raise ValueError(f"levels must have a last axis of length d = 1 for a scalar law, got shape {levels.shape}")
-        return self.flux(levels[..., 0])
+        try:
+            return self.flux(levels[..., 0])
+        except (ValueError, TypeError) as error:  # the flux's own refusal (u^2/2 overflows): name the levels
+            kind = ParameterTypeError if isinstance(error, TypeError) else ValueError
+            raise kind(f"flux refused levels: {error}") from None
 
 
 def checked_configuration(name: str, x, system) -> np.ndarray:

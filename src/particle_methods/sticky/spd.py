@@ -34,6 +34,7 @@ from ..validation import (
     instance,
     integer_at_least,
     nonnegative,
+    real_array,
     same_length,
     sorted_array,
 )
@@ -171,6 +172,9 @@ def checked_masses(masses, x) -> np.ndarray:
     :func:`check_reach`.
     """
     masses = finite_array("masses", masses)
+    x = real_array("x", x)
+    if x.ndim == 0:
+        raise ValueError(f"x must be an array of positions, got {x!r}")
     same_length(x=x, masses=masses)
     smallest, largest = masses.min(), masses.max()
     if not smallest > 0:
@@ -194,17 +198,28 @@ def check_reach(x, speed: float, t: float, time_name: str = "t", velocity_name: 
     :func:`checked_masses`, so M <= n there too. ``x`` is sorted along its last axis (one row
     per type), named ``position_name`` in the message, and ``speed`` is max |v|.
     """
+    x = real_array(position_name, x)
+    if x.ndim == 0:
+        raise ValueError(f"{position_name} must be an array of positions, got {x!r}")
+    speed = nonnegative(f"speed (max |{velocity_name}|)", speed)
+    t = nonnegative(time_name, t)
     n = x.shape[-1]
+    if n == 0:
+        return
+    ends = np.abs(np.stack((x[..., 0], x[..., -1])))  # x is sorted: its ends bound every position
+    if not np.all(np.isfinite(ends)):
+        raise ValueError(f"{position_name} contains NaN or infinite values")
     total_mass = n if masses is None else float(masses.sum())
     with np.errstate(over="ignore"):
-        reach = max(np.abs(x[..., 0]).max(), np.abs(x[..., -1]).max()) + t * speed
+        reach = float(ends.max()) + t * speed
     limit = LARGEST / max(total_mass, 1.0) ** 2
     if not reach <= limit:
         raise ValueError(
             f"{position_name} + {time_name} {velocity_name} may overflow: |{position_name}| + {time_name} "
             f"|{velocity_name}| reaches {reach:.3g}, "
             f"above {limit:.3g} (the largest double / max(M, 1)^2, M = {total_mass:.6g} the total mass in "
-            f"particles or in scaled masses); reduce {time_name} or {velocity_name}"
+            f"particles or in scaled masses); reduce {time_name} or {velocity_name} (the speed max "
+            f"|{velocity_name}| is {speed:.3g})"
         )
 
 

@@ -30,6 +30,7 @@ from ..systems import PSystem, checked_system
 from ..validation import (
     ParameterTypeError,
     finite_number,
+    finite_values,
     in_interval,
     instance,
     integer_at_least,
@@ -140,9 +141,7 @@ def sampled_configuration(measures, n: int, rng) -> np.ndarray:
     return np.sort([m.quantile(w) for m, w in zip(measures, levels)], axis=-1)
 
 
-class SystemConstants(NamedTuple):
-    """The constants of section 4 for one diagonal system."""
-
+class _SystemConstantsFields(NamedTuple):
     d: int
     speed_bound: float
     """L_C = max_gamma sup |lambda^gamma| over [0, 1]^d (assumption (C))."""
@@ -152,6 +151,19 @@ class SystemConstants(NamedTuple):
     """L_LC, the smallest constant of assumption (LC) for the l1 distance on [0, 1]^d."""
     crossings_bound: int
     """m = ceil(2 L_C / L_USH) of (4.5)."""
+
+
+class SystemConstants(_SystemConstantsFields):
+    """The constants of section 4 for one diagonal system (the fields of :class:`_SystemConstantsFields`),
+    checked: d >= 1 types, finite L_C >= 0, L_USH and L_LC >= 0, an integer m >= 0."""
+
+    __slots__ = ()
+
+    def __new__(cls, d, speed_bound, hyperbolicity, lipschitz, crossings_bound):
+        return super().__new__(cls, integer_at_least("d", d, 1, MAX_POSITIONS),
+                               nonnegative("speed_bound", speed_bound), finite_number("hyperbolicity", hyperbolicity),
+                               nonnegative("lipschitz", lipschitz),
+                               integer_at_least("crossings_bound", crossings_bound, 0, 2**63))
 
     @property
     def constant_over_stability(self) -> float:
@@ -177,9 +189,7 @@ def psystem_constants(system: PSystem) -> SystemConstants:
                            crossings_bound=math.ceil(cosh_a))
 
 
-class CollisionRecord(NamedTuple):
-    """The iterated TSPD y_0 = x, y_l = Phi~_Delta(y_{l-1}) against the exact MSPD, step by step."""
-
+class _CollisionRecordFields(NamedTuple):
     collisions: np.ndarray
     """N_Delta(y_{l-1}) of (4.3), l = 1..L: pairs of R(y_{l-1}) that collide within Delta in the MSPD from it."""
     step_distances: np.ndarray
@@ -197,6 +207,34 @@ class CollisionRecord(NamedTuple):
     """||Phi(x; l Delta) - Phi~_Delta^l(x)||_1, l = 0..L: the left-hand side of (4.1) on the grid."""
     extent: float
     """Largest |position| of the iterates and of the MSPD: the scale of the positions."""
+
+
+def _counts(name: str, values) -> np.ndarray:
+    """Finite non-negative counts or distances, any shape, in their own dtype (integer counts stay integers)."""
+    checked = finite_values(name, values)
+    if checked.size and checked.min() < 0:
+        raise ValueError(f"{name} must be non-negative, got {checked.min()}")
+    return np.asarray(values) if np.asarray(values).dtype.kind in "iu" else checked
+
+
+class CollisionRecord(_CollisionRecordFields):
+    """The iterated TSPD y_0 = x, y_l = Phi~_Delta(y_{l-1}) against the exact MSPD, step by step (the fields of
+    :class:`_CollisionRecordFields`), checked: finite non-negative counts and distances, a finite smallest shrink
+    (+inf only with no type pair), a finite largest collision gap (-inf only if no pair collided)."""
+
+    __slots__ = ()
+
+    def __new__(cls, collisions, step_distances, pair_counts, smallest_shrink, largest_collision_gap, mspd_distances,
+                extent):
+        collisions = _counts("collisions", collisions)
+        pair_counts = _counts("pair_counts", pair_counts)
+        if not (smallest_shrink == math.inf and pair_counts.size == 0):
+            smallest_shrink = finite_number("smallest_shrink", smallest_shrink)
+        if not (largest_collision_gap == -math.inf and not collisions.any()):
+            largest_collision_gap = finite_number("largest_collision_gap", largest_collision_gap)
+        return super().__new__(cls, collisions, _counts("step_distances", step_distances), pair_counts,
+                               smallest_shrink, largest_collision_gap, _counts("mspd_distances", mspd_distances),
+                               nonnegative("extent", extent))
 
 
 def _type_pairs(d: int):
