@@ -58,8 +58,8 @@ MAX_EQUAL_MASSES = 2**22
 #: Latest time of the SPDs: their velocities carry rounding errors of about 1e-16 (a cluster at rest moves at
 #: that speed), which t multiplies; up to 1e6 they move positions of order 1 by at most about 1e-10.
 MAX_TIME = 1e6
-#: Widest span of the positions :func:`particle_velocities` takes: the pair sums square the distances between them,
-#: which overflow from 1.3e154 on (NaN velocities before issue 46).
+#: Widest span, and largest magnitude, of the positions :func:`particle_velocities` takes: the pair sums square the
+#: distances between them (and the positions), which overflow from 1.3e154 on (NaN velocities before issue 46).
 MAX_VELOCITY_SPAN = 1e150
 #: Rounding allowed in the values of F that :func:`godunov_advance` takes, relative to the mass: the robustness run's
 #: nudge (1024 units in the last place, 2.3e-13) and a rounding error of one of its own runs (clipped to [0, M]).
@@ -175,6 +175,9 @@ def particle_velocities(x, masses) -> np.ndarray:
     if not span <= MAX_VELOCITY_SPAN:
         raise ValueError(f"x spans {span:.3g}, more than MAX_VELOCITY_SPAN = {MAX_VELOCITY_SPAN:.0e}: the pair sums "
                          "square the distances, which overflow beyond 1.3e154")
+    if x.size and not np.max(np.abs(x)) <= MAX_VELOCITY_SPAN:
+        raise ValueError(f"x must lie in [-MAX_VELOCITY_SPAN, MAX_VELOCITY_SPAN] = +-{MAX_VELOCITY_SPAN:.0e}, got "
+                         f"{float(np.max(np.abs(x))):.3g}: the pair sums square the positions")
     velocity, _ = pair_sums(x[:, None], masses, *kernel_1d(KERNEL).arrays())
     return finite_result("the velocities", velocity[:, 0], "the masses are too large: their sums overflow")
 
@@ -265,10 +268,10 @@ def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: flo
     dt = positive("dt", dt)
     if times.size == 0 or np.any(np.diff(times) <= 0) or times[0] < 0:
         raise ValueError("times must be non-negative and increasing, at least one")
+    _check_ltp_run("times", float(times[-1]), dt)  # (before the steps: times / dt may overflow an integer)
     steps = np.rint(times / dt).astype(np.int64)
     if np.any(np.abs(steps * dt - times) > 1e-9 * np.maximum(times, dt)):
-        raise ValueError(f"every time must be a whole number of steps dt = {dt}, got {times}")
-    _check_ltp_run("times", float(times[-1]), dt)
+        raise ValueError(f"every entry of times must be a whole number of steps dt = {dt}, got {times}")
     run = simulate(initial_density(data), potential("newtonian"), h, dt, float(times[-1]), shape=SHAPE, method=method,
                    eps=eps, record_every=1)
     return [run.at(int(np.searchsorted(run.steps, step))) for step in steps]
@@ -325,11 +328,22 @@ def godunov_advance(edges, values, mass: float, t: float, *, cfl: float = 0.9) -
     read in [0, M] (both clipped there)."""
     mass = positive("mass", mass)
     values = finite_array("values", values)
+    edges = finite_array("edges", edges)
+    if values.size == 0 or edges.size != values.size + 1:
+        raise ValueError(f"values must hold one value per cell of edges (at least one), got {values.size} values and "
+                         f"{edges.size} edges")
     if values.size and not (values.min() >= -F_ROUNDING * mass and values.max() <= (1.0 + F_ROUNDING) * mass):
         raise ValueError(f"values must lie in [0, mass] = [0, {mass!r}] (a cumulative mass), got values from "
                          f"{float(values.min())!r} to {float(values.max())!r}")
-    u = godunov(CONCAVE, np.clip(values / mass, 0.0, 1.0), edges, mass * nonnegative("t", t), cfl=cfl, left=0.0,
-                right=1.0)
+    t = nonnegative("t", t)
+    # The scheme's own limit on its work, checked here so that the error names mass and t (its time is mass t).
+    with np.errstate(divide="ignore", over="ignore"):  # (a step that underflows to 0 needs infinitely many)
+        steps = t / np.float64(godunov_time_step(edges, mass, cfl))
+    if not steps * values.size <= MAX_CELL_STEPS:
+        raise ValueError(f"t = {t:g} with mass = {mass:g} and cfl = {cfl:g} takes {steps:.3g} steps of the scheme on "
+                         f"{values.size} cells, more than MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce t "
+                         "or the cells, or raise cfl")
+    u = godunov(CONCAVE, np.clip(values / mass, 0.0, 1.0), edges, mass * t, cfl=cfl, left=0.0, right=1.0)
     return mass * np.clip(u, 0.0, 1.0)
 
 
@@ -339,4 +353,9 @@ def godunov_time_step(edges, mass: float, cfl: float = 0.9) -> float:
     edges = finite_array("edges", edges)
     if edges.size < 2:
         raise ValueError(f"edges must hold at least two values, got {edges.size}")
-    return cfl_time_step(CONCAVE, 0.0, 1.0, edges[1] - edges[0], positive("cfl", cfl)) / positive("mass", mass)
+    width = edges[1] - edges[0]
+    if not width > 0.0:
+        raise ValueError(f"edges must increase: the first cell's width is {width!r}")
+    with np.errstate(over="ignore"):  # an overflow is reported just below
+        step = cfl_time_step(CONCAVE, 0.0, 1.0, width, positive("cfl", cfl)) / positive("mass", mass)
+    return finite_result("the time step", step, "mass is too small: cfl dx / mass overflows")
