@@ -127,7 +127,7 @@ ENTRIES = {
         "level_position": POLYNOMIAL.level_position}, accepts={"name": ["1"], "radius": [np.inf]},
         documented=lambda shape: (shape.mass, shape.peak)),  # a label: any text; radius inf: an unbounded support
     PM + "cross.profiles.monotone_root": E(profiles.monotone_root, {
-        "function": np.tanh, "derivative": lambda s: 1.0 / np.cosh(s) ** 2, "target": A([0.0, 0.5]),
+        "function": np.tanh, "derivative": lambda s: 1.0 - np.tanh(s) ** 2, "target": A([0.0, 0.5]),
         "low": A([-1.0, -1.0]), "high": A([1.0, 1.0])}),
     PM + "cross.profiles.profile": E(profiles.profile, {"data": "smooth20"}),
 }

@@ -111,7 +111,8 @@ def _level_means(values, rows, masses, level_range):
     levels = np.concatenate((np.zeros((rows.shape[0], 1)), np.cumsum(masses[order], axis=1)), axis=1)
     # (a range may end at the total mass, which the running sum of n masses reaches only to n rounding errors)
     if hi > levels[:, -1].min() * (1.0 + max(1e-12, 4.0 * masses.size * np.finfo(float).eps)):
-        raise ValueError(f"ranges reach above the total mass {levels[0, -1]!r} of the masses: {list(level_range)}")
+        raise ValueError(f"ranges reach above the total mass {float(levels[0, -1])!r} of the masses: "
+                         f"{[float(level) for level in level_range]}")
     overlap = np.clip(np.minimum(levels[:, 1:], hi) - np.maximum(levels[:, :-1], lo), 0.0, None)
     with np.errstate(over="ignore", invalid="ignore"):
         return np.sum(overlap * np.take_along_axis(values, order, axis=1), axis=1) / (hi - lo)
@@ -201,7 +202,8 @@ def heavy_clusters(positions, masses, share: float) -> np.ndarray:
     share = positive("share", share)
     values, index = np.unique(x, return_inverse=True)
     totals = np.bincount(index.ravel(), weights=m)
-    return values[totals >= share * m.sum()]
+    with np.errstate(over="ignore"):  # (a share beyond the double range: no cluster holds it)
+        return values[totals >= share * m.sum()]
 
 
 def spd_merger(x0, velocities, masses, low: float, high: float, share: float) -> float:

@@ -139,7 +139,8 @@ class Bump:
         return offset / np.where(offset < 0.0, self.radius, self.right_radius)
 
     def _density(self, a):
-        return self.height * self.unit(self._scaled(a))
+        # (s clipped to [-2, 2], where the bump is 0 beyond +-1: far positions overflow s to +-inf)
+        return self.height * self.unit(np.clip(self._scaled(a), -2.0, 2.0))
 
     def _left_integrals(self, a):
         """(int_{-inf}^a of the bump, int_{-inf}^a x times the bump), with s = scaled(a), r = radius and
