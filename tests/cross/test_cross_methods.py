@@ -274,3 +274,14 @@ def test_issue_46_particle_velocities_refuse_positions_beyond_the_span_limit():
 def test_issue_46_ltp_paths_check_the_last_time_before_counting_steps():
     with pytest.raises(ValueError, match="times / dt = 2e\\+300 steps"):
         methods.ltp_paths("smooth20", 0.25, 0.125, [0.0, 2.5e299])  # an overflowing cast and an unclear error before
+
+
+def test_issue_46_single_time_methods_name_their_t_in_the_limits():
+    for call in (lambda: methods.particle_method("smooth20", 0.25, 1e300),
+                 lambda: methods.blob_method("smooth20", 0.25, 1e300, order=4, q=0.9)):
+        with pytest.raises(ValueError, match="t = 1e\\+300 is beyond the particle solver's MAX_TIME"):
+            call()  # "times must end by MAX_TIME" before: the solver's parameter
+    with pytest.raises(ValueError, match="t up to 1e\\+300 on 8 cells need"):
+        methods.godunov_mass("smooth20", 8, 1e300)
+    with pytest.raises(ValueError, match="times up to 1e\\+300 on 8 cells need"):
+        methods.godunov_paths("smooth20", 8, [1e300])

@@ -30,6 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..blob.checks import MAX_PARTICLES
+from ..blob.checks import MAX_TIME as MAX_BLOB_TIME
 from ..blob.kernels import kernel_1d
 from ..blob.mollifiers import mollifier
 from ..blob.pair_sums import pair_sums
@@ -201,15 +202,24 @@ def spd_grid(data, h: float, t: float):
 def particle_method(data, h: float, t: float, *, rtol: float = 1e-12, atol: float = 1e-14):
     """(positions, masses) of the blob paper's particle method at t (before the first collision)."""
     x, density, masses = grid_particles(data, h)
-    run = integrate_particles(x[:, None], density, masses, kernel_1d(KERNEL), [nonnegative("t", t)],
+    run = integrate_particles(x[:, None], density, masses, kernel_1d(KERNEL), [_blob_time(t)],
                               with_density=False, rtol=rtol, atol=atol, h=h)
     return run.positions[-1, :, 0], masses
 
 
 def blob_method(data, h: float, t: float, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
     """(positions, masses) of the blob method with the mollifier of ``order`` and delta = h^q at t."""
-    positions, masses = blob_paths(data, h, [nonnegative("t", t)], order=order, q=q, rtol=rtol, atol=atol)
+    positions, masses = blob_paths(data, h, [_blob_time(t)], order=order, q=q, rtol=rtol, atol=atol)
     return positions[-1], masses
+
+
+def _blob_time(t) -> float:
+    """The time of one particle or blob run, checked here so that the errors name ``t``, not the solver's times."""
+    t = nonnegative("t", t)
+    if t > MAX_BLOB_TIME:
+        raise ValueError(f"t = {t:g} is beyond the particle solver's MAX_TIME = {MAX_BLOB_TIME:g} (a limit on the "
+                         "work of one run)")
+    return t
 
 
 def blob_paths(data, h: float, times, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
@@ -280,12 +290,17 @@ def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: flo
 def godunov_mass(data, cells: int, t: float, *, cfl: float = 0.9):
     """(edges, F values) of Godunov's scheme for F on ``cells`` cells of [-1, 1] at time t, started
     from the exact cell averages of F0 (ghost states 0 and M)."""
-    return godunov_paths(data, cells, [nonnegative("t", t)], cfl=cfl)[0]
+    return _godunov_paths(data, cells, [nonnegative("t", t)], cfl, "t")[0]
 
 
 def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     """(edges, F values) of :func:`godunov_mass` at each of the increasing ``times``, from one run (each stretch
     ends with a step shortened to land on its time)."""
+    return _godunov_paths(data, cells, times, cfl, "times")
+
+
+def _godunov_paths(data, cells: int, times, cfl: float, name: str):
+    """:func:`godunov_paths`, whose limit on the steps names the caller's parameter ``name`` (``t`` or ``times``)."""
     _grid_density(data)  # supported in [-1, 1]
     cells = integer_at_least("cells", cells, 1, MAX_CELLS)
     if isinstance(times, np.ndarray):  # from the shape, before any copy of the times
@@ -300,8 +315,8 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     with np.errstate(divide="ignore"):  # (a step that underflows to 0 needs infinitely many)
         steps = times[-1] / np.float64(godunov_time_step(edges, initial.mass, cfl))
     if steps * cells > MAX_CELL_STEPS:
-        raise ValueError(f"times up to {times[-1]:g} on {cells} cells need {steps:.3g} steps of the scheme, more than "
-                         f"MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce the times or cells or raise cfl")
+        raise ValueError(f"{name} up to {times[-1]:g} on {cells} cells need {steps:.3g} steps of the scheme, more than "
+                         f"MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce {name} or the cells or raise cfl")
     # The exact cell averages of F0, in [0, M] (their differences' rounding, about eps M / dx, clipped).
     values = nudged(np.clip(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges), 0.0, initial.mass))
     out, now = [], 0.0
