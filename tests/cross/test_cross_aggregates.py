@@ -164,3 +164,26 @@ def test_bad_inputs_are_refused(call, match):
 def test_a_wrong_solution_type_is_refused():
     with pytest.raises(TypeError, match="solution"):
         agg.level_ranges("two_bumps")
+
+
+def test_issue_46_spd_merger_and_level_means_name_their_parameters():
+    x0, velocities, masses = np.array([-0.5, 0.5]), np.array([0.5, -0.5]), np.array([1.0, 1.0])
+    assert agg.spd_merger(x0, velocities, masses, 0.5, 1.5, 0.4) == 1.0
+    for arguments, message in [((None, velocities, masses), "x0 must be an array"),
+                               ((x0[::-1], velocities, masses), "x0 must be sorted"),
+                               ((x0, velocities[:1], masses), "x0 has 2, velocities has 1"),
+                               ((x0, velocities.astype(complex), masses), "velocities must hold real numbers"),
+                               ((np.full(2, 1e300), velocities, masses), "SPD of x0 and velocities")]:
+        with pytest.raises(ValueError, match=message):
+            agg.spd_merger(*arguments, 0.5, 1.5, 0.4)  # errors naming spd_positions' x and v, or only low and high
+    with pytest.raises(ValueError, match="share = 1.7e\\+308 of the masses"):
+        agg.spd_merger(x0, velocities, masses, 0.5, 1.5, 1.7e308)
+    with pytest.raises(ValueError, match="total mass 0.0 of the masses"):
+        agg.level_centres(x0, np.zeros(2), [[0.0, 0.8]])
+
+
+def test_issue_46_godunov_merger_caps_its_chunk_and_names_its_cells():
+    with pytest.raises(ValueError, match="chunk must be at most"):
+        agg.godunov_merger("two_bumps", 64, 1.5, 2.5, chunk=10**49)  # OverflowError before
+    with pytest.raises(ValueError, match="one of cells = 3"):
+        agg.godunov_merger("two_bumps", 3, 1.5, 2.5)

@@ -249,3 +249,11 @@ def test_w1_smooth_refusals():
         distances.w1_smooth(solution, solution.cdf, [0.0, 1.0], 0.0)
     with pytest.raises(ValueError, match="pieces"):
         distances.w1_smooth(solution, solution.cdf, [0.0, 1.0], 1e-9)
+
+
+def test_issue_46_w1_smooth_names_cumulative_and_breaks():
+    solution = AggregationSolution("smooth20", 0.5)
+    with pytest.raises(ValueError, match="cumulative returned NaN"):
+        distances.w1_smooth(solution, lambda x: np.full(x.shape, np.nan), [-1.5, 0.0, 1.5], 0.5)
+    with pytest.raises(ValueError, match="the breaks' span"):
+        distances.w1_smooth(solution, solution.cdf, [-1.5e300, 0.0, 1.5e300], 0.5)

@@ -306,3 +306,33 @@ def test_monotone_root_bisects_where_newton_crawls():
     root = monotone_root(function, lambda x: 21.0 * (1.0 + x) ** 20, target, np.array([-1.0]), np.array([0.0]))
     assert root[0] == pytest.approx(-1.0 + 1e-30 ** (1.0 / 21.0), rel=1e-14)
     assert len(calls) <= 30
+
+
+def test_issue_46_monotone_root_checks_its_functions_targets_and_bracket():
+    derivative = lambda s: 1.0 - np.tanh(s) ** 2  # noqa: E731
+    nan = lambda s: np.full(s.shape, np.nan)  # noqa: E731
+    assert monotone_root(np.tanh, derivative, [0.0], -1.0, 1.0)[0] == 0.0
+    for arguments, message in [((None, derivative, [0.0], -1.0, 1.0), "function must be callable"),
+                               ((np.tanh, "x", [0.0], -1.0, 1.0), "derivative must be callable"),
+                               ((nan, derivative, [0.0], -1.0, 1.0), "function returned"),
+                               ((np.tanh, nan, [0.5], -1.0, 1.0), "derivative returned"),
+                               ((np.tanh, derivative, [1.0, np.nan], -1.0, 1.0), "target contains NaN"),
+                               ((np.tanh, derivative, [0.0, 0.5], [-1.0, -1.0, -1.0], 1.0), "low must be a number or "
+                                "of the shape"),
+                               ((np.tanh, derivative, [0.0], -1.0, [1 + 1j]), "high must hold real numbers")]:
+        with pytest.raises(ValueError, match=message):
+            monotone_root(*arguments)  # a root of NaN, a complex cast or an unclear error before
+
+
+def test_issue_46_a_profile_probes_its_functions_and_radius():
+    from particle_methods.cross.profiles import PROFILES, Profile
+
+    shape = PROFILES["smooth20"]
+    fields = {"name": "p", "mass": shape.mass, "peak": shape.peak, "radius": 1.0, "density": shape.density,
+              "mass_from_origin": shape.mass_from_origin, "moment_from_left": shape.moment_from_left,
+              "level_position": shape.level_position}
+    assert Profile(**fields).radius == 1.0
+    with pytest.raises(ValueError, match="density must return finite real values"):
+        Profile(**{**fields, "density": lambda x: np.full(np.shape(x), np.nan)})  # NaN in every solution before
+    with pytest.raises(ValueError, match="radius is beyond the double-precision range"):
+        Profile(**{**fields, "radius": 10**400})

@@ -253,3 +253,32 @@ def test_no_false_aggregate_at_the_gap_between_the_skewed_bumps():
     merger = merger_time("skewed_bumps", 0.9, 1.5)
     for t in np.concatenate((np.linspace(0.78, merger - 1e-3, 60), merger - np.array([0.2, 0.1, 0.05]))):
         assert HullSolution("skewed_bumps", float(t)).aggregates[0].size == 2, t
+
+
+def test_issue_46_bump_methods_check_their_positions_index_and_time():
+    bump = Bump(2.0, -0.4, 0.3, 2)
+    for call, message in [(lambda: bump.scaled(None), "a must be an array"),
+                          (lambda: bump.density(np.array([1.0, np.nan])), "a contains NaN"),
+                          (lambda: bump.left_integrals(np.broadcast_to(0.0, (10**9,))), "a has 1000000000"),
+                          (lambda: bump.scaled(np.array([-1.7e308])), "a is too far from the centre"),
+                          (lambda: bump.dense_interval(np.nan), "t must be finite"),
+                          (lambda: bump.dense_interval(True), "t must be a real number"),
+                          (lambda: TWO_BUMPS.in_bump(2, np.array([0.5])), "index must be at most 1"),
+                          (lambda: TWO_BUMPS.in_bump(True, np.array([0.5])), "index must be an integer"),
+                          (lambda: TWO_BUMPS.in_bump(1, np.array([1 + 1j])), "a must hold real numbers")]:
+        with pytest.raises(ValueError, match=message):
+            call()  # NaN, a complex cast, an 8 GB copy, IndexError or an unclear TypeError before
+    assert bump.density(np.array([-1.7e308]))[0] == 0.0  # far from the centre: outside the bump, no overflow
+    np.testing.assert_array_equal(bump.left_integrals(np.array([-1e300, 1e300]))[0], [0.0, bump.mass])
+
+
+def test_issue_46_hull_work_and_aggregate_paths_name_their_parameters():
+    from particle_methods.cross.hull import check_hull_work
+
+    for call, message in [(lambda: check_hull_work(None, 1), "data must be of type BumpData"),
+                          (lambda: check_hull_work(TWO_BUMPS, np.nan, "times"), "times must be an integer"),
+                          (lambda: check_hull_work(TWO_BUMPS, -10**49, "times"), "times must be at least 0"),
+                          (lambda: aggregate_paths("two_bumps", np.array([1e300])), "times must lie in \\[0, MAX_TIME"),
+                          (lambda: aggregate_paths("two_bumps", np.array([-0.5])), "times must lie in")]:
+        with pytest.raises(ValueError, match=message):
+            call()  # AttributeError, NaN accepted, or an error naming HullSolution's t before

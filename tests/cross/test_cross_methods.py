@@ -251,3 +251,37 @@ def test_ltp_paths_match_separate_runs_and_refuse_times_off_the_steps():
         methods.ltp_paths("two_bumps", h, h / 2, [0.0, 0.2501])
     with pytest.raises(ValueError, match="increasing"):
         methods.ltp_paths("two_bumps", h, h / 2, [0.25, 0.0])
+
+
+def test_issue_46_godunov_advance_and_time_step_check_edges_values_and_work():
+    edges, values = np.linspace(-1.0, 1.0, 9), np.linspace(0.02, 0.37, 8)
+    for call, message in [(lambda: methods.godunov_advance(edges, [], 0.389, 0.1), "values must hold one value per "
+                           "cell of edges"),
+                          (lambda: methods.godunov_advance(edges, values, 1e300, 0.1), "with mass = 1e\\+300"),
+                          (lambda: methods.godunov_advance(edges, values, 0.389, 0.1, cfl=1e-300), "cfl = 1e-300"),
+                          (lambda: methods.godunov_time_step(np.zeros(9), 0.389), "edges must increase"),
+                          (lambda: methods.godunov_time_step(edges, 5e-324), "mass is too small")]:
+        with pytest.raises(ValueError, match=message):
+            call()  # errors naming godunov's u0, dx or t (its time is mass t), or an infinite step, before
+
+
+def test_issue_46_particle_velocities_refuse_positions_beyond_the_span_limit():
+    with pytest.raises(ValueError, match="x must lie in \\[-MAX_VELOCITY_SPAN"):
+        methods.particle_velocities(np.full(4, 1e300), np.full(4, 0.1))  # "the masses are too large" before
+    np.testing.assert_array_equal(methods.particle_velocities(np.full(2, 1e150), np.full(2, 0.1)), [0.0, 0.0])
+
+
+def test_issue_46_ltp_paths_check_the_last_time_before_counting_steps():
+    with pytest.raises(ValueError, match="times / dt = 2e\\+300 steps"):
+        methods.ltp_paths("smooth20", 0.25, 0.125, [0.0, 2.5e299])  # an overflowing cast and an unclear error before
+
+
+def test_issue_46_single_time_methods_name_their_t_in_the_limits():
+    for call in (lambda: methods.particle_method("smooth20", 0.25, 1e300),
+                 lambda: methods.blob_method("smooth20", 0.25, 1e300, order=4, q=0.9)):
+        with pytest.raises(ValueError, match="t = 1e\\+300 is beyond the particle solver's MAX_TIME"):
+            call()  # "times must end by MAX_TIME" before: the solver's parameter
+    with pytest.raises(ValueError, match="t up to 1e\\+300 on 8 cells need"):
+        methods.godunov_mass("smooth20", 8, 1e300)
+    with pytest.raises(ValueError, match="times up to 1e\\+300 on 8 cells need"):
+        methods.godunov_paths("smooth20", 8, [1e300])

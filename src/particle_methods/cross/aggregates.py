@@ -33,6 +33,7 @@ from ..validation import (
     nonnegative,
     positive,
     same_length,
+    sorted_array,
 )
 from . import methods
 from .hull import HullSolution, bump_data
@@ -110,7 +111,8 @@ def _level_means(values, rows, masses, level_range):
     levels = np.concatenate((np.zeros((rows.shape[0], 1)), np.cumsum(masses[order], axis=1)), axis=1)
     # (a range may end at the total mass, which the running sum of n masses reaches only to n rounding errors)
     if hi > levels[:, -1].min() * (1.0 + max(1e-12, 4.0 * masses.size * np.finfo(float).eps)):
-        raise ValueError(f"ranges reach above the total mass {levels[0, -1]!r}: {list(level_range)}")
+        raise ValueError(f"ranges reach above the total mass {float(levels[0, -1])!r} of the masses: "
+                         f"{[float(level) for level in level_range]}")
     overlap = np.clip(np.minimum(levels[:, 1:], hi) - np.maximum(levels[:, :-1], lo), 0.0, None)
     with np.errstate(over="ignore", invalid="ignore"):
         return np.sum(overlap * np.take_along_axis(values, order, axis=1), axis=1) / (hi - lo)
@@ -200,7 +202,8 @@ def heavy_clusters(positions, masses, share: float) -> np.ndarray:
     share = positive("share", share)
     values, index = np.unique(x, return_inverse=True)
     totals = np.bincount(index.ravel(), weights=m)
-    return values[totals >= share * m.sum()]
+    with np.errstate(over="ignore"):  # (a share beyond the double range: no cluster holds it)
+        return values[totals >= share * m.sum()]
 
 
 def spd_merger(x0, velocities, masses, low: float, high: float, share: float) -> float:
@@ -209,9 +212,16 @@ def spd_merger(x0, velocities, masses, low: float, high: float, share: float) ->
     low, high = nonnegative("low", low), nonnegative("high", high)
     if not low < high:
         raise ValueError(f"need low < high, got {low} and {high}")
+    # Checked here, so that the errors name this function's parameters, not spd_positions' x and v.
+    x0 = sorted_array("x0", x0)
+    velocities = finite_array("velocities", velocities)
+    same_length(x0=x0, velocities=velocities)
+    _atoms(x0, masses)
+    share = positive("share", share)
     count = lambda t: heavy_clusters(spd_positions(x0, velocities, t, masses=masses), masses, share).size  # noqa: E731
     if not (count(low) >= 2 and count(high) == 1):
-        raise ValueError(f"low = {low} and high = {high} must bracket a drop from two heavy clusters to one")
+        raise ValueError(f"low = {low} and high = {high} must bracket a drop from two heavy clusters (holding share = "
+                         f"{share} of the masses each) to one in the SPD of x0 and velocities")
     while True:
         middle = 0.5 * (low + high)
         if middle in (low, high):
@@ -226,7 +236,7 @@ def godunov_merger(data, cells: int, low: float, high: float, *, cfl: float = 0.
     crossing interpolated between two steps (:func:`first_within`). ValueError if low and high do not bracket such
     a time (two exact aggregates at low, more than a cell apart; within a cell by high)."""
     cells = integer_at_least("cells", cells, 1, MAX_CELLS)
-    chunk = integer_at_least("chunk", chunk, 1)
+    chunk = integer_at_least("chunk", chunk, 1, MAX_GAP_READINGS)  # (more steps a chunk: fewer readings than chunk)
     low, high = nonnegative("low", low), nonnegative("high", high)
     if not low < high:
         raise ValueError(f"need low < high, got {low} and {high}")
@@ -265,4 +275,4 @@ def godunov_merger(data, cells: int, low: float, high: float, *, cfl: float = 0.
                 break
             return crossing
         t, values, last = t + chunk * step, following, gap(following)
-    raise ValueError(f"the aggregates do not come within a cell by high = {high}")
+    raise ValueError(f"the aggregates do not come within a cell (one of cells = {cells}) by high = {high}")

@@ -96,9 +96,9 @@ def w1_smooth(solution, cumulative: Callable, breaks, largest: float) -> float:
     with np.errstate(over="ignore"):
         pieces = float(np.ceil((breaks[-1] - breaks[0]) / largest)) + breaks.size
     if not pieces <= MAX_PIECES:
-        raise ValueError(f"largest = {largest:g} cuts [{breaks[0]:g}, {breaks[-1]:g}] into about {pieces:.3g} "
-                         f"pieces, more than MAX_PIECES = {MAX_PIECES} (each takes {GAUSS_NODES + 2} samples): raise "
-                         "largest")
+        raise ValueError(f"largest = {largest:g} cuts the breaks' span [{breaks[0]:g}, {breaks[-1]:g}] into about "
+                         f"{pieces:.3g} pieces, more than MAX_PIECES = {MAX_PIECES} (each takes {GAUSS_NODES + 2} "
+                         "samples): raise largest")
     kinks = [k for k in solution.kinks if breaks[0] < k < breaks[-1]]
     grid = _pieces(np.union1d(breaks, kinks), largest)
 
@@ -107,6 +107,8 @@ def w1_smooth(solution, cumulative: Callable, breaks, largest: float) -> float:
         if np.iscomplexobj(values) or values.shape != x.shape:
             raise ParameterTypeError(f"cumulative must return one real value per point, got {values.dtype} of shape "
                                      f"{values.shape}")
+        if not np.all(np.isfinite(values)):
+            raise ValueError("cumulative returned NaN or infinite values (a cumulative mass lies in [0, M])")
         return solution.cdf(x) - values
 
     a, b = grid[:-1], grid[1:]

@@ -47,6 +47,7 @@ from ..validation import (
     finite_values,
     in_interval,
     instance,
+    integer_at_least,
     nonnegative,
     one_of,
     positive,
@@ -68,6 +69,11 @@ JUMP_SHARE = 1e-13
 #: sqrt(rounding / rho) rho, 1e-8 of the mass): the tails of two bumps that first touch are one aggregate only once it
 #: holds this share of the mass.
 GAP_JUMP_SHARE = 1e-6
+
+
+def _positions(a) -> np.ndarray:
+    """Finite positions ``a``, at most :data:`~particle_methods.cross.profiles.MAX_POINTS` of them."""
+    return limited("a", finite_values("a", a))
 
 
 @dataclass(frozen=True)
@@ -111,21 +117,39 @@ class Bump:
         return self.height * 0.5 * (self.radius + self.right_radius) * self._unit_mass
 
     def scaled(self, a):
-        """s = (a - centre)/radius left of the centre, (a - centre)/right_radius from it on."""
+        """s = (a - centre)/radius left of the centre, (a - centre)/right_radius from it on (``a`` finite)."""
+        with np.errstate(over="ignore"):  # an overflow is reported just below
+            s = self._scaled(_positions(a))
+        return finite_result("s", s, "a is too far from the centre: (a - centre)/radius overflows")
+
+    def density(self, a):
+        """The bump's density at the finite positions ``a``."""
+        with np.errstate(over="ignore"):  # (far from the centre s overflows to +-inf, where the density is 0)
+            return self._density(_positions(a))
+
+    def left_integrals(self, a):
+        """:meth:`_left_integrals` at the finite positions ``a``."""
+        with np.errstate(over="ignore"):  # (far from the centre s overflows to +-inf: clipped to +-1)
+            return self._left_integrals(_positions(a))
+
+    # The unchecked versions, for the positions of this module's own root iterations (inside the bump's support).
+
+    def _scaled(self, a):
         offset = np.asarray(a, dtype=np.float64) - self.centre
         return offset / np.where(offset < 0.0, self.radius, self.right_radius)
 
-    def density(self, a):
-        return self.height * self.unit(self.scaled(a))
+    def _density(self, a):
+        # (s clipped to [-2, 2], where the bump is 0 beyond +-1: far positions overflow s to +-inf)
+        return self.height * self.unit(np.clip(self._scaled(a), -2.0, 2.0))
 
-    def left_integrals(self, a):
+    def _left_integrals(self, a):
         """(int_{-inf}^a of the bump, int_{-inf}^a x times the bump), with s = scaled(a), r = radius and
         k = right_radius/r right of the centre (k = 1 left of it), m_1(s) = int_0^s (1 - u^2)^p du and
         I(s) = int_{-1}^s u (1 - u^2)^p du: c r (M_1/2 + k m_1(s)) and
         c r (centre (M_1/2 + k m_1(s)) + r (k^2 I(s) + (1 - k^2) I(0))) (the right half is the unit bump
         stretched by right_radius: its mass and first moment about the centre scale by k and k^2). For the
         symmetric bump k = 1 and the two are c r (M_1/2 + m_1(s)) and c r (centre (M_1/2 + m_1(s)) + r I(s))."""
-        s = np.clip(self.scaled(a), -1.0, 1.0)
+        s = np.clip(self._scaled(a), -1.0, 1.0)
         stretch = np.where(s > 0.0, self.right_radius / self.radius, 1.0)
         left = 0.5 * self._unit_mass + stretch * self.unit.mass_from_origin(s)
         square = stretch * stretch
@@ -136,7 +160,7 @@ class Bump:
     def dense_interval(self, t: float):
         """The a where t rho0(a) > 1, as (low, high), or None:
         (1 - s^2)^p > 1/(c t) for |s| < sqrt(1 - (c t)^(-1/p)), scaled by each side's radius."""
-        ct = self.height * t
+        ct = self.height * nonnegative("t", t)
         if ct <= 1.0:
             return None
         half = 1.0 if self.power == 0 else math.sqrt(-math.expm1(-math.log(ct) / self.power))
@@ -160,7 +184,7 @@ class BumpData:
         masses = np.array([b.mass for b in self.bumps])
         object.__setattr__(self, "_before", np.concatenate(([0.0], np.cumsum(masses)[:-1])))
         object.__setattr__(self, "_moments_before", np.concatenate(
-            ([0.0], np.cumsum([b.left_integrals(b.right_end)[1] for b in self.bumps])[:-1])))
+            ([0.0], np.cumsum([b._left_integrals(b.right_end)[1] for b in self.bumps])[:-1])))
 
     @property
     def mass(self) -> float:
@@ -176,19 +200,25 @@ class BumpData:
 
     def density(self, x):
         x = limited("x", finite_values("x", x))
-        return sum(b.density(x) for b in self.bumps)
+        return sum(b._density(x) for b in self.bumps)
 
     def cdf(self, x):
         """F_0(x) = int_{-inf}^x rho0, exact: the bumps' masses before x plus the part of the bump holding x."""
         x = limited("x", finite_values("x", x))
         value = np.zeros(x.shape)
         for index, bump in enumerate(self.bumps):
-            value = np.where(x >= bump.left_end, self._before[index] + bump.left_integrals(x)[0], value)
+            value = np.where(x >= bump.left_end, self._before[index] + bump._left_integrals(x)[0], value)
         return value
 
     def in_bump(self, index: int, a):
         """(F_0(a), int_{-inf}^a s rho0(s) ds) for a in the support of bump ``index``."""
-        mass, moment = self.bumps[index].left_integrals(a)
+        index = integer_at_least("index", index, 0, len(self.bumps) - 1)
+        with np.errstate(over="ignore"):  # (far from the centre s overflows to +-inf: clipped to +-1)
+            return self._in_bump(index, _positions(a))
+
+    def _in_bump(self, index: int, a):
+        """:meth:`in_bump` unchecked, for the positions of this module's own root iterations."""
+        mass, moment = self.bumps[index]._left_integrals(a)
         return self._before[index] + mass, self._moments_before[index] + moment
 
 
@@ -216,7 +246,10 @@ BUMP_DATA = {"two_bumps": TWO_BUMPS, "skewed_bumps": SKEWED_BUMPS}
 
 
 def check_hull_work(data: BumpData, solutions: int, name: str = "data") -> None:
-    """Refuse ``solutions`` exact solutions of ``data`` beyond :data:`MAX_HULL_WORK` (b^2 units each, b bumps)."""
+    """Refuse ``solutions`` exact solutions of ``data`` (a :class:`BumpData`) beyond :data:`MAX_HULL_WORK` (b^2 units
+    each, b bumps); ``name`` is the caller's parameter that asks for them, which the errors name."""
+    instance("data", data, BumpData)
+    solutions = integer_at_least(name, solutions, 0)
     work = solutions * len(data.bumps) ** 2
     if work > MAX_HULL_WORK:
         raise ValueError(f"{name} ask for {solutions} exact solution(s) of {len(data.bumps)} bumps, {work} units of "
@@ -290,7 +323,7 @@ class HullSolution:
 
     def _levels(self, piece, a):
         """(w, Psi_t(w), Y_t(w)) at the positions a of a piece."""
-        w, moment = self.data.in_bump(piece.bump, a)
+        w, moment = self.data._in_bump(piece.bump, a)
         t, mass = self.t, self.mass
         return w, moment + t * (0.5 * mass * w - 0.5 * w * w), a + t * (0.5 * mass - w)
 
@@ -306,7 +339,7 @@ class HullSolution:
         inside = (x > y0) & (x < y1)
         a = np.where(x <= y0, piece.a0, piece.a1)
         if np.any(inside):
-            a[inside] = monotone_root(flight, lambda s: 1.0 - self.t * bump.density(s), x[inside], piece.a0, piece.a1)
+            a[inside] = monotone_root(flight, lambda s: 1.0 - self.t * bump._density(s), x[inside], piece.a0, piece.a1)
         w, psi, _ = self._levels(piece, a)
         return x * w - psi, w
 
@@ -387,7 +420,7 @@ class HullSolution:
                 continue
             low, high = bump.left_end, bump.right_end
             level = w[mine]
-            a = monotone_root(lambda s, b=b: data.in_bump(b, s)[0], bump.density, level, np.full(level.size, low),
+            a = monotone_root(lambda s, b=b: data._in_bump(b, s)[0], bump._density, level, np.full(level.size, low),
                               np.full(level.size, high))
             # The bump's first and last levels sit at its ends (F_0 is flat there: a root would be any point of
             # the flat tail to rounding).
@@ -428,6 +461,9 @@ def aggregate_paths(data, times):
     if times.ndim != 1 or times.size == 0:
         raise ValueError(f"times must be a non-empty 1D array, got shape {times.shape}")
     check_hull_work(data, times.size, "times")
+    if times.min() < 0.0 or times.max() > MAX_TIME:
+        raise ValueError(f"times must lie in [0, MAX_TIME = {MAX_TIME:g}], got times from {times.min():g} to "
+                         f"{times.max():g}")
     solutions = [HullSolution(data, float(t)) for t in times]
     return [s.aggregates[0] for s in solutions], [s.aggregates[1] for s in solutions]
 

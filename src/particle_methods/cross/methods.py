@@ -30,6 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..blob.checks import MAX_PARTICLES
+from ..blob.checks import MAX_TIME as MAX_BLOB_TIME
 from ..blob.kernels import kernel_1d
 from ..blob.mollifiers import mollifier
 from ..blob.pair_sums import pair_sums
@@ -58,8 +59,8 @@ MAX_EQUAL_MASSES = 2**22
 #: Latest time of the SPDs: their velocities carry rounding errors of about 1e-16 (a cluster at rest moves at
 #: that speed), which t multiplies; up to 1e6 they move positions of order 1 by at most about 1e-10.
 MAX_TIME = 1e6
-#: Widest span of the positions :func:`particle_velocities` takes: the pair sums square the distances between them,
-#: which overflow from 1.3e154 on (NaN velocities before issue 46).
+#: Widest span, and largest magnitude, of the positions :func:`particle_velocities` takes: the pair sums square the
+#: distances between them (and the positions), which overflow from 1.3e154 on (NaN velocities before issue 46).
 MAX_VELOCITY_SPAN = 1e150
 #: Rounding allowed in the values of F that :func:`godunov_advance` takes, relative to the mass: the robustness run's
 #: nudge (1024 units in the last place, 2.3e-13) and a rounding error of one of its own runs (clipped to [0, M]).
@@ -175,6 +176,9 @@ def particle_velocities(x, masses) -> np.ndarray:
     if not span <= MAX_VELOCITY_SPAN:
         raise ValueError(f"x spans {span:.3g}, more than MAX_VELOCITY_SPAN = {MAX_VELOCITY_SPAN:.0e}: the pair sums "
                          "square the distances, which overflow beyond 1.3e154")
+    if x.size and not np.max(np.abs(x)) <= MAX_VELOCITY_SPAN:
+        raise ValueError(f"x must lie in [-MAX_VELOCITY_SPAN, MAX_VELOCITY_SPAN] = +-{MAX_VELOCITY_SPAN:.0e}, got "
+                         f"{float(np.max(np.abs(x))):.3g}: the pair sums square the positions")
     velocity, _ = pair_sums(x[:, None], masses, *kernel_1d(KERNEL).arrays())
     return finite_result("the velocities", velocity[:, 0], "the masses are too large: their sums overflow")
 
@@ -198,15 +202,24 @@ def spd_grid(data, h: float, t: float):
 def particle_method(data, h: float, t: float, *, rtol: float = 1e-12, atol: float = 1e-14):
     """(positions, masses) of the blob paper's particle method at t (before the first collision)."""
     x, density, masses = grid_particles(data, h)
-    run = integrate_particles(x[:, None], density, masses, kernel_1d(KERNEL), [nonnegative("t", t)],
+    run = integrate_particles(x[:, None], density, masses, kernel_1d(KERNEL), [_blob_time(t)],
                               with_density=False, rtol=rtol, atol=atol, h=h)
     return run.positions[-1, :, 0], masses
 
 
 def blob_method(data, h: float, t: float, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
     """(positions, masses) of the blob method with the mollifier of ``order`` and delta = h^q at t."""
-    positions, masses = blob_paths(data, h, [nonnegative("t", t)], order=order, q=q, rtol=rtol, atol=atol)
+    positions, masses = blob_paths(data, h, [_blob_time(t)], order=order, q=q, rtol=rtol, atol=atol)
     return positions[-1], masses
+
+
+def _blob_time(t) -> float:
+    """The time of one particle or blob run, checked here so that the errors name ``t``, not the solver's times."""
+    t = nonnegative("t", t)
+    if t > MAX_BLOB_TIME:
+        raise ValueError(f"t = {t:g} is beyond the particle solver's MAX_TIME = {MAX_BLOB_TIME:g} (a limit on the "
+                         "work of one run)")
+    return t
 
 
 def blob_paths(data, h: float, times, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
@@ -265,10 +278,10 @@ def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: flo
     dt = positive("dt", dt)
     if times.size == 0 or np.any(np.diff(times) <= 0) or times[0] < 0:
         raise ValueError("times must be non-negative and increasing, at least one")
+    _check_ltp_run("times", float(times[-1]), dt)  # (before the steps: times / dt may overflow an integer)
     steps = np.rint(times / dt).astype(np.int64)
     if np.any(np.abs(steps * dt - times) > 1e-9 * np.maximum(times, dt)):
-        raise ValueError(f"every time must be a whole number of steps dt = {dt}, got {times}")
-    _check_ltp_run("times", float(times[-1]), dt)
+        raise ValueError(f"every entry of times must be a whole number of steps dt = {dt}, got {times}")
     run = simulate(initial_density(data), potential("newtonian"), h, dt, float(times[-1]), shape=SHAPE, method=method,
                    eps=eps, record_every=1)
     return [run.at(int(np.searchsorted(run.steps, step))) for step in steps]
@@ -277,12 +290,17 @@ def ltp_paths(data, h: float, dt: float, times, *, method: str = "ltp", eps: flo
 def godunov_mass(data, cells: int, t: float, *, cfl: float = 0.9):
     """(edges, F values) of Godunov's scheme for F on ``cells`` cells of [-1, 1] at time t, started
     from the exact cell averages of F0 (ghost states 0 and M)."""
-    return godunov_paths(data, cells, [nonnegative("t", t)], cfl=cfl)[0]
+    return _godunov_paths(data, cells, [nonnegative("t", t)], cfl, "t")[0]
 
 
 def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     """(edges, F values) of :func:`godunov_mass` at each of the increasing ``times``, from one run (each stretch
     ends with a step shortened to land on its time)."""
+    return _godunov_paths(data, cells, times, cfl, "times")
+
+
+def _godunov_paths(data, cells: int, times, cfl: float, name: str):
+    """:func:`godunov_paths`, whose limit on the steps names the caller's parameter ``name`` (``t`` or ``times``)."""
     _grid_density(data)  # supported in [-1, 1]
     cells = integer_at_least("cells", cells, 1, MAX_CELLS)
     if isinstance(times, np.ndarray):  # from the shape, before any copy of the times
@@ -297,8 +315,8 @@ def godunov_paths(data, cells: int, times, *, cfl: float = 0.9):
     with np.errstate(divide="ignore"):  # (a step that underflows to 0 needs infinitely many)
         steps = times[-1] / np.float64(godunov_time_step(edges, initial.mass, cfl))
     if steps * cells > MAX_CELL_STEPS:
-        raise ValueError(f"times up to {times[-1]:g} on {cells} cells need {steps:.3g} steps of the scheme, more than "
-                         f"MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce the times or cells or raise cfl")
+        raise ValueError(f"{name} up to {times[-1]:g} on {cells} cells need {steps:.3g} steps of the scheme, more than "
+                         f"MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce {name} or the cells or raise cfl")
     # The exact cell averages of F0, in [0, M] (their differences' rounding, about eps M / dx, clipped).
     values = nudged(np.clip(np.diff(cdf_antiderivative(initial, edges)) / np.diff(edges), 0.0, initial.mass))
     out, now = [], 0.0
@@ -325,11 +343,22 @@ def godunov_advance(edges, values, mass: float, t: float, *, cfl: float = 0.9) -
     read in [0, M] (both clipped there)."""
     mass = positive("mass", mass)
     values = finite_array("values", values)
+    edges = finite_array("edges", edges)
+    if values.size == 0 or edges.size != values.size + 1:
+        raise ValueError(f"values must hold one value per cell of edges (at least one), got {values.size} values and "
+                         f"{edges.size} edges")
     if values.size and not (values.min() >= -F_ROUNDING * mass and values.max() <= (1.0 + F_ROUNDING) * mass):
         raise ValueError(f"values must lie in [0, mass] = [0, {mass!r}] (a cumulative mass), got values from "
                          f"{float(values.min())!r} to {float(values.max())!r}")
-    u = godunov(CONCAVE, np.clip(values / mass, 0.0, 1.0), edges, mass * nonnegative("t", t), cfl=cfl, left=0.0,
-                right=1.0)
+    t = nonnegative("t", t)
+    # The scheme's own limit on its work, checked here so that the error names mass and t (its time is mass t).
+    with np.errstate(divide="ignore", over="ignore"):  # (a step that underflows to 0 needs infinitely many)
+        steps = t / np.float64(godunov_time_step(edges, mass, cfl))
+    if not steps * values.size <= MAX_CELL_STEPS:
+        raise ValueError(f"t = {t:g} with mass = {mass:g} and cfl = {cfl:g} takes {steps:.3g} steps of the scheme on "
+                         f"{values.size} cells, more than MAX_CELL_STEPS = {MAX_CELL_STEPS:.0e} cell updates: reduce t "
+                         "or the cells, or raise cfl")
+    u = godunov(CONCAVE, np.clip(values / mass, 0.0, 1.0), edges, mass * t, cfl=cfl, left=0.0, right=1.0)
     return mass * np.clip(u, 0.0, 1.0)
 
 
@@ -339,4 +368,9 @@ def godunov_time_step(edges, mass: float, cfl: float = 0.9) -> float:
     edges = finite_array("edges", edges)
     if edges.size < 2:
         raise ValueError(f"edges must hold at least two values, got {edges.size}")
-    return cfl_time_step(CONCAVE, 0.0, 1.0, edges[1] - edges[0], positive("cfl", cfl)) / positive("mass", mass)
+    width = edges[1] - edges[0]
+    if not width > 0.0:
+        raise ValueError(f"edges must increase: the first cell's width is {width!r}")
+    with np.errstate(over="ignore"):  # an overflow is reported just below
+        step = cfl_time_step(CONCAVE, 0.0, 1.0, width, positive("cfl", cfl)) / positive("mass", mass)
+    return finite_result("the time step", step, "mass is too small: cfl dx / mass overflows")

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..blob.initial import DATA_1D, Data1D
-from ..validation import ParameterTypeError, instance, one_of, positive
+from ..validation import ParameterTypeError, finite_values, instance, one_of, positive
 
 #: Newton steps (each safeguarded by bisection) allowed to reach rounding; bisection alone needs 64.
 MAX_ITERATIONS = 200
@@ -44,13 +44,23 @@ def monotone_root(function: Callable, derivative: Callable, target, low, high):
     ulps. A Newton step may land on an end of the bracket: a root at 0 = high (the level of the Dirac
     mass) was otherwise approached by bisection, one halving per iteration towards the denormals, for
     all MAX_ITERATIONS (200) iterations of every call. ``low`` and ``high`` must bracket the root
-    (function(low) <= target <= function(high)); the caller guarantees it.
+    (function(low) <= target <= function(high)); the caller guarantees it. The functions, the targets and the
+    bracket are checked (finite values, callables): a NaN from ``function`` or ``derivative`` is refused.
     """
-    target = np.asarray(target, dtype=np.float64)
+    for name, value in (("function", function), ("derivative", derivative)):
+        if not callable(value):
+            raise ParameterTypeError(f"{name} must be callable, got {value!r}")
+    target = limited("target", finite_values("target", target))
     shape = target.shape
     target = target.ravel()
-    low = np.broadcast_to(np.asarray(low, dtype=np.float64), shape).ravel().copy()
-    high = np.broadcast_to(np.asarray(high, dtype=np.float64), shape).ravel().copy()
+    ends = []
+    for name, end in (("low", low), ("high", high)):
+        end = finite_values(name, end)
+        try:
+            ends.append(np.broadcast_to(end, shape).ravel().copy())
+        except ValueError:
+            raise ValueError(f"{name} must be a number or of the shape {shape} of target, got {end.shape}") from None
+    low, high = ends
     x = 0.5 * low + 0.5 * high  # not 0.5 (low + high): the sum of two large brackets overflows
     before_last = 0.5 * high - 0.5 * low  # rtsafe's "dxold": the size of the step before the last one
     last = high - low
@@ -60,9 +70,13 @@ def monotone_root(function: Callable, derivative: Callable, target, low, high):
             break
         xa, lo, hi = x[active], low[active], high[active]
         value = function(xa) - target[active]
+        if not np.all(np.isfinite(value)):
+            raise ValueError("function returned NaN or infinite values inside the bracket [low, high]")
         lo = np.where(value < 0.0, xa, lo)
         hi = np.where(value > 0.0, xa, hi)
         slope = derivative(xa)
+        if np.any(np.isnan(slope)):
+            raise ValueError("derivative returned NaN inside the bracket [low, high]")
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # such steps leave the bracket
             step = np.where(slope > 0.0, xa - value / slope, np.nan)
         newton = (step >= lo) & (step <= hi) & (np.abs(step - xa) <= 0.5 * before_last[active])
@@ -105,9 +119,20 @@ class Profile:
         if not (isinstance(self.radius, (int, float)) and not isinstance(self.radius, bool) and self.radius > 0):
             raise ParameterTypeError(f"radius must be a positive number (inf for an unbounded support), got "
                                      f"{self.radius!r}")
+        try:
+            float(self.radius)
+        except OverflowError:
+            raise ValueError(f"radius is beyond the double-precision range, got {self.radius!r}") from None
         for key in ("density", "mass_from_origin", "moment_from_left", "level_position"):
             if not callable(getattr(self, key)):
                 raise ParameterTypeError(f"{key} must be callable, got {getattr(self, key)!r}")
+        # One probe of each function where every profile is defined (the centre, the level M/4): a function that
+        # returns NaN or inf there is refused at once, not found in an exact solution's results.
+        for key, at in (("density", 0.0), ("mass_from_origin", 0.0), ("moment_from_left", 0.0),
+                        ("level_position", 0.25 * self.mass)):
+            value = np.asarray(getattr(self, key)(np.array([at])))
+            if value.dtype.kind not in "biuf" or not np.all(np.isfinite(value)):
+                raise ValueError(f"{key} must return finite real values, got {value!r} at {at}")
 
 
 def _polynomial_profile(data: Data1D) -> Profile:
