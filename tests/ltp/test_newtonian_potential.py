@@ -142,7 +142,7 @@ def test_newtonian_potential_values():
 
 
 @pytest.mark.parametrize("make, message", [
-    (lambda: Potential("sub-Newtonian", (1.0,), (0.5,)), r"every exponent must be at least 1 .*got \[0\.5\]"),
+    (lambda: Potential("sub-Newtonian", (1.0,), (0.5,)), r"exponents must all be at least 1 .*got \[0\.5\]"),
     (lambda: Potential("mixed", (1.0, 1.0), (1.0, 0.99)), r"at least 1 .*got \[1\.   0\.99\]"),
     (lambda: potential("power", a=0.9), r"at least 1 .*0\.9"),
     (lambda: potential("attractive_repulsive", a=2.0, b=0.0), r"at least 1 .*0\.\]"),
