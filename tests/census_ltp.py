@@ -38,6 +38,8 @@ THEOREM3_ATOMIC = {"atoms": 3, "a": 3.0, "dt": 0.05, "dt_factor": 2, "h_values":
 THEOREM3 = {"initial": "rho2", "a": 3.0, "h_values": [0.5], "dt_over_h": 0.1, "reference_factor": 2,
             "times": [0.05, 0.1]}
 THEOREM4 = {"initial": "rho2", "a": 1.5, "h_values": [0.5], "dt_over_h2": 0.2, "times": [0.05, 0.1]}
+#: The name of a density, a potential or a shape is free text (it labels figures): "1" is a name too.
+FREE_NAME = {"name": ["1"]}
 #: The theorems' config sections are dicts, passed whole: an object to the census.
 SECTION = {"q": "object"}
 
@@ -65,7 +67,8 @@ ENTRIES = {
     PM + "ltp.exact.quadratic_rate": E(exact.quadratic_rate, {"potential": QUADRATIC}),
     # initial
     PM + "ltp.initial.InitialDensity": E(initial.InitialDensity, {"name": "rho2", "pdf": RHO2.pdf, "cdf": RHO2.cdf,
-                                                                  "lower": -1.0, "upper": 1.0}),
+                                                                  "lower": -1.0, "upper": 1.0},
+                                         accepts=FREE_NAME),
     PM + "ltp.initial.atomic": E(initial.atomic, {"positions": ATOMS, "masses": MASSES}),
     PM + "ltp.initial.density_named": E(initial.density_named, {"name": "rho2"}, names={"name": ("density",)}),
     PM + "ltp.initial.golden_atoms": E(initial.golden_atoms, {"count": 3, "lower": -0.9, "upper": 0.9}),
@@ -99,7 +102,8 @@ ENTRIES = {
                                                                       "every": 1}),
     # potentials
     PM + "ltp.potentials.Potential": E(potentials.Potential, {"name": "p", "coefficients": A([1.0]),
-                                                              "exponents": A([1.5])}),
+                                                              "exponents": A([1.5])},
+                                       accepts=FREE_NAME),
     PM + "ltp.potentials.Potential.__call__": E(POWER.__call__, {"x": X3}),
     PM + "ltp.potentials.Potential.derivative": E(POWER.derivative, {"x": X3}),
     PM + "ltp.potentials.Potential.second_derivative": E(POWER.second_derivative, {"x": A([-1.0, 0.5, 1.0])}),
@@ -107,7 +111,8 @@ ENTRIES = {
     PM + "ltp.potentials.potential": E(potentials.potential, {"kind": "attractive_repulsive", "a": 2.0, "b": 1.5}),
     # shapes
     PM + "ltp.shapes.Shape": E(shapes.Shape, {"name": "hat", "breaks": HAT.breaks,
-                                              "coefficients": HAT.coefficients}),
+                                              "coefficients": HAT.coefficients},
+                                   accepts=FREE_NAME),
     PM + "ltp.shapes.Shape.__call__": E(B3.__call__, {"s": X3}),
     PM + "ltp.shapes.B3": E(B3, {"s": X3}),
     PM + "ltp.shapes.HAT": E(HAT, {"s": X3}),

@@ -109,7 +109,7 @@ def test_bad_input(kwargs, message):
 @pytest.mark.parametrize(
     "make, message",
     [
-        (lambda: potential("morse"), "unknown potential"),
+        (lambda: potential("morse"), "unknown kind of potential"),
         (lambda: potential("power"), "needs the exponent a"),
         (lambda: potential("power", a=0.5), "exponent must be at least 1"),
         (lambda: potential("attractive_repulsive", a=3.0), "needs the exponents a and b"),
