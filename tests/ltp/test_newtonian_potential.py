@@ -89,7 +89,7 @@ def test_cumulative_mass_checks_its_arrays():
         cumulative_mass_at(TARGETS, CENTRES, WEIGHTS, -WIDTHS, B3.breaks, B3.coefficients)
     with pytest.raises(ValueError, match="points contains NaN"):
         cumulative_mass_at([np.nan], CENTRES, WEIGHTS, WIDTHS, B3.breaks, B3.coefficients)
-    with pytest.raises(ValueError, match="coefficients must have shape"):
+    with pytest.raises(ValueError, match="pieces must have shape"):
         cumulative_mass_at(TARGETS, CENTRES, WEIGHTS, WIDTHS, B3.breaks, HAT.coefficients)
 
 
