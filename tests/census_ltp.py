@@ -60,6 +60,7 @@ ENTRIES = {
     PM + "ltp.checks.particle_arrays": E(checks.particle_arrays, dict(PARTICLE)),
     PM + "ltp.checks.piece_arrays": E(checks.piece_arrays, {"breaks": B3.breaks, "coefficients": B3.coefficients}),
     PM + "ltp.checks.power_arrays": E(checks.power_arrays, dict(TERMS)),
+    PM + "ltp.checks.exponent_array": E(checks.exponent_array, {"exponents": A([1.5, 2.0])}),
     # exact
     PM + "ltp.exact.exact_density": E(exact.exact_density, {"initial": RHO2, "potential": QUADRATIC, "t": 0.1,
                                                             "x": X3}),
