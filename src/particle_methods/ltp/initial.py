@@ -39,7 +39,9 @@ class InitialDensity:
     """A density of finite mass on [lower, upper] (finite, lower < upper) with its CDF int_lower^x rho^0.
 
     The particle methods need no unit mass: the weights (2.14), (2.16) are differences of the CDF and
-    sum to the mass; (6.1)-(6.3) are normalised to unit mass.
+    sum to the mass; (6.1)-(6.3) are normalised to unit mass. The construction tries both functions: the cdf at
+    [lower, upper] must give finite non-decreasing values, the pdf a finite value at the middle, unless it refuses
+    every point with a ValueError (a measure with no density: :func:`atomic`).
     """
 
     name: str
