@@ -154,3 +154,36 @@ def test_which_potentials_take_pair_sums():
     """The work limit of simulate counts N^2 pairs per step only for these (tests/ltp/test_ltp_safety.py)."""
     assert not takes_pair_sums([1.0]) and not takes_pair_sums([2.0]) and not takes_pair_sums([3.0, 4.0, 6.0])
     assert takes_pair_sums([3.0, 2.5]) and takes_pair_sums([1.5]) and takes_pair_sums([7.0])
+
+
+def test_far_series_and_takes_pair_sums_check_their_arrays():
+    """Census (issue 46): far_series allocated (terms, 2, moments) for any input (a zero-stride array of 10**9
+    moments asked for 16 GB) and returned inf for huge exponents; both functions now refuse by name."""
+    from particle_methods.ltp.checks import MAX_TERMS
+    from particle_methods.ltp.kernels import FAR_MOMENTS
+
+    moments = np.array([1.0, 0.0, 1 / 3])
+    with pytest.raises(ValueError, match="moments has 1000000000 entries"):
+        far_series([1.5], np.broadcast_to(1.0, (10**9,)))
+    with pytest.raises(ValueError, match="the number of moments must be at most"):
+        far_series([1.5], np.ones(FAR_MOMENTS + 1))
+    with pytest.raises(ValueError, match="exponents or moments are too large"):
+        far_series([1e300], moments)
+    with pytest.raises(ValueError, match="exponents contains NaN"):
+        far_series([np.nan], moments)
+    with pytest.raises(TypeError, match="exponents must be an array"):
+        takes_pair_sums(None)
+    with pytest.raises(ValueError, match="the number of exponents .* must be at most"):
+        takes_pair_sums(np.full(MAX_TERMS + 1, 1.5))
+
+
+def test_the_kernels_name_the_pieces_and_the_arguments_that_overflow():
+    """Census (issue 46): the kernels called their ``pieces`` 'coefficients' in their messages, and an overflow
+    named no argument; now the message names the pieces, and the overflowing arguments among its candidates."""
+    x, weights, widths = np.array([-1.0, 0.0, 1.0]), np.array([0.2, 0.3, 0.5]), np.full(3, 0.5)
+    with pytest.raises(TypeError, match="pieces must be an array"):
+        density_at(x, x, weights, widths, B3.breaks, None)
+    with pytest.raises(ValueError, match="rho_h is not finite: .*the widths"):
+        density_at(x, x, weights, np.full(3, 5e-324), B3.breaks, B3.coefficients)
+    with pytest.raises(ValueError, match="the moments of the shape is not finite: breaks or pieces too large"):
+        convolutions(x, x, weights, widths, [1.0], [1.5], B3.breaks * 1e300, B3.coefficients)

@@ -323,6 +323,9 @@ def test_a_decreasing_user_cdf_is_refused_before_the_run():
     from particle_methods.ltp import potential, simulate
     from particle_methods.ltp.initial import InitialDensity
 
-    decreasing = InitialDensity("decreasing", lambda x: np.ones_like(x), lambda x: -x, -1.0, 1.0)
-    with pytest.raises(ValueError, match="CDF of decreasing decreases"):
-        simulate(decreasing, potential("quadratic"), 0.1, 0.01, 0.1)
+    with pytest.raises(ValueError, match="cdf must give finite non-decreasing values"):  # at its construction
+        InitialDensity("decreasing", lambda x: np.ones_like(x), lambda x: -x, -1.0, 1.0)
+    dipping = InitialDensity("dipping", lambda x: np.ones_like(x),  # increases from lower to upper, dips between
+                             lambda x: 0.5 * (x + 1.0) - 0.4 * np.sin(np.pi * x), -1.0, 1.0)
+    with pytest.raises(ValueError, match="CDF of dipping decreases"):
+        simulate(dipping, potential("quadratic"), 0.1, 0.01, 0.1)

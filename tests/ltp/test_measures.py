@@ -258,13 +258,13 @@ def test_too_few_records_raise():
     with pytest.raises(ValueError, match="increasing"):
         shrink_rate_inverse([0.0, 2.0, 1.0], [1.0, 0.5, 0.2])
     t = np.linspace(0.0, 1.0, 11)
-    with pytest.raises(ValueError, match="too few"):
+    with pytest.raises(ValueError, match="windows: the window .* holds fewer than 3 records"):
         collapse_times(t, np.exp(-t), [(0.0, 0.1)])  # two records in the window
 
 
 def test_a_window_of_constant_size_raises():
     t = 0.125 * np.arange(9)  # exactly spaced, so that g is exactly infinite
-    with pytest.raises(ValueError, match="finite records"):
+    with pytest.raises(ValueError, match="where g is finite"):
         collapse_times(t, np.ones(t.size), [(0.0, 1.0)])
 
 
@@ -301,3 +301,19 @@ def test_peak_count_and_excess_variation_reject_bad_parameters():
         excess_variation(X, bump(0.5) * (X > 0))
     with pytest.raises(ValueError, match="increasing"):
         excess_variation(X[::-1], bump(0.5))
+
+
+def test_profile_changes_bounds_every_and_side_concentration_names_the_centres():
+    """Census (issue 46): ``every`` = 10**40 overflowed numpy's integers (OverflowError), and 'both sides of
+    x = 0 need particles' named no parameter."""
+    from particle_methods.ltp import potential, simulate
+    from particle_methods.ltp.measures import profile_changes
+    from particle_methods.ltp.solver import MAX_STEPS
+
+    sim = simulate("rho2", potential("power", a=1.5), 0.5, 0.05, 0.1, record_every=1)
+    assert profile_changes(sim, 0.05, every=2)[0].tolist() == [0.1]
+    assert profile_changes(sim, 0.05, every=MAX_STEPS + 1)[0].size == 0  # record 0 only, with none before it
+    with pytest.raises(ValueError, match="every must be at most"):
+        profile_changes(sim, 0.05, every=10**40)
+    with pytest.raises(ValueError, match="centres must hold particles on both sides"):
+        side_concentration(np.array([0.2, 0.5]), np.array([0.5, 0.5]), np.ones(2), 0.9, 0.1)

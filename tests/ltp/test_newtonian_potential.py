@@ -89,7 +89,7 @@ def test_cumulative_mass_checks_its_arrays():
         cumulative_mass_at(TARGETS, CENTRES, WEIGHTS, -WIDTHS, B3.breaks, B3.coefficients)
     with pytest.raises(ValueError, match="points contains NaN"):
         cumulative_mass_at([np.nan], CENTRES, WEIGHTS, WIDTHS, B3.breaks, B3.coefficients)
-    with pytest.raises(ValueError, match="coefficients must have shape"):
+    with pytest.raises(ValueError, match="pieces must have shape"):
         cumulative_mass_at(TARGETS, CENTRES, WEIGHTS, WIDTHS, B3.breaks, HAT.coefficients)
 
 
@@ -142,7 +142,7 @@ def test_newtonian_potential_values():
 
 
 @pytest.mark.parametrize("make, message", [
-    (lambda: Potential("sub-Newtonian", (1.0,), (0.5,)), r"every exponent must be at least 1 .*got \[0\.5\]"),
+    (lambda: Potential("sub-Newtonian", (1.0,), (0.5,)), r"exponents must all be at least 1 .*got \[0\.5\]"),
     (lambda: Potential("mixed", (1.0, 1.0), (1.0, 0.99)), r"at least 1 .*got \[1\.   0\.99\]"),
     (lambda: potential("power", a=0.9), r"at least 1 .*0\.9"),
     (lambda: potential("attractive_repulsive", a=2.0, b=0.0), r"at least 1 .*0\.\]"),

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from particle_methods.ltp import B3, HAT, density_named, grid_particles, hat_biorthogonal_kernel, shape_named
+from particle_methods.ltp import B3, HAT, density_named, grid_particles, hat_biorthogonal_kernel, potential, shape_named
 
 
 @pytest.mark.parametrize("shape", [HAT, B3], ids=lambda s: s.name)
@@ -102,3 +102,31 @@ def test_biorthogonal_weights_make_the_error_orthogonal_to_the_kernels():
 def test_bad_input(make, message):
     with pytest.raises(ValueError, match=message):
         make()
+
+
+def test_a_density_whose_cdf_or_pdf_gives_nan_is_refused_at_its_construction():
+    """Census (issue 46): InitialDensity took any callables, and a NaN CDF reached the weights; it now tries its
+    cdf at [lower, upper] and its pdf at the middle (a pdf that refuses, as an atomic measure's, passes)."""
+    from particle_methods.ltp.initial import InitialDensity, atomic
+
+    def nan(x):
+        return np.full(np.shape(x), np.nan)
+
+    rho2 = density_named("rho2")
+    with pytest.raises(ValueError, match="cdf must give finite non-decreasing values"):
+        InitialDensity("nan cdf", rho2.pdf, nan, -1.0, 1.0)
+    with pytest.raises(ValueError, match="pdf must give finite values"):
+        InitialDensity("nan pdf", nan, rho2.cdf, -1.0, 1.0)
+    assert atomic([0.0, 0.5], [0.5, 0.5]).lower < 0.0
+    with pytest.raises(ValueError, match="positions must leave room for a margin"):
+        atomic([1e300, 1e300], [0.5, 0.5])
+
+
+def test_shape_and_potential_messages_name_their_parameter():
+    """Census (issue 46): 'shape ... must have unit mass' and 'potential must be one of' named no parameter."""
+    from particle_methods.ltp import Shape
+
+    with pytest.raises(ValueError, match="the coefficients of shape 'double' on its breaks must give unit mass"):
+        Shape("double", HAT.breaks, 2 * HAT.coefficients)
+    with pytest.raises(TypeError, match="kind of potential must be one of"):
+        potential(None)

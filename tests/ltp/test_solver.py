@@ -109,9 +109,9 @@ def test_bad_input(kwargs, message):
 @pytest.mark.parametrize(
     "make, message",
     [
-        (lambda: potential("morse"), "unknown potential"),
+        (lambda: potential("morse"), "unknown kind of potential"),
         (lambda: potential("power"), "needs the exponent a"),
-        (lambda: potential("power", a=0.5), "exponent must be at least 1"),
+        (lambda: potential("power", a=0.5), "exponents must all be at least 1"),
         (lambda: potential("attractive_repulsive", a=3.0), "needs the exponents a and b"),
         (lambda: exact_density(RHO1, potential("power", a=1.5), 0.1, GRID), "quadratic potential"),
     ],
@@ -119,3 +119,17 @@ def test_bad_input(kwargs, message):
 def test_bad_potentials(make, message):
     with pytest.raises(ValueError, match=message):
         make()
+
+
+def test_simulation_and_simulate_refuse_census_values_by_name():
+    """Census (issue 46): a ragged ``steps`` raised numpy's message, and record_every = 10**40 was taken."""
+    from dataclasses import replace
+
+    from particle_methods.ltp.solver import MAX_STEPS
+
+    w = potential("power", a=1.5)
+    sim = simulate("rho2", w, 0.5, 0.05, 0.1, record_every=1)
+    with pytest.raises(TypeError, match="steps must be a rectangular array"):
+        replace(sim, steps=[[1], [2, 3]])
+    with pytest.raises(ValueError, match="record_every must be at most"):
+        simulate("rho2", w, 0.5, 0.05, 0.1, record_every=MAX_STEPS + 1)

@@ -79,3 +79,60 @@ def test_the_algebraic_reading_gives_one_for_powers_and_more_for_exponentials():
     with pytest.raises(ValueError, match="after t = 0"):
         shrink_rate_ratios(t, np.exp(-0.1 * t), 10.0, 0.0, 1e-3, algebraic=True)
     assert not math.isnan(power.sum())
+
+
+def test_the_studies_check_their_section_grid_and_solver():
+    """Census (issue 46): the studies indexed ``q``, passed ``grid_points`` to linspace and called ``run`` with no
+    check (AttributeError, IndexError, MemoryError for 10**18 points, minutes for 2**31)."""
+    from particle_methods.ltp import simulate
+    from particle_methods.ltp.theorems import MAX_GRID_POINTS, theorem1_time_error, theorem3_atomic
+
+    q = {"initial": "rho2", "a": 3.0, "t": 0.1, "h_values": [0.5], "dt_values": [0.1, 0.05], "fit_points": 2}
+    assert theorem1_time_error(q, 11)["theorem1_gaps"].shape == (1, 1, 2)
+    with pytest.raises(TypeError, match="q must be of type dict"):
+        theorem1_time_error(None, 11)
+    with pytest.raises(ValueError, match="q .* lacks fit_points"):
+        theorem1_time_error({key: q[key] for key in q if key != "fit_points"}, 11)
+    with pytest.raises(ValueError, match="grid_points must be at most"):
+        theorem1_time_error(q, MAX_GRID_POINTS + 1)
+    with pytest.raises(TypeError, match="grid_points must be an integer"):
+        theorem1_time_error(q, True)
+    with pytest.raises(TypeError, match="run must take the arguments of simulate"):
+        theorem1_time_error(q, 11, run=lambda x: x)
+    with pytest.raises(TypeError, match="the result of run must be of type Simulation"):
+        theorem1_time_error(q, 11, run=lambda *args, **kwargs: np.zeros(3))
+    with pytest.raises(TypeError, match="run must be a function"):
+        theorem3_atomic({"atoms": 3, "a": 3.0, "dt": 0.05, "dt_factor": 2, "h_values": [0.5], "times": [0.1]},
+                        run=None)
+    assert simulate  # the default solver
+
+
+def test_records_atom_flow_and_w1_check_their_arguments():
+    """Census (issue 46): records took any sim and times (AttributeError; minutes for 10**8 times), atom_flow
+    any times and rtol (IndexError, AttributeError, a hang over t = 1e299) and named no masses on overflow."""
+    from particle_methods.ltp import simulate
+    from particle_methods.ltp.theorems import MAX_FLOW_TIME, records
+
+    w = potential("power", a=3.0)
+    sim = simulate("rho2", w, 0.5, 0.05, 0.1, record_every=1)
+    assert records(sim, [0.05, 0.1]) == [1, 2]
+    with pytest.raises(TypeError, match="sim must be of type Simulation"):
+        records(None, [0.1])
+    with pytest.raises(ValueError, match="the number of times must be at most 3"):
+        records(sim, np.full(4, 0.1))
+    with pytest.raises(ValueError, match="times must be record times of sim"):
+        records(sim, [0.07])
+    positions, masses = golden_atoms(3, -0.9, 0.9)
+    for times in ([], [0.0, 0.0], [0.0, 2 * MAX_FLOW_TIME], [-1.0, 0.1]):
+        with pytest.raises(ValueError, match="times must increase strictly"):
+            atom_flow(positions, masses, w, times)
+    for rtol, error in ((None, TypeError), (1j, TypeError), (-1.0, ValueError), (1.0, ValueError)):
+        with pytest.raises(error, match="rtol"):
+            atom_flow(positions, masses, w, [0.0, 0.1], rtol=rtol)
+    with pytest.raises(ValueError, match="masses must be non-negative"):
+        atom_flow(positions, -masses, w, [0.0, 0.1])
+    with pytest.raises(ValueError, match="masses or positions"):
+        atom_flow(positions, np.full(3, 1e300), w, [0.0, 0.1])
+    particles = sim.at(0)
+    with pytest.raises(ValueError, match="masses must sum to the particles' mass"):
+        w1_to_atoms(particles, positions, 2 * masses)

@@ -15,6 +15,8 @@ from ..validation import finite_array, integer_at_least, same_length, sorted_arr
 #: Most particles one call may use: the pair sums cost (particles)^2 per time step, and the
 #: repository's finest grid (h = 0.0025 on [-1, 1]) has 803 particles.
 MAX_PARTICLES = 10_000
+#: Most power terms of one potential (section 6's have one or two; each term is a loop over the pairs).
+MAX_TERMS = 100
 
 
 def particle_arrays(centres, weights, widths) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -28,16 +30,27 @@ def particle_arrays(centres, weights, widths) -> tuple[np.ndarray, np.ndarray, n
     return centres, weights, widths
 
 
-def piece_arrays(breaks, coefficients) -> tuple[np.ndarray, np.ndarray]:
-    """Breaks -r = s_0 < ... < s_J = r of a shape and its (J, 4) cubic coefficients."""
+def piece_arrays(breaks, coefficients, name: str = "coefficients") -> tuple[np.ndarray, np.ndarray]:
+    """Breaks -r = s_0 < ... < s_J = r of a shape and its (J, 4) cubic coefficients (called ``name`` in the
+    messages: the kernels call them ``pieces``)."""
     breaks = np.ascontiguousarray(sorted_array("breaks", breaks))
     if breaks.size < 2 or np.any(np.diff(breaks) <= 0) or breaks[0] != -breaks[-1]:
         raise ValueError(f"breaks must increase strictly from -r to r, got {breaks}")
-    coefficients = np.ascontiguousarray(finite_array("coefficients", coefficients, ndim=2))
+    coefficients = np.ascontiguousarray(finite_array(name, coefficients, ndim=2))
     if coefficients.shape != (breaks.size - 1, 4):
-        raise ValueError(f"coefficients must have shape ({breaks.size - 1}, 4), one cubic per piece, "
+        raise ValueError(f"{name} must have shape ({breaks.size - 1}, 4), one cubic per piece, "
                          f"got {coefficients.shape}")
     return breaks, coefficients
+
+
+def exponent_array(exponents) -> np.ndarray:
+    """Exponents a_j >= 1 of the power terms of a potential (see :func:`power_arrays`), at least one."""
+    exponents = np.ascontiguousarray(finite_array("exponents", exponents))
+    integer_at_least("the number of exponents (terms of the potential)", exponents.size, 1, MAX_TERMS)
+    if np.any(exponents < 1.0):
+        raise ValueError(f"exponents must all be at least 1 (a = 1 is the Newtonian |x|; below 1 W' is unbounded "
+                         f"at 0), got {exponents}")
+    return exponents
 
 
 def power_arrays(coefficients, exponents) -> tuple[np.ndarray, np.ndarray]:
@@ -47,10 +60,6 @@ def power_arrays(coefficients, exponents) -> tuple[np.ndarray, np.ndarray]:
     bounded and W'' = 2c delta a Dirac mass (the kernels convolve it exactly). Below 1, W' is unbounded at 0.
     """
     coefficients = np.ascontiguousarray(finite_array("coefficients", coefficients))
-    exponents = np.ascontiguousarray(finite_array("exponents", exponents))
-    if same_length(coefficients=coefficients, exponents=exponents) < 1:
-        raise ValueError("a potential needs at least one term")
-    if np.any(exponents < 1.0):
-        raise ValueError(f"every exponent must be at least 1 (a = 1 is the Newtonian |x|; below 1 W' is unbounded "
-                         f"at 0), got {exponents}")
+    exponents = exponent_array(exponents)
+    same_length(coefficients=coefficients, exponents=exponents)
     return coefficients, exponents

@@ -39,7 +39,9 @@ class InitialDensity:
     """A density of finite mass on [lower, upper] (finite, lower < upper) with its CDF int_lower^x rho^0.
 
     The particle methods need no unit mass: the weights (2.14), (2.16) are differences of the CDF and
-    sum to the mass; (6.1)-(6.3) are normalised to unit mass.
+    sum to the mass; (6.1)-(6.3) are normalised to unit mass. The construction tries both functions: the cdf at
+    [lower, upper] must give finite non-decreasing values, the pdf a finite value at the middle, unless it refuses
+    every point with a ValueError (a measure with no density: :func:`atomic`).
     """
 
     name: str
@@ -58,6 +60,17 @@ class InitialDensity:
             raise ValueError(f"lower must be below upper, got [{lower}, {upper}]")
         object.__setattr__(self, "lower", lower)
         object.__setattr__(self, "upper", upper)
+        ends = real_array("the values of cdf", self.cdf(np.array([lower, upper])))
+        if ends.shape != (2,) or not np.all(np.isfinite(ends)) or ends[1] < ends[0]:
+            raise ValueError(f"cdf must give finite non-decreasing values, one per point: at [lower, upper] = "
+                             f"[{lower:g}, {upper:g}] it gives {ends}")
+        try:  # an atomic measure has no density: its pdf refuses every point
+            middle = self.pdf(np.array([0.5 * lower + 0.5 * upper]))
+        except ValueError:
+            return
+        middle = real_array("the values of pdf", middle)
+        if not np.all(np.isfinite(middle)):
+            raise ValueError(f"pdf must give finite values, got {middle} at the middle of [lower, upper]")
 
     @property
     def mean(self) -> float:
@@ -151,8 +164,13 @@ def atomic(positions, masses) -> InitialDensity:
     def pdf(y):
         raise ValueError("an atomic measure has no density")
 
-    span = max(x[-1] - x[0], 1.0)
-    return InitialDensity(f"{x.size} atoms", pdf, cdf, float(x[0] - 1e-3 * span), float(x[-1] + 1e-3 * span))
+    with np.errstate(over="ignore"):
+        span = max(x[-1] - x[0], 1.0)
+        lower, upper = x[0] - 1e-3 * span, x[-1] + 1e-3 * span
+    if not (np.isfinite(span) and lower < x[0] and x[-1] < upper):
+        raise ValueError(f"positions must leave room for a margin around the atoms in double precision, got "
+                         f"[{x[0]:g}, {x[-1]:g}]")
+    return InitialDensity(f"{x.size} atoms", pdf, cdf, float(lower), float(upper))
 
 
 def density_named(name: str) -> InitialDensity:

@@ -53,8 +53,8 @@ from numba import prange
 
 from ..jit import njit, njit_threaded
 from ..threads import threads_for
-from ..validation import finite_array, finite_result
-from .checks import particle_arrays, piece_arrays, power_arrays
+from ..validation import finite_array, finite_result, integer_at_least
+from .checks import exponent_array, particle_arrays, piece_arrays, power_arrays
 
 NEAR = 4.0
 #: (distance in piece lengths, number of Gauss-Legendre nodes), farthest first.
@@ -159,15 +159,19 @@ def _particle_far(d, width, a, series, term):
 def far_series(exponents, moments) -> np.ndarray:
     """Coefficients binom(a - 1, m) mu_m and binom(a - 2, m) mu_m of the binomial series of the module
     docstring for every power term (exponent a) and moment mu_m, shape (terms, 2, moments): those of
-    int |z|^{a-1} sign(z) phi and int |z|^{a-2} phi, computed once per call instead of once per pair."""
-    exponents, moments = np.asarray(exponents, dtype=np.float64), np.asarray(moments, dtype=np.float64)
+    int |z|^{a-1} sign(z) phi and int |z|^{a-2} phi, computed once per call instead of once per pair.
+    Exponents of a potential (at least 1, :func:`.checks.power_arrays`), 1 to FAR_MOMENTS finite moments."""
+    exponents = exponent_array(exponents)
+    moments = finite_array("moments", moments)
+    integer_at_least("the number of moments", moments.size, 1, FAR_MOMENTS)
     m = np.arange(moments.size)
     series = np.empty((exponents.size, 2, moments.size))
     for term, a in enumerate(exponents):
         for row, q in enumerate((a - 1.0, a - 2.0)):
             ratios = np.concatenate([[1.0], (q - m[:-1]) / (m[:-1] + 1.0)])
-            series[term, row] = np.cumprod(ratios) * moments
-    return series
+            with np.errstate(over="ignore", invalid="ignore"):  # huge exponents: refused just below
+                series[term, row] = np.cumprod(ratios) * moments
+    return finite_result("the far series", series, "the exponents or moments are too large for double precision")
 
 
 def shape_moments(breaks, pieces, count: int = FAR_MOMENTS) -> np.ndarray:
@@ -444,7 +448,7 @@ def _term_needs(exponents: bytes) -> tuple[bool, int, bool]:
 def takes_pair_sums(exponents) -> bool:
     """Whether a potential with these exponents needs the O(N^2) pair sums (an exponent other than 1, 2 and
     the integers 3 <= a <= POLYNOMIAL_MAX_EXPONENT, which :func:`convolution_sums` takes in O(N log N))."""
-    return _term_needs(np.ascontiguousarray(exponents, dtype=np.float64).tobytes())[0]
+    return _term_needs(exponent_array(exponents).tobytes())[0]
 
 
 @functools.lru_cache(maxsize=64)
@@ -479,6 +483,9 @@ def convolution_sums(targets, centres, weights, widths, coefficients, exponents,
 
 
 OVERFLOW = "overflow: the particles are too narrow or too far from the points for double precision"
+#: The same, naming the arguments of the public kernels below that enter the sums.
+ARGUMENTS_OVERFLOW = ("overflow beyond double precision: the weights, the centres, the widths (too narrow or too "
+                      "wide), the shape's breaks and pieces{}")
 
 
 def convolutions(targets, centres, weights, widths, coefficients, exponents, breaks, pieces):
@@ -487,19 +494,23 @@ def convolutions(targets, centres, weights, widths, coefficients, exponents, bre
     targets = np.ascontiguousarray(finite_array("targets", targets))
     centres, weights, widths = particle_arrays(centres, weights, widths)
     coefficients, exponents = power_arrays(coefficients, exponents)
-    breaks, pieces = piece_arrays(breaks, pieces)
-    first, second = convolution_sums(targets, centres, weights, widths, coefficients, exponents, breaks, pieces)
-    return finite_result("W' * rho_h", first, OVERFLOW), finite_result("W'' * rho_h", second, OVERFLOW)
+    breaks, pieces = piece_arrays(breaks, pieces, name="pieces")
+    with np.errstate(over="ignore", invalid="ignore"):
+        finite_result("the moments of the shape", shape_moments(breaks, pieces), "breaks or pieces too large")
+    cause = ARGUMENTS_OVERFLOW.format(" or the potential's coefficients and exponents are too large")
+    with np.errstate(over="ignore", invalid="ignore"):
+        first, second = convolution_sums(targets, centres, weights, widths, coefficients, exponents, breaks, pieces)
+    return finite_result("W' * rho_h", first, cause), finite_result("W'' * rho_h", second, cause)
 
 
 def density_at(points, centres, weights, widths, breaks, pieces):
     """rho_h(points) of (2.27) = sum_k omega_k phi((x - x_k)/h_k)/h_k."""
     points = np.ascontiguousarray(finite_array("points", points))
     centres, weights, widths = particle_arrays(centres, weights, widths)
-    breaks, pieces = piece_arrays(breaks, pieces)
+    breaks, pieces = piece_arrays(breaks, pieces, name="pieces")
     with threads_for(points.size, PARALLEL_MIN_TARGETS):
         _, density = _cumulative_and_density_of(points, centres, weights, widths, breaks, pieces)
-    return finite_result("rho_h", density, OVERFLOW)
+    return finite_result("rho_h", density, ARGUMENTS_OVERFLOW.format(" are too large"))
 
 
 def cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
@@ -507,7 +518,7 @@ def cumulative_mass_at(points, centres, weights, widths, breaks, pieces):
     (Phi the CDF of the shape): 0 left of every particle, the total mass sum_k omega_k right of them."""
     points = np.ascontiguousarray(finite_array("points", points))
     centres, weights, widths = particle_arrays(centres, weights, widths)
-    breaks, pieces = piece_arrays(breaks, pieces)
+    breaks, pieces = piece_arrays(breaks, pieces, name="pieces")
     with threads_for(points.size, PARALLEL_MIN_TARGETS):
         cumulative, _ = _cumulative_and_density_of(points, centres, weights, widths, breaks, pieces)
-    return finite_result("F_h", cumulative, OVERFLOW)
+    return finite_result("F_h", cumulative, ARGUMENTS_OVERFLOW.format(" are too large"))

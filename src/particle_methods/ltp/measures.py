@@ -24,7 +24,7 @@ import math
 import numpy as np
 
 from ..validation import finite_array, finite_number, in_interval, instance, integer_at_least, positive, same_length
-from .solver import Particles, Simulation
+from .solver import MAX_STEPS, Particles, Simulation
 
 #: A shrink rate (per unit time) and a slope of g below these are zero up to rounding.
 RATE_ZERO = 1e-12
@@ -62,7 +62,8 @@ def collapse_times(times, sizes, windows) -> tuple[np.ndarray, np.ndarray]:
     for start, end in windows:
         inside = (times >= times[0] + start * span - 1e-12) & (times <= times[0] + end * span + 1e-12)
         if inside.sum() < 3 or not np.all(np.isfinite(g[inside])):
-            raise ValueError(f"window ({start}, {end}) holds too few finite records of g")
+            raise ValueError(f"windows: the window ({start}, {end}) holds fewer than 3 records of the times where "
+                             f"g is finite (the sizes shrink or grow there)")
         slope, intercept = np.polyfit(times[inside], g[inside], 1)
         slope = 0.0 if abs(slope) <= SLOPE_ZERO else slope  # exponential shrinking: 0 up to rounding
         slopes.append(slope)
@@ -94,7 +95,7 @@ def side_concentration(centres, weights, peak_values, fraction: float, radius: f
     widths, masses = [], []
     for side in (centres < -middle, centres > middle):
         if not side.any():
-            raise ValueError("both sides of x = 0 need particles")
+            raise ValueError("centres must hold particles on both sides of x = 0")
         order = np.argsort(centres[side])
         x, m = centres[side][order], weights[side][order]
         cumulative = np.concatenate([[0.0], np.cumsum(m)])
@@ -224,7 +225,7 @@ def profile_changes(simulation, window: float, every: int = 1) -> tuple[np.ndarr
     record t' at or before t - ``window`` (t' the latest such): how much the profile moves over one window."""
     instance("simulation", simulation, Simulation)
     window = positive("window", window)
-    every = integer_at_least("every", every, 1)
+    every = integer_at_least("every", every, 1, MAX_STEPS + 1)  # a run records at most MAX_STEPS + 1 times
     times = simulation.times
     earlier = np.searchsorted(times, times - window + 1e-9 * window, side="right") - 1
     usable = np.flatnonzero(earlier >= 0)

@@ -72,7 +72,7 @@ def potential(kind: str, a: float | None = None, b: float | None = None) -> Pote
     """Potentials of section 6: 'quadratic' x^2, 'half_quadratic' x^2/2, 'power' |x|^a/a,
     'attractive_repulsive' |x|^a/a - |x|^b/b (a, b >= 1), and 'newtonian' |x|/2, the attractive Newtonian
     potential of 1D (W'' = delta); an exponent the kind does not take is refused."""
-    needed = one_of("potential", kind, KINDS)
+    needed = one_of("kind of potential", kind, KINDS)
     for name, value in (("a", a), ("b", b)):
         if name in needed and value is None:
             raise ValueError(f"the {kind} potential needs the exponent{'s' * (len(needed) - 1)} {' and '.join(needed)}")

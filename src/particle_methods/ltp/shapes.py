@@ -38,7 +38,8 @@ class Shape:
         object.__setattr__(self, "coefficients", coefficients)
         mass, mean = self._moment(0), self._moment(1)
         if not (abs(mass - 1.0) <= MOMENT_TOLERANCE and abs(mean) <= MOMENT_TOLERANCE):
-            raise ValueError(f"shape {self.name!r} must have unit mass and mean 0, got mass {mass} and mean {mean}")
+            raise ValueError(f"the coefficients of shape {self.name!r} on its breaks must give unit mass and mean 0, "
+                             f"got mass {mass} and mean {mean}")
 
     @property
     def radius(self) -> float:

@@ -27,6 +27,7 @@ from ..validation import (
     integer_at_least,
     nonnegative,
     positive,
+    real_array,
     same_length,
 )
 from .checks import particle_arrays
@@ -138,6 +139,7 @@ class Simulation:
         instance("potential", self.potential, Potential)
         positive("h", self.h)
         positive("dt", self.dt)
+        real_array("steps", self.steps)  # the type and a rectangular shape
         if np.asarray(self.steps).dtype.kind not in "iu":
             raise ParameterTypeError(f"steps must hold integers, got {self.steps!r}")
         rows = {name: finite_array(name, getattr(self, name), ndim=2) for name in ("centres", "widths", "velocities")}
@@ -261,7 +263,7 @@ def simulate(initial, potential: Potential, h: float, dt: float, t_final: float,
     elif eps is not None:
         raise ValueError("eps is a parameter of the SP method only")
     reference = shape_named(shape)
-    every = max(steps, 1) if record_every is None else integer_at_least("record_every", record_every, 1)
+    every = max(steps, 1) if record_every is None else integer_at_least("record_every", record_every, 1, MAX_STEPS)
     recorded = sorted(set(range(0, steps + 1, every)) | {steps})
     if log is not None and not callable(log):
         raise ParameterTypeError(f"log must be callable, got {log!r}")

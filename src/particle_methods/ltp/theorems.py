@@ -17,14 +17,26 @@ so that a test can hand it a wrong one) and returns the arrays the claims read.
 
 from __future__ import annotations
 
+import inspect
+
 import numpy as np
 from scipy import integrate
 
 from ..norms import grid_errors
-from ..validation import finite_array, finite_result, instance, same_length, sorted_array
+from ..validation import (
+    ParameterTypeError,
+    finite_array,
+    finite_result,
+    instance,
+    integer_at_least,
+    positive,
+    same_length,
+    sorted_array,
+)
+from .checks import MAX_PARTICLES
 from .initial import InitialDensity, atomic, density_named, golden_atoms
 from .potentials import Potential, potential
-from .solver import Particles, simulate
+from .solver import Particles, Simulation, simulate
 
 #: Theorem 4's weights: (2.14) with the B3 shape of the other runs, and (2.16), defined for the hat shape only.
 WEIGHTS = {"cell": "b3", "biorthogonal": "hat"}
@@ -33,6 +45,36 @@ GAUSS_NODES = 3
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(GAUSS_NODES)
 #: Bisection steps locating the zero of F_h - F in a piece (2^-60 of its length).
 ROOT_STEPS = 60
+#: Most points of the grid on which the studies compare densities or CDFs (the config's finest: 40001).
+MAX_GRID_POINTS = 10**6
+#: Latest time of :func:`atom_flow` (the studies' records end by t = 0.5): a limit on the work of one call, since
+#: the steps of an adaptive integrator over a long time have no a priori bound.
+MAX_FLOW_TIME = 1000.0
+#: Tolerances of :func:`atom_flow`: below RTOL_RANGE[0] the integrator cannot resolve it in double precision.
+RTOL_RANGE = (1e-14, 0.1)
+
+
+def _study(q, keys, run):
+    """Check a study's arguments: its config section ``q``, a dict holding ``keys``, and ``run``, a function
+    called like :func:`~.solver.simulate`."""
+    instance("q", q, dict)
+    missing = [key for key in keys if key not in q]
+    if missing:
+        raise ValueError(f"q (the study's config section) lacks {', '.join(missing)}")
+    if not callable(run):
+        raise ParameterTypeError(f"run must be a function called like simulate, got {run!r}")
+
+
+def _run(run, *args, **kwargs) -> Simulation:
+    """``run(*args, **kwargs)``, refused by name when ``run`` does not take simulate's arguments or returns no
+    :class:`~.solver.Simulation`."""
+    try:
+        inspect.signature(run).bind(*args, **kwargs)
+    except TypeError as error:
+        raise ParameterTypeError(f"run must take the arguments of simulate: {error}") from None
+    except ValueError:  # no signature to read (a builtin): the call decides
+        pass
+    return instance("the result of run", run(*args, **kwargs), Simulation)
 
 
 def _memoized(initial: InitialDensity) -> InitialDensity:
@@ -51,10 +93,14 @@ def _memoized(initial: InitialDensity) -> InitialDensity:
 
 
 def records(sim, times):
-    """Indices of ``sim``'s records at ``times``, which must be multiples of its dt (and of its record step)."""
+    """Indices of ``sim``'s records at ``times`` (at most one per record), which must be multiples of its dt (and of
+    its record step)."""
+    instance("sim", sim, Simulation)
+    times = finite_array("times", times)
+    integer_at_least("the number of times", times.size, 1, sim.times.size)
     recorded = [int(np.argmin(np.abs(sim.times - t))) for t in times]
     if not np.allclose(sim.times[recorded], times, rtol=0, atol=1e-9):
-        raise ValueError("the record times must be multiples of every run's dt")
+        raise ValueError("times must be record times of sim (multiples of every run's dt and record step)")
     return recorded
 
 
@@ -62,17 +108,30 @@ def atom_flow(positions, masses, w: Potential, times, rtol: float = 1e-12) -> np
     """The exact solution of (1.1) from sum_i m_i delta_{a_i} when W' is Lipschitz (section 4): the atoms move by
     x_i' = -sum_j m_j W'(x_i - x_j), integrated by DOP853 to ``rtol``; positions at ``times`` (rows)."""
     positions, masses = finite_array("positions", positions), finite_array("masses", masses)
-    same_length(positions=positions, masses=masses)
+    integer_at_least("the number of positions", same_length(positions=positions, masses=masses), 1, MAX_PARTICLES)
+    if np.any(masses < 0):
+        raise ValueError("masses must be non-negative")
     instance("w", w, Potential)
     times = sorted_array("times", times)
+    if times.size == 0 or times[0] < 0 or np.any(np.diff(times) <= 0) or not 0 < times[-1] <= MAX_FLOW_TIME:
+        raise ValueError(f"times must increase strictly from t >= 0 to a last time in (0, {MAX_FLOW_TIME:g}] (a "
+                         f"limit on the work of one call), got {times}")
+    rtol = positive("rtol", rtol)
+    if not RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]:
+        raise ValueError(f"rtol must lie in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}], got {rtol:g}")
 
     def velocity(_, x):
-        return -(w.derivative(x[:, None] - x[None, :]) @ masses)
+        with np.errstate(over="ignore", invalid="ignore"):
+            return -(w.derivative(x[:, None] - x[None, :]) @ masses)
 
-    solution = integrate.solve_ivp(velocity, (0.0, float(times[-1])), positions, method="DOP853", t_eval=times,
-                                   rtol=rtol, atol=rtol * 1e-2)
+    finite_result("the atoms' initial velocities", velocity(0.0, positions), "the masses or positions overflow")
+    try:
+        solution = integrate.solve_ivp(velocity, (0.0, float(times[-1])), positions, method="DOP853",
+                                       t_eval=times, rtol=rtol, atol=rtol * 1e-2)
+    except ValueError as error:  # W' overflowed on the way (refused by finite_values)
+        raise ValueError(f"the atoms' flow overflowed: the masses or positions are too large ({error})") from None
     if not solution.success:
-        raise ValueError(f"the atoms' flow failed: {solution.message}")
+        raise ValueError(f"the atoms' flow failed (masses or positions too large for the times): {solution.message}")
     return solution.y.T
 
 
@@ -88,7 +147,7 @@ def w1_to_atoms(particles: Particles, positions, masses) -> float:
     if np.any(particles.weights < 0) or np.any(masses < 0):
         raise ValueError("W1 needs non-negative weights and masses")
     if not abs(particles.mass - masses.sum()) <= 1e-9 * masses.sum():
-        raise ValueError(f"the particles' mass {particles.mass!r} must equal the atoms' {masses.sum()!r}")
+        raise ValueError(f"masses must sum to the particles' mass {particles.mass!r}, got {masses.sum()!r}")
     order = np.argsort(positions, kind="stable")
     x, levels = positions[order], np.concatenate([[0.0], np.cumsum(masses[order])])
     points = np.union1d(particles.breaks, x)
@@ -119,6 +178,7 @@ def theorem3_atomic(q, run=simulate) -> dict:
     W = |x|^a/a, dt = ``q["dt"]`` at every h, the W1 distance to the exact atoms (:func:`atom_flow`), largest over
     the record times; and the same distance at h_min with dt / ``q["dt_factor"]``, whose change measures the
     time error's share."""
+    _study(q, ("atoms", "a", "dt", "dt_factor", "h_values", "times"), run)
     positions, masses = golden_atoms(q["atoms"], -0.9, 0.9)
     initial = atomic(positions, masses)
     w = potential("power", a=q["a"])
@@ -126,7 +186,7 @@ def theorem3_atomic(q, run=simulate) -> dict:
     exact = atom_flow(positions, masses, w, times)
 
     def distance(h, dt):
-        sim = run(initial, w, h, dt, times[-1], record_every=int(round(times[0] / dt)))
+        sim = _run(run, initial, w, h, dt, times[-1], record_every=int(round(times[0] / dt)))
         return max(w1_to_atoms(sim.at(i), x, masses) for i, x in zip(records(sim, times), exact))
 
     distances = np.array([distance(h, q["dt"]) for h in h_values])
@@ -140,6 +200,8 @@ def theorem3_atomic(q, run=simulate) -> dict:
 def theorem3_rough(q, grid_points: int, run=simulate) -> dict:
     """Theorem 3 with dt = dt_over_h h on rough data: largest W1 distance over the record times for each h to the
     reference (h_min / reference_factor, its own dt), and the reference's distance to the run with twice its h."""
+    _study(q, ("initial", "a", "h_values", "dt_over_h", "reference_factor", "times"), run)
+    grid_points = integer_at_least("grid_points", grid_points, 2, MAX_GRID_POINTS)
     initial = density_named(q["initial"])
     w = potential("power", a=q["a"])
     grid = np.linspace(initial.lower, initial.upper, grid_points)
@@ -148,7 +210,7 @@ def theorem3_rough(q, grid_points: int, run=simulate) -> dict:
 
     def cdfs(h):
         dt = q["dt_over_h"] * h
-        sim = run(initial, w, h, dt, times[-1], record_every=int(round(times[0] / dt)))
+        sim = _run(run, initial, w, h, dt, times[-1], record_every=int(round(times[0] / dt)))
         return [sim.at(i).cumulative_mass(grid) for i in records(sim, times)]
 
     def distance(a, b):
@@ -167,6 +229,8 @@ def theorem4_differences(q, grid_points: int, run=simulate) -> dict:
     record times (the theorem's sup over n), for each weight rule of :data:`WEIGHTS`. The densities are compared
     on a grid of ``grid_points`` and at the shape breaks of both runs, where the hat densities have their kinks
     (their largest difference sits at one of those)."""
+    _study(q, ("initial", "a", "h_values", "dt_over_h2", "times"), run)
+    grid_points = integer_at_least("grid_points", grid_points, 2, MAX_GRID_POINTS)
     initial = _memoized(density_named(q["initial"]))
     w = potential("power", a=q["a"])
     grid = np.linspace(initial.lower - 0.1, initial.upper + 0.1, grid_points)
@@ -175,8 +239,8 @@ def theorem4_differences(q, grid_points: int, run=simulate) -> dict:
 
     def states(h, weights):
         dt = q["dt_over_h2"] * h**2
-        sim = run(initial, w, h, dt, times[-1], shape=WEIGHTS[weights], weights=weights,
-                  record_every=int(round(times[0] / dt)))
+        sim = _run(run, initial, w, h, dt, times[-1], shape=WEIGHTS[weights], weights=weights,
+                   record_every=int(round(times[0] / dt)))
         return [sim.at(i) for i in records(sim, times)]
 
     def distance(a: Particles, b: Particles):
@@ -197,13 +261,15 @@ def theorem1_time_error(q, grid_points: int, run=simulate) -> dict:
     """Theorem 1's time error: W = |x|^a/a from ``q["initial"]`` at each h of h_values, runs at every dt of
     dt_values (largest first); the L1 and Linf distances at t of each run to the run with the smallest dt
     (rows: h, then dt; columns: L1, Linf)."""
+    _study(q, ("initial", "a", "t", "h_values", "dt_values", "fit_points"), run)
+    grid_points = integer_at_least("grid_points", grid_points, 2, MAX_GRID_POINTS)
     initial = _memoized(density_named(q["initial"]))
     w = potential("power", a=q["a"])
     grid = np.linspace(initial.lower - 0.1, initial.upper + 0.1, grid_points)
     h_values, dt_values = np.asarray(q["h_values"], float), np.asarray(q["dt_values"], float)
     gaps = []
     for h in h_values:
-        final = [run(initial, w, h, dt, q["t"]).at(-1).density(grid) for dt in dt_values]
+        final = [_run(run, initial, w, h, dt, q["t"]).at(-1).density(grid) for dt in dt_values]
         gaps.append([grid_errors(density, final[-1], grid) for density in final[:-1]])
     return {"theorem1_h": h_values, "theorem1_dt": dt_values, "theorem1_gaps": np.array(gaps),
             "theorem1_fit_points": q["fit_points"], "theorem1_t": q["t"],
