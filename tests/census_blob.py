@@ -19,7 +19,6 @@ from particle_methods.blob import (
     radial,
     rings,
     solver,
-    sums_1d,
     vector_erfc,
     vector_exp,
 )

@@ -31,8 +31,8 @@ def _initial_density(data, labels, rho0):
         return data(labels)
     rho0 = finite_array("rho0", rho0)
     if rho0.shape != labels.shape[:1] or np.any(rho0 < 0):
-        raise ValueError(f"rho0 must hold one non-negative initial density per label of alpha or points ({labels.shape[0]}), got "
-                         f"shape {rho0.shape}")
+        raise ValueError(f"rho0 must hold one non-negative initial density per label of alpha or points "
+                         f"({labels.shape[0]}), got shape {rho0.shape}")
     return rho0
 
 

@@ -205,7 +205,8 @@ def profile_potential_kernel(kinds, coefficients, parameters, r):
 def is_newtonian_2d(kinds) -> bool:
     """Whether 2D terms are the Newtonian kernel, raw (one LOG term) or mollified by (4.2) (two
     GAUSS_LOG_2D terms): its sums have a path of their own (:func:`_newtonian_2d_sums`). A predicate on the
-    kinds of a checked :class:`Kernel` or of :func:`.pair_sums.pair_sums`'s checked arrays: it trusts its caller's checks."""
+    kinds of a checked :class:`Kernel` or of :func:`.pair_sums.pair_sums`'s checked arrays: it trusts its caller's
+    checks."""
     kinds = tuple(int(kind) for kind in kinds)
     return kinds in ((LOG,), (GAUSS_LOG_2D, GAUSS_LOG_2D))
 

@@ -118,4 +118,5 @@ def mollifier(order: int, dimension: int = 1) -> Mollifier:
         return MOLLIFIERS[(dimension, order)]
     except KeyError:
         available = ", ".join(f"m = {m} in {d}D" for d, m in MOLLIFIERS)
-        raise ValueError(f"no mollifier of order m = {order} in dimension d = {dimension}: available {available}") from None
+        raise ValueError(f"no mollifier of order m = {order} in dimension d = {dimension}: available "
+                         f"{available}") from None

@@ -187,7 +187,8 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
         else:
             derivative = np.concatenate([velocity.ravel(), -divergence * state[n * dimension:]])
         return finite_result(f"the right-hand side at t = {t:.6g}", derivative,
-                             "the velocities or densities overflow (points, masses, densities0 or the kernel too large)")
+                             "the velocities or densities overflow (points, masses, densities0 or the kernel too "
+                             "large)")
 
     start = points.ravel() if not with_density else np.concatenate([points.ravel(), densities0])
     collision = _collision_event(points, kernel)

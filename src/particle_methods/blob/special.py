@@ -65,8 +65,8 @@ def dawson_and_slope(z):
     derivatives from F' = 1 - 2 z F, i.e. F^(k+1) = -2 z0 F^(k) - 2 k F^(k-1). Above: the
     asymptotic series F(z) ~ sum_n a_n / (2 z), a_n = (2n - 1)!! / (2 z^2)^n, whose terms fall
     below 1e-17 of the sum within 14 terms there, and F'(z) = -sum_{n >= 1} a_n without the
-    cancellation of 1 - 2 z F. F is odd, F' even.
-    A compiled scalar function of the kernels: it trusts its caller's checks (NaN in gives NaN out).
+    cancellation of 1 - 2 z F. F is odd, F' even. A compiled scalar function of the kernels: it trusts its
+    caller's checks (NaN in gives NaN out).
     """
     if z != z:  # NaN in, NaN out (and no table index from it)
         return z, z

@@ -322,7 +322,8 @@ def _log_row(k, x, masses, terms, series_g, series_l, lower, upper, g, lap_tile)
 def sorted_log_sums(x, masses, terms, series_g, series_l, radius):
     """Velocities and divergences of the log kernel for positions ``x`` sorted increasingly; ``terms`` the
     arrays of :meth:`.kernels.Kernel.arrays`, (series_g, series_l) of :func:`log_series`, ``radius`` the
-    near window's half-width. Compiled, for the arrays :func:`.pair_sums.pair_sums` has checked: it trusts its caller's checks."""
+    near window's half-width. Compiled, for the arrays :func:`.pair_sums.pair_sums` has checked: it trusts its
+    caller's checks."""
     n = x.size
     lower, upper = _windows(x, radius)
     velocity = np.empty(n)
