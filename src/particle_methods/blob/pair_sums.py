@@ -337,21 +337,21 @@ def _checked_terms(dimension, kinds, coefficients, parameters, tables, steps):
     coefficients, parameters = finite_array("coefficients", coefficients), finite_array("parameters", parameters)
     if same_length(kinds=kind_values, coefficients=coefficients, parameters=parameters) == 0:
         raise ValueError("kinds: a kernel needs at least one term")
-    if not all(kind in KIND_DIMENSIONS and dimension in KIND_DIMENSIONS[kind] for kind in kind_values):
+    kind_list = kind_values.tolist()  # a few terms: Python's loop is faster than numpy's calls here
+    if not all(kind in KIND_DIMENSIONS and dimension in KIND_DIMENSIONS[kind] for kind in kind_list):
         raise ValueError(f"kinds must be term kinds written for dimension {dimension}, got {kind_values}")
     tables, steps = finite_values("tables", tables), finite_array("steps", steps)
     if tables.ndim != 3 or tables.shape[1:2] != (2,) or tables.shape[2] < 2 or steps.shape != tables.shape[:1]:
         raise ValueError(f"tables must have shape (rows, 2, M >= 2) and steps (rows,), got {tables.shape} and "
                          f"{steps.shape}")
-    if np.any(steps <= 0):
+    if steps.min() <= 0:
         raise ValueError("steps must be positive")
-    kind_values = kind_values.astype(np.int64)
-    tabulated = kind_values == TABLE
-    if np.any(tabulated & ~np.isin(parameters, np.arange(tables.shape[0]))):
-        raise ValueError(f"parameters: a TABLE term's parameter must index one of the {tables.shape[0]} tables")
-    if np.any(~tabulated & (kind_values != LOG) & (parameters <= 0)):
-        raise ValueError("parameters: the widths, powers and lengths of the terms must be positive")
-    return kind_values, coefficients, parameters, np.ascontiguousarray(tables), steps
+    for kind, parameter in zip(kind_list, parameters.tolist()):
+        if kind == TABLE and parameter not in range(tables.shape[0]):
+            raise ValueError(f"parameters: a TABLE term's parameter must index one of the {tables.shape[0]} tables")
+        if kind not in (TABLE, LOG) and parameter <= 0:
+            raise ValueError("parameters: the widths, powers and lengths of the terms must be positive")
+    return kind_values.astype(np.int64), coefficients, parameters, np.ascontiguousarray(tables), steps
 
 
 def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps, newtonian_2d="auto"):
