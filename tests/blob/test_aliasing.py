@@ -68,7 +68,7 @@ def test_the_saddle_ratio_falls_below_one_between_h_1_20_and_1_40():
     ((DATA, 0.05, 1.0, T), "q must lie"),
     ((DATA, 0.05, 0.5, T), "q must lie"),
     ((DATA, 0.05, Q, -1.0), "t must be non-negative"),
-    ((DATA, 0.05, Q, T, 5), "unknown mollifier order"),
+    ((DATA, 0.05, Q, T, 5), "no mollifier of order"),
 ])
 def test_bad_inputs_are_refused(arguments, message):
     with pytest.raises(ValueError, match=message):

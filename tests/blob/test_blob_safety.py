@@ -321,3 +321,88 @@ def test_issue_46_near_field_pairs_are_counted_and_refused_before_the_sums():
 def test_issue_46_mass_defect_refuses_points_of_no_dimension():
     with pytest.raises(ValueError, match=r"points must have shape \(N, d\) with d = 1 or 2, got \(2, 0\)"):
         mass_defect(np.zeros((2, 0)), [1.0, 1.0], [0.5, 0.5], kernel_1d("newtonian_attractive"), 0.1)  # IndexError
+
+
+def test_issue_46_pair_sums_check_the_kernel_arrays_and_their_sums():
+    """pair_sums took the arrays of Kernel.arrays unchecked: NaN kinds or parameters, strings and ragged lists
+    gave NaN sums, numba typing errors or messages naming nothing; huge masses or widths of 5e-324 NaN sums."""
+    from particle_methods.blob.pair_sums import pair_sums
+
+    line = np.array([[-0.5], [0.0], [0.5]])
+    masses = np.array([0.25, 0.5, 0.25])
+    arrays = dict(zip(("kinds", "coefficients", "parameters", "tables", "steps"), CUBIC.arrays()))
+    for name, bad in [("kinds", np.array([1.0, np.nan])), ("kinds", "abc"), ("kinds", np.array([99, 99])),
+                      ("coefficients", [[1.0], [2.0, 3.0]]), ("parameters", np.array([0.3, np.nan])),
+                      ("parameters", np.array([0.3, -1.0])), ("tables", None), ("steps", np.array([np.inf])),
+                      ("positions", "abc"), ("masses", np.broadcast_to(1.0, (10**9,)))]:
+        with pytest.raises(ValueError, match=name):
+            pair_sums(**{"positions": line, "masses": masses, **arrays, name: bad})
+    with pytest.raises(ValueError, match="not finite: .*parameters"):
+        pair_sums(line, masses, **{**arrays, "parameters": np.array([5e-324, 5e-324])})
+    with pytest.raises(ValueError, match="not finite: .*masses"):
+        pair_sums(line, np.full(3, -1.7e308), **arrays)
+
+
+def test_issue_46_newtonian_sums_refuse_an_overflow_and_take_huge_widths():
+    """Huge widths raised an OverflowError (the square of the closest-pair bound), huge coefficients returned inf."""
+    from particle_methods.blob import newtonian_fmm
+
+    plane = np.array([[0.0, 0.0], [0.5, 0.0], [0.0, 0.5]])
+    masses = np.array([0.25, 0.5, 0.25])
+    # Points far closer than the widths: None, the documented answer that sends the caller to the direct sums.
+    assert newtonian_fmm.newtonian_sums(plane, masses, [2.0, -1.0], [1e300, 1e300]) is None
+    with pytest.raises(ValueError, match="coefficients"):
+        newtonian_fmm.newtonian_sums(plane, masses, [-1.7e308, -1.7e308], [0.5, 0.7])
+
+
+def test_issue_46_radial_quadrature_checks_its_inputs_and_result():
+    """mollified_laplacian took any laplacian, mollifier, delta and r (AttributeError for a mollifier of None, NaN
+    for delta = 5e-324, a hang for 10^9 radii); tabulate on a radius of 5e-324 failed in scipy."""
+    from particle_methods.blob.radial import mollified_laplacian, tabulate
+
+    def quartic(r):
+        return 4.0 * np.asarray(r) ** 2
+
+    r = np.array([0.0, 0.5, 1.0])
+    for name, arguments in [("mollifier", (quartic, None, 0.5, r)), ("laplacian", (None, PSI2, 0.5, r)),
+                            ("delta", (quartic, PSI2, 5e-324, r)), ("r", (quartic, PSI2, 0.5, [1.0, np.inf])),
+                            ("r", (quartic, PSI2, 0.5, np.broadcast_to(0.0, (10**7,)))),
+                            ("laplacian", (lambda x: np.full(np.shape(x), np.nan), PSI2, 0.5, r))]:
+        with pytest.raises(ValueError, match=name):
+            mollified_laplacian(*arguments)
+    with pytest.raises(ValueError, match="radius"):
+        tabulate(quartic, PSI2, 0.5, 5e-324, 21)
+    with pytest.raises(ValueError, match="radius"):
+        tabulate(quartic, PSI2, 0.5, 1e300, 21)
+
+
+def test_issue_46_limits_of_mollifier_order_run_evaluations_and_tracer_offset():
+    with pytest.raises(ValueError, match="order = 10.* twice the number of Gaussians"):
+        Mollifier(10**400, 1, (4 / 3, -1 / 3), (1.0, 2.0))
+    with pytest.raises(ValueError, match="evaluations must be at most"):
+        BlobRun(SMALL_RUN.kernel, 0.5, SMALL_RUN.times, SMALL_RUN.positions, SMALL_RUN.densities, SMALL_RUN.masses,
+                10**400)
+    with pytest.raises(ValueError, match="offset = 1e\\+300 must be at most MAX_OFFSET"):
+        mass_defect(LINE, np.ones(5), np.full(5, 0.2), CUBIC, 0.05, offset=1e300)
+
+
+def test_issue_46_refusals_name_the_parameter():
+    """Refusals that named another parameter or none (the census, tests/census_blob.py)."""
+    with pytest.raises(ValueError, match="dimension d = 3"):
+        mollifier(4, 3)
+    with pytest.raises(ValueError, match="parameters: .* must be positive"):
+        Kernel("k", 1, (POWER,), (1.0,), (-3.0,))
+    with pytest.raises(ValueError, match="per label of alpha"):
+        newtonian_exact("smooth20", "newtonian_attractive", [], 0.5, rho0=[0.5, 1.0, 0.5])
+    with pytest.raises(ValueError, match="points"):
+        newtonian_exact_2d("regular", np.full((2, 2), 1.7e308), 0.5)
+    with pytest.raises(ValueError, match="max rho0"):
+        newtonian_exact_2d("regular", np.zeros((1, 2)), 0.5, rho0=[1e300])
+    with pytest.raises(ValueError, match="weights"):
+        PSI1.sums_1d(np.zeros(3), np.zeros(3), np.full(3, -1.7e308), 0.3)
+    with pytest.raises(ValueError, match="masses"):
+        BlobRun(SMALL_RUN.kernel, 0.5, SMALL_RUN.times, SMALL_RUN.positions, None, [], 0)
+    with pytest.raises(ValueError, match="points, masses"):
+        integrate_particles(np.full((3, 1), 1e300), np.ones(3), np.ones(3), CUBIC, [0.0, 0.1])
+    with pytest.raises(ValueError, match="points, masses"):
+        integrate_particles(LINE[:3], np.ones(3), np.full(3, 1e300), CUBIC, [0.0, 0.1])

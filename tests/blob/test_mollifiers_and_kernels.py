@@ -299,7 +299,7 @@ def test_pair_sums_refuse_non_finite_input_and_mismatched_masses():
 @pytest.mark.parametrize(
     "make, message",
     [
-        (lambda: mollifier(8, 1), "unknown mollifier order"),
+        (lambda: mollifier(8, 1), "no mollifier of order"),
         (lambda: kernel_1d("morse"), "unknown kernel"),
         (lambda: kernel_1d("cubic", mollifier(4, 1), 0.0), "delta must be positive"),
         (lambda: kernel_1d("cubic", mollifier(4, 2), 0.1), "1D mollifier"),

@@ -71,7 +71,7 @@ def test_particle_method_has_no_density_for_the_newtonian_kernel():
         (lambda: run_1d("smooth20", "cubic", 0.3, [0, 1]), "must divide 1"),
         (lambda: run_1d("smooth20", "cubic", 0.1, [0, 1], q=1.0), r"q must lie in \(1/2, 1\)"),
         (lambda: run_1d("smooth20", "cubic", 0.1, [0, 1], q=0.4), r"q must lie in \(1/2, 1\)"),
-        (lambda: run_1d("smooth20", "cubic", 0.1, [0, 1], order=5), "unknown mollifier order"),
+        (lambda: run_1d("smooth20", "cubic", 0.1, [0, 1], order=5), "no mollifier of order"),
         (lambda: run_1d("smooth20", "log", 0.1, [0, 1]), "unknown kernel"),
         (lambda: run_1d("gauss", "cubic", 0.1, [0, 1]), "unknown initial data"),
         (lambda: run_1d("smooth20", "cubic", 0.1, [0, 1], method="vortex"), "unknown method"),

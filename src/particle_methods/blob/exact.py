@@ -31,8 +31,8 @@ def _initial_density(data, labels, rho0):
         return data(labels)
     rho0 = finite_array("rho0", rho0)
     if rho0.shape != labels.shape[:1] or np.any(rho0 < 0):
-        raise ValueError(f"rho0 must hold one non-negative initial density per label ({labels.shape[0]}), got "
-                         f"shape {rho0.shape}")
+        raise ValueError(f"rho0 must hold one non-negative initial density per label of alpha or points "
+                         f"({labels.shape[0]}), got shape {rho0.shape}")
     return rho0
 
 
@@ -68,8 +68,9 @@ def newtonian_exact_2d(data, points, t: float, rho0=None):
         raise ValueError(f"points must have shape (N, 2) with N >= 1, got {points.shape}")
     rho0 = _initial_density(data, points, rho0)
     if t * rho0.max() >= 1.0:
-        raise ValueError(f"t = {t} is past the blow-up time {1.0 / rho0.max()} of the exact solution")
-    r0 = np.linalg.norm(points, axis=1)
+        raise ValueError(f"t = {t} is past the blow-up time 1 / max rho0 = {1.0 / rho0.max()} of the exact solution")
+    with np.errstate(over="ignore"):
+        r0 = finite_result("|points|", np.hypot(points[:, 0], points[:, 1]), "points beyond the double range")
     r = np.sqrt(np.maximum(r0**2 - 2.0 * t * data.mass_from_origin(r0), 0.0))
     scale = np.divide(r, r0, out=np.zeros_like(r0), where=r0 > 0)
     density = np.zeros_like(r0)

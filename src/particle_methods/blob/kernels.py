@@ -125,7 +125,7 @@ def _forces(kind, coefficient, parameter, r, dimension):
 @njit
 def radial_power(r, b):
     """r^b, r > 0, by products and a square root for the exponents of section 4 (a call to pow costs
-    several times more); pow for the others."""
+    several times more); pow for the others. A compiled helper of the pair sums: it trusts its caller's checks."""
     if b == 0.0:
         return 1.0
     if b == 1.0:
@@ -204,7 +204,9 @@ def profile_potential_kernel(kinds, coefficients, parameters, r):
 
 def is_newtonian_2d(kinds) -> bool:
     """Whether 2D terms are the Newtonian kernel, raw (one LOG term) or mollified by (4.2) (two
-    GAUSS_LOG_2D terms): its sums have a path of their own (:func:`_newtonian_2d_sums`)."""
+    GAUSS_LOG_2D terms): its sums have a path of their own (:func:`_newtonian_2d_sums`). A predicate on the
+    kinds of a checked :class:`Kernel` or of :func:`.pair_sums.pair_sums`'s checked arrays: it trusts its caller's
+    checks."""
     kinds = tuple(int(kind) for kind in kinds)
     return kinds in ((LOG,), (GAUSS_LOG_2D, GAUSS_LOG_2D))
 
@@ -243,8 +245,8 @@ class Kernel:
                 raise ValueError(f"the parameter of a TABLE term must index one of the {len(tables)} tables, "
                                  f"got {parameter}")
             if kind not in (LOG, TABLE) and parameter <= 0:
-                raise ValueError(f"the parameter of a term of kind {kind} (width, power or length) must be positive, "
-                                 f"got {parameter}")
+                raise ValueError(f"parameters: the parameter of a term of kind {kind} (width, power or length) must be "
+                                 f"positive, got {parameter}")
         if len({table.gradient.size for table in tables}) > 1:
             raise ValueError("the radial tables of one kernel must have the same number of nodes")
         object.__setattr__(self, "kinds", tuple(int(kind) for kind in kinds))

@@ -35,11 +35,13 @@ class Mollifier:
     widths: tuple[float, ...]
 
     def __post_init__(self):
-        integer_at_least("order", self.order, 1)
+        order = integer_at_least("order", self.order, 1)
         integer_at_least("dimension", self.dimension, 1, 3)
         weights, widths = finite_array("weights", self.weights), finite_array("widths", self.widths)
         if same_length(weights=weights, widths=widths) == 0 or np.any(widths <= 0):
             raise ValueError(f"a mollifier needs at least one Gaussian and positive widths, got {self.widths}")
+        if order > 2 * widths.size:  # k Gaussians meet at most k moment conditions: the mass, moments 2, ..., 2k - 2
+            raise ValueError(f"order = {order} exceeds twice the number of Gaussians (widths), {2 * widths.size}")
         # Tuples of floats: the mollifier is a key of the radial tables' cache.
         object.__setattr__(self, "weights", tuple(float(w) for w in weights))
         object.__setattr__(self, "widths", tuple(float(s) for s in widths))
@@ -72,7 +74,8 @@ class Mollifier:
             sums = _windowed_sums(targets, np.ascontiguousarray(sources[order]), np.ascontiguousarray(weights[order]),
                                   np.asarray(self.weights) / (np.sqrt(np.pi) * widths), 1.0 / widths**2,
                                   REACH * widths.max())
-        return finite_result("the mollified sums", sums, f"delta = {delta} is too small for double precision")
+        return finite_result("the mollified sums", sums, f"the weights are too large or delta = {delta} is too small "
+                             "for double precision")
 
 
 #: Half-width of the window of :meth:`Mollifier.sums_1d`, in widths of the widest Gaussian.
@@ -115,4 +118,5 @@ def mollifier(order: int, dimension: int = 1) -> Mollifier:
         return MOLLIFIERS[(dimension, order)]
     except KeyError:
         available = ", ".join(f"m = {m} in {d}D" for d, m in MOLLIFIERS)
-        raise ValueError(f"unknown mollifier order m = {order} in {dimension}D: available {available}") from None
+        raise ValueError(f"no mollifier of order m = {order} in dimension d = {dimension}: available "
+                         f"{available}") from None

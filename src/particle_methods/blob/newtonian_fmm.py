@@ -264,7 +264,9 @@ def newtonian_sums(positions, masses, coefficients, widths):
         raise ValueError("positions spread over more than 2^25 widths of the mollifier (the cell list's keys)")
     total = float(np.sum(coefficients))
     if widths.size == 0:
-        return (-total / (2 * math.pi)) * far_field(positions, masses), np.zeros(masses.size)
+        velocity = finite_result("the velocities", (-total / (2 * math.pi)) * far_field(positions, masses),
+                                 "the masses or coefficients are too large")
+        return velocity, np.zeros(masses.size)
     inverse = 1.0 / np.asarray(widths, dtype=np.float64) ** 2
     g_weights = np.asarray(coefficients, dtype=np.float64) / (2 * math.pi)
     l_weights = np.asarray(coefficients, dtype=np.float64) * inverse / math.pi
@@ -291,11 +293,12 @@ def newtonian_sums(positions, masses, coefficients, widths):
         with numba_threads(threads - 1):
             vx, vy, div, closest = _near_sums(*arguments)
         field = far.result()
-    if closest < (CLOSE_FRACTION * float(np.min(widths))) ** 2:
+    if math.sqrt(closest) < CLOSE_FRACTION * float(np.min(widths)):
         return None
     velocity = (-total / (2 * math.pi)) * field
     velocity[order, 0] += vx
     velocity[order, 1] += vy
     divergence = np.empty(masses.size)
     divergence[order] = div
-    return velocity, divergence
+    cause = "the masses or coefficients are too large, or the widths too small"
+    return finite_result("the velocities", velocity, cause), finite_result("the divergences", divergence, cause)

@@ -16,11 +16,12 @@ from numba import prange
 
 from ..jit import njit, njit_threaded
 from ..threads import threads_for
-from ..validation import one_of
+from ..validation import finite_array, finite_result, finite_values, one_of, same_length
 from . import newtonian_fmm, sums_1d
 from .kernels import (
     EXP,
     GAUSS_LOG_2D,
+    KIND_DIMENSIONS,
     LOG,
     POWER,
     TABLE,
@@ -267,7 +268,8 @@ def _tiled_2d_sums(positions, masses, constants, terms, self_lap):
 def tiled_2d_supported(kinds) -> bool:
     """Whether a 2D kernel's terms are all of the kinds the tiled path takes: powers, Gaussian log terms
     and tables (the mollified kernels of section 4.4 other than the Newtonian one), raw log and
-    exponential terms (the particle method on them)."""
+    exponential terms (the particle method on them). A predicate on the kinds :func:`pair_sums` has checked:
+    it trusts its caller's checks."""
     return all(kind in (TABLE, GAUSS_LOG_2D, POWER, LOG, EXP) for kind in kinds)
 
 
@@ -326,6 +328,32 @@ NEWTONIAN_2D_METHODS = {"auto": "the fast multipole method from FMM_MIN_PARTICLE
                         "direct": "the direct tiled sums"}
 
 
+def _checked_terms(dimension, kinds, coefficients, parameters, tables, steps):
+    """The arrays of :meth:`.kernels.Kernel.arrays` as the compiled sums take them (int64 kinds, float64 the
+    others), after the checks of :class:`.kernels.Kernel` (known kinds of this dimension, positive widths, powers
+    and lengths, TABLE parameters indexing a row of ``tables``) and of the tables (rows (2, M >= 2) of finite
+    values, one positive step each): a ValueError (ParameterTypeError) naming the array otherwise."""
+    kind_values = finite_array("kinds", kinds)
+    coefficients, parameters = finite_array("coefficients", coefficients), finite_array("parameters", parameters)
+    if same_length(kinds=kind_values, coefficients=coefficients, parameters=parameters) == 0:
+        raise ValueError("kinds: a kernel needs at least one term")
+    kind_list = kind_values.tolist()  # a few terms: Python's loop is faster than numpy's calls here
+    if not all(kind in KIND_DIMENSIONS and dimension in KIND_DIMENSIONS[kind] for kind in kind_list):
+        raise ValueError(f"kinds must be term kinds written for dimension {dimension}, got {kind_values}")
+    tables, steps = finite_values("tables", tables), finite_array("steps", steps)
+    if tables.ndim != 3 or tables.shape[1:2] != (2,) or tables.shape[2] < 2 or steps.shape != tables.shape[:1]:
+        raise ValueError(f"tables must have shape (rows, 2, M >= 2) and steps (rows,), got {tables.shape} and "
+                         f"{steps.shape}")
+    if steps.min() <= 0:
+        raise ValueError("steps must be positive")
+    for kind, parameter in zip(kind_list, parameters.tolist()):
+        if kind == TABLE and parameter not in range(tables.shape[0]):
+            raise ValueError(f"parameters: a TABLE term's parameter must index one of the {tables.shape[0]} tables")
+        if kind not in (TABLE, LOG) and parameter <= 0:
+            raise ValueError("parameters: the widths, powers and lengths of the terms must be positive")
+    return kind_values.astype(np.int64), coefficients, parameters, np.ascontiguousarray(tables), steps
+
+
 def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps, newtonian_2d="auto"):
     """Velocities -sum_j m_j grad K(X_i - X_j) (shape (N, d)) and divergences -sum_j m_j Delta K(X_i - X_j).
 
@@ -336,15 +364,23 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
     The 2D Newtonian kernel, raw or mollified by (4.2), takes a vectorised path with the same
     accumulators (:func:`_newtonian_2d_sums`, exponentials from :mod:`.vector_exp`), or the fast multipole
     method (:mod:`.newtonian_fmm`), as ``newtonian_2d`` says (:data:`NEWTONIAN_2D_METHODS`).
-    The arrays are those of :meth:`Kernel.arrays`; ``positions`` (N, d) and ``masses`` (N,) are checked here.
+    The arrays are those of :meth:`Kernel.arrays`; they, ``positions`` (N, d) and ``masses`` (N,) are checked
+    here, and so are the sums (a ValueError if they overflow).
     """
     one_of("newtonian_2d", newtonian_2d, NEWTONIAN_2D_METHODS)
-    positions = np.ascontiguousarray(positions, dtype=np.float64)
-    masses = np.ascontiguousarray(masses, dtype=np.float64)
-    if positions.ndim != 2 or masses.shape != positions.shape[:1]:
-        raise ValueError(f"positions must have shape (N, d) and masses (N,), got {positions.shape} and {masses.shape}")
-    if not (np.isfinite(positions).all() and np.isfinite(masses).all()):
-        raise ValueError("positions and masses must be finite")
+    positions = np.ascontiguousarray(finite_array("positions", positions, ndim=2))
+    masses = np.ascontiguousarray(finite_array("masses", masses))
+    if masses.shape != positions.shape[:1] or not 1 <= positions.shape[1] <= 3:
+        raise ValueError(f"positions must have shape (N, d), d <= 3, and masses (N,), got {positions.shape} and "
+                         f"{masses.shape}")
+    terms = _checked_terms(positions.shape[1], kinds, coefficients, parameters, tables, steps)
+    velocity, divergence = _pair_sums(positions, masses, *terms, newtonian_2d)
+    cause = "the positions, masses, coefficients or parameters are too large (or the widths too small)"
+    return finite_result("the velocities", velocity, cause), finite_result("the divergences", divergence, cause)
+
+
+def _pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps, newtonian_2d):
+    """The sums of :func:`pair_sums` for its checked arrays."""
     if positions.shape[1] == 2 and is_newtonian_2d(kinds):
         return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters, newtonian_2d)
     if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > TABLE_REACH * steps.min():
@@ -375,7 +411,8 @@ def generic_sums_kernel(positions, masses, kinds, coefficients, parameters, tabl
 
 @njit_threaded
 def pair_energy(positions, masses, kinds, coefficients, parameters, tables, steps):
-    """E_delta = 1/2 sum_{i,j} K(X_i - X_j) m_i m_j, (2.4) on the particle system (2.3)."""
+    """E_delta = 1/2 sum_{i,j} K(X_i - X_j) m_i m_j, (2.4) on the particle system (2.3). Compiled, for the arrays
+    of a checked run and kernel (:meth:`.solver.BlobRun.energies` checks the result): it trusts its caller's checks."""
     n, dimension = positions.shape
     partial = np.zeros(n)
     for i in prange(n):

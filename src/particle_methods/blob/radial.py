@@ -56,8 +56,14 @@ class RadialTable:
 def mollified_laplacian(laplacian, mollifier: Mollifier, delta: float, r) -> np.ndarray:
     """L_delta at the radii ``r`` (array), all at once: one adaptive quadrature of the vector-valued
     integrand per Gaussian (scipy's quad_vec, error in the max norm); ``laplacian`` is the radial
-    Delta K, vectorised and integrable at 0 in 2D (it is never evaluated at rho = 0)."""
-    r = np.asarray(r, dtype=np.float64)
+    Delta K, vectorised and integrable at 0 in 2D (it is never evaluated at rho = 0); a ValueError if the result
+    is not finite."""
+    laplacian, mollifier = _checked_laplacian(laplacian, mollifier)
+    delta = positive("delta", delta)
+    r = finite_array("r", r)
+    if r.size == 0 or r.size > MAX_TABLE_WORK or np.any(r < 0):
+        raise ValueError(f"r must hold 1 to MAX_TABLE_WORK = {MAX_TABLE_WORK:g} radii r >= 0 (a limit on the work of "
+                         f"the quadrature), got {r.size} from {r.min(initial=0.0):.3g}")
     total = np.zeros_like(r)
     for weight, s in zip(mollifier.weights, mollifier.scaled_widths(delta)):
         def integrand(rho, s=s):
@@ -66,26 +72,35 @@ def mollified_laplacian(laplacian, mollifier: Mollifier, delta: float, r) -> np.
         values, _ = integrate.quad_vec(integrand, 0.0, float(r.max()) + 9 * s, epsabs=1e-13, epsrel=1e-11,
                                        norm="max", limit=5000)
         total += weight * values
-    return total
+    return finite_result("L_delta", total, f"laplacian is not finite or overflows with delta = {delta} at r up to "
+                         f"{r.max():.3g}")
+
+
+def _checked_laplacian(laplacian, mollifier):
+    """(laplacian, mollifier) if the first is a function and the second a 2D :class:`Mollifier`."""
+    if not callable(laplacian):
+        raise ParameterTypeError(f"laplacian must be a function of r, got {laplacian!r}")
+    if instance("mollifier", mollifier, Mollifier).dimension != 2:
+        raise ValueError("radial tables are built for 2D mollifiers")
+    return laplacian, mollifier
 
 
 def tabulate(laplacian, mollifier: Mollifier, delta: float, radius: float = 5.0, points: int = 2001) -> RadialTable:
     """Tables of g and L_delta for a radial 2D kernel given by its Laplacian (read-only arrays); a
     ValueError if they overflow (see :func:`~particle_methods.blob.kernels.kernel_2d` for the ranges
     of delta, radius and points that are accepted there)."""
-    if not callable(laplacian):
-        raise ParameterTypeError(f"laplacian must be a function of r, got {laplacian!r}")
-    if instance("mollifier", mollifier, Mollifier).dimension != 2:
-        raise ValueError("radial tables are built for 2D mollifiers")
+    laplacian, mollifier = _checked_laplacian(laplacian, mollifier)
     positive("delta", delta)
     radius = positive("radius", radius)
     points = integer_at_least("points", points, 3, int(MAX_TABLE_WORK))
     r = np.linspace(0.0, radius, points)
+    if not np.all(np.diff(r) > 0):
+        raise ValueError(f"radius = {radius} is too small for {points} distinct nodes (points)")
     cause = f"the mollified kernel overflows for delta = {delta} on a table of radius {radius}"
     try:
         lap = mollified_laplacian(laplacian, mollifier, delta, r)
-    except OverflowError:
-        raise ValueError(f"the radial table is not finite: {cause}") from None
+    except (OverflowError, ValueError):  # r is this function's own: only the result can be refused
+        raise ValueError(f"the radial table is not finite: {cause} (laplacian too large)") from None
     flux = integrate.cumulative_simpson(r * lap, x=r, initial=0.0)
     gradient = np.empty_like(r)
     gradient[1:] = flux[1:] / r[1:] ** 2

@@ -49,6 +49,9 @@ RTOL_RANGE = (100 * np.finfo(float).eps, 1.0)
 #: Absolute tolerances of the ODE solver: below 1e-20 a position near 0 would need steps far below the
 #: rounding of the others, and the solve runs into MAX_EVALUATIONS instead of refusing the tolerance.
 ATOL_RANGE = (1e-20, 1.0)
+#: Largest tracer offset of :func:`mass_defect`: a finite-difference step of the labels, far below the data's
+#: extent (the unit interval or disk); the default is 1e-5.
+MAX_OFFSET = 0.1
 
 
 class CollisionError(ValueError):
@@ -78,13 +81,14 @@ class BlobRun:
         kernel = instance("kernel", self.kernel, Kernel)
         if self.h is not None:
             positive("h", self.h)
-        integer_at_least("evaluations", self.evaluations, 0)
+        integer_at_least("evaluations", self.evaluations, 0, MAX_EVALUATIONS)
         times = output_times(self.times)
         positions = finite_array("positions", self.positions, ndim=3)
         masses = finite_array("masses", self.masses)
         expected = (times.size, masses.size, kernel.dimension)
         if positions.shape != expected:
-            raise ValueError(f"positions must have shape (times, N, d) = {expected}, got {positions.shape}")
+            raise ValueError(f"positions must have shape (times, N, d) = {expected} (times, masses and the kernel's "
+                             f"dimension), got {positions.shape}")
         if self.densities is not None:
             densities = finite_array("densities", self.densities, ndim=2)
             if densities.shape != positions.shape[:2]:
@@ -173,13 +177,18 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
                              f"(stopped at t = {t:.6g} of {times[-1]:.6g}): the system is too stiff for these "
                              "tolerances or the solver stalls")
         x = state[: n * dimension].reshape(n, dimension)
-        velocity, divergence = pair_sums(x, masses, *arrays, newtonian_2d=newtonian_2d)
+        try:
+            velocity, divergence = pair_sums(x, masses, *arrays, newtonian_2d=newtonian_2d)
+        except ValueError as error:  # the sums' own message names their arrays, not this function's parameters
+            raise ValueError(f"the pair sums at t = {t:.6g} refused the particles ({error}): points, masses or "
+                             "densities0 too large for the kernel") from None
         if not with_density:
             derivative = velocity.ravel()
         else:
             derivative = np.concatenate([velocity.ravel(), -divergence * state[n * dimension:]])
         return finite_result(f"the right-hand side at t = {t:.6g}", derivative,
-                             "the velocities or densities overflow (positions, masses or the kernel too large)")
+                             "the velocities or densities overflow (points, masses, densities0 or the kernel too "
+                             "large)")
 
     start = points.ravel() if not with_density else np.concatenate([points.ravel(), densities0])
     collision = _collision_event(points, kernel)
@@ -191,7 +200,8 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
                              f"{kernel.name}, whose gradient jumps at 0, is defined only up to the first collision; "
                              "ask for times before it", time)
     if not solution.success:
-        raise ValueError(f"the ODE integrator failed: {solution.message}")
+        raise ValueError(f"the ODE integrator failed: {solution.message} (points, masses or densities0 too large for "
+                         "the tolerances rtol and atol)")
     states = solution.y.T
     positions = states[:, : n * dimension].reshape(times.size, n, dimension)
     densities = states[:, n * dimension:] if with_density else None
@@ -288,6 +298,8 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
         raise ValueError(f"points must have shape (N, d) with d = 1 or 2, got {points.shape}")
     same_length(points=points[:, 0], rho0=rho0, masses=masses)
     t, offset, threshold = nonnegative("t", t), positive("offset", offset), nonnegative("threshold", threshold)
+    if offset > MAX_OFFSET:
+        raise ValueError(f"offset = {offset} must be at most MAX_OFFSET = {MAX_OFFSET} (a finite-difference step)")
     inside = rho0 > threshold
     if not np.any(inside):
         raise ValueError(f"no particle has rho0 above threshold = {threshold}")

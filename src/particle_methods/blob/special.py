@@ -21,7 +21,8 @@ EULER_GAMMA = 0.5772156649015329
 
 @njit
 def exp1(x):
-    """Exponential integral E1(x), x > 0: power series below 1, continued fraction above."""
+    """Exponential integral E1(x), x > 0: power series below 1, continued fraction above. A compiled scalar
+    function of the kernels: it trusts its caller's checks (x > 0 finite)."""
     if x < 1.0:
         total = 0.0
         term = 1.0
@@ -64,7 +65,8 @@ def dawson_and_slope(z):
     derivatives from F' = 1 - 2 z F, i.e. F^(k+1) = -2 z0 F^(k) - 2 k F^(k-1). Above: the
     asymptotic series F(z) ~ sum_n a_n / (2 z), a_n = (2n - 1)!! / (2 z^2)^n, whose terms fall
     below 1e-17 of the sum within 14 terms there, and F'(z) = -sum_{n >= 1} a_n without the
-    cancellation of 1 - 2 z F. F is odd, F' even.
+    cancellation of 1 - 2 z F. F is odd, F' even. A compiled scalar function of the kernels: it trusts its
+    caller's checks (NaN in gives NaN out).
     """
     if z != z:  # NaN in, NaN out (and no table index from it)
         return z, z
@@ -104,5 +106,5 @@ def dawson_and_slope(z):
 
 @njit
 def dawson(z):
-    """Dawson's integral F(z) (see :func:`dawson_and_slope`)."""
+    """Dawson's integral F(z) (see :func:`dawson_and_slope`); it trusts its caller's checks, as that does."""
     return dawson_and_slope(z)[0]

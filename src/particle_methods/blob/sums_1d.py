@@ -50,7 +50,8 @@ _SQRT_PI = math.sqrt(math.pi)
 
 
 def supported(kinds, parameters) -> bool:
-    """Whether a 1D kernel's terms are all Gaussian |x|/2, |x|^3/3 or raw powers 1 and 3."""
+    """Whether a 1D kernel's terms are all Gaussian |x|/2, |x|^3/3 or raw powers 1 and 3 (a predicate on the
+    arrays :func:`.pair_sums.pair_sums` has checked: it trusts its caller's checks)."""
     for kind, parameter in zip(kinds, parameters):
         if kind == POWER and parameter in (1.0, 3.0):
             continue
@@ -60,7 +61,8 @@ def supported(kinds, parameters) -> bool:
 
 
 def far_coefficients(kinds, coefficients, parameters):
-    """(a, b, c): far-field grad K = a sign(x) + b x|x| and Delta K = c |x|, summed over the terms."""
+    """(a, b, c): far-field grad K = a sign(x) + b x|x| and Delta K = c |x|, summed over the terms (of the arrays
+    :func:`.pair_sums.pair_sums` has checked: it trusts its caller's checks)."""
     a = b = c = 0.0
     for kind, coefficient, parameter in zip(kinds, coefficients, parameters):
         if kind == GAUSS_ABS_1D:
@@ -172,7 +174,8 @@ def _windows(x, radius):
 @njit_threaded
 def sorted_sums(x, masses, kinds, coefficients, widths, far, radius):
     """Velocities and divergences (-sum_j m_j grad K, -sum_j m_j Delta K) of positions ``x`` sorted
-    increasingly; ``far`` = (a, b, c) of :func:`far_coefficients`, ``radius`` the window half-width."""
+    increasingly; ``far`` = (a, b, c) of :func:`far_coefficients`, ``radius`` the window half-width. Compiled, for
+    the arrays :func:`.pair_sums.pair_sums` has checked: it trusts its caller's checks."""
     n = x.size
     a, b, c = far
     m0 = _compensated_prefix(masses)
@@ -239,7 +242,8 @@ def pair_sums_1d(positions, masses, kinds, coefficients, parameters):
 
 
 def log_supported(kinds) -> bool:
-    """Whether a 1D kernel's terms are all log terms, raw (LOG) or mollified (GAUSS_LOG_1D)."""
+    """Whether a 1D kernel's terms are all log terms, raw (LOG) or mollified (GAUSS_LOG_1D) (a predicate on the
+    arrays :func:`.pair_sums.pair_sums` has checked: it trusts its caller's checks)."""
     return len(kinds) > 0 and all(kind in (LOG, GAUSS_LOG_1D) for kind in kinds)
 
 
@@ -258,7 +262,8 @@ SERIES_TERMS = _series_length(DAWSON_ASYMPTOTIC)
 
 
 def log_series(kinds, coefficients, parameters):
-    """(G, L), the far-field coefficients of the log kernel's terms (module docstring), SERIES_TERMS each."""
+    """(G, L), the far-field coefficients of the log kernel's terms (module docstring), SERIES_TERMS each (of the
+    arrays :func:`.pair_sums.pair_sums` has checked: it trusts its caller's checks)."""
     k = np.arange(SERIES_TERMS)
     double_factorial = np.concatenate(([1.0], np.cumprod(2.0 * k[1:] - 1.0)))   # (2k-1)!!, (-1)!! = 1
     growth = double_factorial / 2.0**k
@@ -317,7 +322,8 @@ def _log_row(k, x, masses, terms, series_g, series_l, lower, upper, g, lap_tile)
 def sorted_log_sums(x, masses, terms, series_g, series_l, radius):
     """Velocities and divergences of the log kernel for positions ``x`` sorted increasingly; ``terms`` the
     arrays of :meth:`.kernels.Kernel.arrays`, (series_g, series_l) of :func:`log_series`, ``radius`` the
-    near window's half-width."""
+    near window's half-width. Compiled, for the arrays :func:`.pair_sums.pair_sums` has checked: it trusts its
+    caller's checks."""
     n = x.size
     lower, upper = _windows(x, radius)
     velocity = np.empty(n)

@@ -7,7 +7,8 @@ from ..jit import njit
 @njit
 def row_share(start, stop, masses, wx, wy, lap):
     """The row's own share over a tile, sum_j m_j (grad K, Delta K), in a fixed order: two interleaved
-    partial sums per quantity (even and odd j), added at the end."""
+    partial sums per quantity (even and odd j), added at the end. Compiled, inside the pair sums' loops: it
+    trusts its caller's checks."""
     sx0 = sx1 = sy0 = sy1 = sd0 = sd1 = 0.0
     count = stop - start
     k = 0

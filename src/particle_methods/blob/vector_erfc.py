@@ -48,7 +48,8 @@ _COEFFICIENTS = _table()
 
 @njit(inline="always")
 def erfc_and_gauss(z):
-    """(erfc(z), e^{-z^2}) for z >= 0, without branches (see the module docstring)."""
+    """(erfc(z), e^{-z^2}) for z >= 0, without branches (see the module docstring). Inlined in compiled loops: it
+    trusts its caller's checks (:func:`erfc_and_gauss_array` checks its z)."""
     # min(z, 16) without a branch, and exactly z when z <= 16 (a + |a| = 0 exactly for a <= 0)
     zc = z - 0.5 * ((z - _Z_MAX) + abs(z - _Z_MAX))
     x = zc * (1.0 / _WIDTH)

@@ -34,7 +34,8 @@ Z_LIMIT = 2.0**50
 
 @njit(inline="always")
 def exp_minus_and_complement(z):
-    """(e^{-z}, 1 - e^{-z}) for z >= 0, without branches (see the module docstring)."""
+    """(e^{-z}, 1 - e^{-z}) for z >= 0, without branches (see the module docstring). Inlined in compiled loops:
+    it trusts its caller's checks (:func:`exp_minus_and_complement_array` checks its z)."""
     kf = z * _INV_LN2 + 0.5
     k = int(0.5 * (kf + _K_MAX - abs(kf - _K_MAX)))  # min(kf, 1100) without a branch, then floor
     r = k * _LN2_HI - z + k * _LN2_LO
