@@ -28,6 +28,7 @@ import faulthandler
 import importlib
 import inspect
 import pkgutil
+import re
 import signal
 import sys
 import zlib
@@ -198,7 +199,8 @@ def classify(function, arguments: dict, names, must: bool, documented=None) -> t
     except _Hang:
         return "hang", f"more than {CALL_SECONDS:g} s of CPU"
     except (ValueError, TypeError) as error:
-        named = any(name.lower() in str(error).lower() for name in names)  # "Delta" names delta
+        named = any(re.search(rf"(?<![a-z0-9_]){re.escape(name.lower())}(?![a-z0-9_])", str(error).lower())
+                    for name in names)  # a whole word ("t" is not named by "times"); "Delta" names delta
         return ("refused, named" if named else "refused, unclear"), f"{type(error).__name__}: {error}"[:200]
     except Exception as error:  # every other type is what the census counts
         return "other exception", f"{type(error).__name__}: {error}"[:200]

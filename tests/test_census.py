@@ -6,26 +6,13 @@ import pytest
 from census import FAILURES, HUGE, census, public_callables
 from census_entries import ENTRIES, EXEMPT
 
-#: Failures in the modules issue46-b fixes in parallel (cross, finite_volume, systems, blob.newtonian_fmm,
-#: blob.solver.mass_defect, sticky.spd.spd_positions, sticky.multitype_events.mspd_exact): strict, so that each
-#: fails once fixed, and the lead removes it at the merge.
-AWAITING_ISSUE46B = set()
-#: Failures the census found in the sticky modules that issue46-c did not fix in its hour (its report lists them):
-#: strict, so that each fails once fixed.
-KNOWN_FAILING_ISSUE46C = set()
-#: Public callables issue46-c had no time to give an entry (its report lists them): the gap, named. A callable
-#: added to the package and not here fails the census at once; one given an entry must leave this list.
-NOT_YET_IN_THE_CENSUS = {
-}
-
 
 def test_every_public_callable_is_in_the_census():
     listed = set(ENTRIES) | set(EXEMPT)
     kernels = {name for name in public_callables() if name.rsplit(".", 1)[-1].endswith("_kernel")}
-    missing = sorted(set(public_callables()) - listed - kernels - NOT_YET_IN_THE_CENSUS)
+    missing = sorted(set(public_callables()) - listed - kernels)
     assert not missing, f"public callables neither in the census nor exempt (tests/census_entries.py): {missing}"
     stale = sorted(listed - set(public_callables()))
-    assert not NOT_YET_IN_THE_CENSUS & listed, "a callable now in the census must leave NOT_YET_IN_THE_CENSUS"
     assert not stale, f"census entries of no public callable: {stale}"
 
 
@@ -37,11 +24,7 @@ def test_the_census_refuses_a_new_function(monkeypatch):
     assert "particle_methods.norms.brand_new" in public_callables()
 
 
-XFAIL = AWAITING_ISSUE46B | KNOWN_FAILING_ISSUE46C
-
-
-@pytest.mark.parametrize("name", [pytest.param(name, marks=pytest.mark.xfail(strict=True, reason="known failure"))
-                                  if name in XFAIL else name for name in sorted(ENTRIES)])
+@pytest.mark.parametrize("name", sorted(ENTRIES))
 def test_census(name):
     failures = [f"{outcome}: {parameter} = {value!r:.60}: {detail}"
                 for parameter, value, outcome, detail in census(name, ENTRIES[name]) if outcome in FAILURES]
