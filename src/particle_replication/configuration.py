@@ -186,6 +186,7 @@ def check_configuration(config: dict, schema_path: Path = SCHEMA) -> None:
                 raise ValueError(f"{path} = {value} must be below {path[: -len('_min')]}_max = {upper}")
     _check_times_within(config)
     _check_whole_steps(config)
+    _check_files(config)
     check_work_limits(config)
     for window_path, lists in FIT_WINDOWS.items():
         window = _get(config, window_path)
@@ -194,6 +195,23 @@ def check_configuration(config: dict, schema_path: Path = SCHEMA) -> None:
             length = sum(len(_get(config, path) or ()) for path in paths)
             if _is_number(window) and window > length:
                 raise ValueError(f"{window_path} = {window}: longer than {' + '.join(paths)}, {length} values")
+
+
+#: Keys that name a file of the repository (a path relative to its root).
+FILE_KEYS = ("verdicts", "robustness.spreads")
+
+
+def _check_files(config: dict) -> None:
+    """The files the configuration names exist, and the expected verdicts have a section for its run."""
+    for key in FILE_KEYS:
+        value = _get(config, key)
+        if isinstance(value, str) and not (REPOSITORY / value).is_file():
+            raise ValueError(f"{key} = {value!r}: no such file in the repository {REPOSITORY}")
+    verdicts, run = _get(config, "verdicts"), config.get("verdicts_run")
+    if isinstance(verdicts, str) and isinstance(run, str) and run != "full":
+        sections = sorted(set(yaml.safe_load((REPOSITORY / verdicts).read_text()) or {}) - {"pass", "fail"})
+        if run not in sections:
+            raise ValueError(f"verdicts_run = {run!r}: {verdicts} has no section for this run (full, {sections})")
 
 
 def _check_whole_steps(config: dict) -> None:

@@ -264,7 +264,9 @@ LIMITS: tuple[Limit, ...] = (
     Limit(("cross.aggregates.ltp.*",), f"{LTP}.MAX_STEPS",
           lambda v, s: s["t_end"] * _largest(s["ltp"]["inverse_h"] + s["ltp"]["sp_inverse_h"]) / s["ltp"]["dt_over_h"],
           "steps: t_end / (dt_over_h h)", up=2),
-    Limit(("cross.aggregates.t_end",), f"{LTP}.MAX_STEPS",
+    # (the LTP keys listed again, so that a refusal reached at t_end names them too; their section is the one above)
+    Limit(("cross.aggregates.t_end", "cross.aggregates.ltp.inverse_h", "cross.aggregates.ltp.sp_inverse_h",
+           "cross.aggregates.ltp.dt_over_h"), f"{LTP}.MAX_STEPS",
           lambda v, s: s["t_end"] * _largest(s["ltp"]["inverse_h"] + s["ltp"]["sp_inverse_h"]) / s["ltp"]["dt_over_h"],
           "steps: t_end / (dt_over_h h)"),
     # --- blob and particle methods (particle_methods.blob): 1D grids on [-1, 1], 2D grids around the data

@@ -16,7 +16,7 @@ from numba import prange
 
 from ..jit import njit, njit_threaded
 from ..threads import threads_for
-from ..validation import finite_array, finite_result, finite_values, one_of, same_length
+from ..validation import finite_array, finite_result, finite_values, integer_at_least, one_of, same_length
 from . import newtonian_fmm, sums_1d
 from .kernels import (
     EXP,
@@ -328,11 +328,14 @@ NEWTONIAN_2D_METHODS = {"auto": "the fast multipole method from FMM_MIN_PARTICLE
                         "direct": "the direct tiled sums"}
 
 
-def _checked_terms(dimension, kinds, coefficients, parameters, tables, steps):
+def checked_terms(dimension, kinds, coefficients, parameters, tables, steps):
     """The arrays of :meth:`.kernels.Kernel.arrays` as the compiled sums take them (int64 kinds, float64 the
     others), after the checks of :class:`.kernels.Kernel` (known kinds of this dimension, positive widths, powers
     and lengths, TABLE parameters indexing a row of ``tables``) and of the tables (rows (2, M >= 2) of finite
-    values, one positive step each): a ValueError (ParameterTypeError) naming the array otherwise."""
+    values, one positive step each): a ValueError (ParameterTypeError) naming the array otherwise. A run checks its
+    kernel's terms once (:func:`.solver.integrate_particles`) and sums them at every right-hand side with
+    :func:`checked_pair_sums`."""
+    dimension = integer_at_least("dimension", dimension, 1, 3)
     kind_values = finite_array("kinds", kinds)
     coefficients, parameters = finite_array("coefficients", coefficients), finite_array("parameters", parameters)
     if same_length(kinds=kind_values, coefficients=coefficients, parameters=parameters) == 0:
@@ -373,14 +376,15 @@ def pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps,
     if masses.shape != positions.shape[:1] or not 1 <= positions.shape[1] <= 3:
         raise ValueError(f"positions must have shape (N, d), d <= 3, and masses (N,), got {positions.shape} and "
                          f"{masses.shape}")
-    terms = _checked_terms(positions.shape[1], kinds, coefficients, parameters, tables, steps)
-    velocity, divergence = _pair_sums(positions, masses, *terms, newtonian_2d)
+    terms = checked_terms(positions.shape[1], kinds, coefficients, parameters, tables, steps)
+    velocity, divergence = checked_pair_sums(positions, masses, *terms, newtonian_2d)
     cause = "the positions, masses, coefficients or parameters are too large (or the widths too small)"
     return finite_result("the velocities", velocity, cause), finite_result("the divergences", divergence, cause)
 
 
-def _pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps, newtonian_2d):
-    """The sums of :func:`pair_sums` for its checked arrays."""
+def checked_pair_sums(positions, masses, kinds, coefficients, parameters, tables, steps, newtonian_2d):
+    """The sums of :func:`pair_sums` for contiguous float64 ``positions`` (N, d) and ``masses`` (N,) and the terms
+    of :func:`checked_terms`: it trusts its caller's checks (and leaves the sums' finiteness to its caller)."""
     if positions.shape[1] == 2 and is_newtonian_2d(kinds):
         return _newtonian_2d_sums(positions, masses, kinds, coefficients, parameters, newtonian_2d)
     if np.any(kinds == TABLE) and np.ptp(positions, axis=0).max() > TABLE_REACH * steps.min():

@@ -40,7 +40,7 @@ from .checks import MAX_EVALUATIONS, MAX_FMM_PARTICLES, MAX_STORED, MIN_DELTA_OV
 from .initial import as_data_1d, as_data_2d, grid_1d, grid_2d
 from .kernels import Kernel, kernel_1d, kernel_2d
 from .mollifiers import mollifier
-from .pair_sums import NEWTONIAN_2D_METHODS, pair_energy, pair_sums
+from .pair_sums import NEWTONIAN_2D_METHODS, checked_pair_sums, checked_terms, pair_energy
 
 #: The two methods of :func:`run_1d` and :func:`run_2d`.
 METHODS = {"blob": "K_delta = K * psi_delta, delta = h^q (Definition 2.2)", "particle": "K with grad K(0) := 0"}
@@ -166,7 +166,8 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
     if times[-1] == 0.0:
         return BlobRun(kernel, h, times, points[None], densities0[None] if with_density else None, masses, 0)
 
-    arrays = kernel.arrays()
+    terms = checked_terms(dimension, *kernel.arrays())  # once: every right-hand side sums the same terms
+    masses = np.ascontiguousarray(masses, dtype=np.float64)
     evaluations = 0
 
     def rhs(t, state):
@@ -176,9 +177,9 @@ def integrate_particles(points, densities0, masses, kernel: Kernel, times, *, wi
             raise ValueError(f"the ODE solve needs more than MAX_EVALUATIONS = {MAX_EVALUATIONS} right-hand sides "
                              f"(stopped at t = {t:.6g} of {times[-1]:.6g}): the system is too stiff for these "
                              "tolerances or the solver stalls")
-        x = state[: n * dimension].reshape(n, dimension)
+        x = np.ascontiguousarray(state[: n * dimension].reshape(n, dimension))
         try:
-            velocity, divergence = pair_sums(x, masses, *arrays, newtonian_2d=newtonian_2d)
+            velocity, divergence = checked_pair_sums(x, masses, *terms, newtonian_2d)
         except ValueError as error:  # the sums' own message names their arrays, not this function's parameters
             raise ValueError(f"the pair sums at t = {t:.6g} refused the particles ({error}): points, masses or "
                              "densities0 too large for the kernel") from None
