@@ -18,7 +18,7 @@ the pairs closer than 6.5 widths.
 
 import numpy as np
 from scipy import special
-from timing import best_time
+from timing import best_time, print_cpu
 
 from particle_methods.blob.kernels import kernel_1d
 from particle_methods.blob.mollifiers import mollifier
@@ -48,6 +48,7 @@ def main():
     from particle_methods.blob.initial import grid_1d
     from particle_methods.blob.pair_sums import generic_sums_kernel as reference_pair_sums
 
+    print_cpu()
     rng = np.random.default_rng(0)
     cases = []
     for n in (1000, 10000):

@@ -20,7 +20,7 @@ import argparse
 import time
 
 import numpy as np
-from timing import best_time
+from timing import best_time, print_cpu
 
 from particle_methods.blob.kernels import kernel_2d
 from particle_methods.blob.mollifiers import mollifier
@@ -107,6 +107,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--largest", type=int, default=320, help="finest 1/h of the grid timings")
     largest = parser.parse_args().largest
+    print_cpu()
     grids(largest)
     random_points()
     crossover()

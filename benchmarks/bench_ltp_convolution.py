@@ -13,7 +13,7 @@ the same power function: the ratio says how close the kernel is to its floor.
 
 import numba
 import numpy as np
-from timing import best_time
+from timing import best_time, print_cpu
 
 from particle_methods.ltp import B3, potential
 from particle_methods.ltp.kernels import EXPANSION, GAUSS_TIERS, NEAR, convolutions
@@ -45,6 +45,7 @@ def evaluations_per_pair(centres, widths):
 
 
 def main():
+    print_cpu()
     for a in (1.5, 1.1):
         report(a)
 

@@ -30,7 +30,7 @@ import tracemalloc
 from pathlib import Path
 
 import numpy as np
-from timing import best_time
+from timing import best_time, print_cpu
 
 import particle_methods.sticky  # noqa: F401 (the parent package of the old module)
 from particle_methods.sticky import mspd_exact
@@ -121,6 +121,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--old-commit", default="2c8f79b")
     args = parser.parse_args()
+    print_cpu()
     fixed_mmap_threshold()
     old = load_old(args.old_commit)
     small = psystem_initial_configuration("shocks", CASES["shocks"], 20)

@@ -20,7 +20,7 @@ import argparse
 
 import numpy as np
 from scipy.optimize import isotonic_regression
-from timing import best_time
+from timing import best_time, print_cpu
 
 from particle_methods.convergence import fit_order
 from particle_methods.sticky import spd_positions
@@ -33,6 +33,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--python-max-exponent", type=int, default=7)
     args = parser.parse_args()
+    print_cpu()
     rng = np.random.default_rng(0)
     t = 1.0
     spd_positions(np.zeros(2), np.zeros(2), t)  # compile (or load the cache) outside the timings

@@ -19,7 +19,7 @@ import time
 
 import numba
 import numpy as np
-from timing import best_time
+from timing import best_time, print_cpu
 
 WORKLOAD = textwrap.dedent("""
     import time
@@ -132,6 +132,7 @@ def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--worker":
         worker(sys.argv[2], int(sys.argv[3]), [int(v) for v in sys.argv[4:]])
         return
+    print_cpu()
     side_by_side()
     start = time.perf_counter()
     scaling("ltp_convolutions", (50, 100, 200, 400, 800, 1600, 3200))

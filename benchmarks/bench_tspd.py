@@ -9,7 +9,7 @@ that both give the same positions to the bit, and prints the ratio.
 """
 
 import numpy as np
-from timing import best_time
+from timing import best_time, print_cpu
 
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.mspd import mspd_positions
@@ -21,6 +21,7 @@ class PythonLoop(PSystem):
 
 
 def main():
+    print_cpu()
     compiled, python = PSystem(), PythonLoop()
     print(f"{'case':>12} {'n':>6} {'compiled [s]':>13} {'Python [s]':>11} {'ratio':>6}")
     for case, x0 in (("rarefaction", 0.1), ("shocks", -4.0)):

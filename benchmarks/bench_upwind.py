@@ -24,6 +24,7 @@ import argparse
 import time
 
 import numpy as np
+from timing import print_cpu
 
 from particle_methods.finite_volume.psystem import upwind_diagonal
 from particle_methods.sticky.cases import psystem_initial_cells
@@ -59,6 +60,7 @@ def main():
     parser.add_argument("--python-limit", type=float, default=60.0)
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args()
+    print_cpu()
     small = np.linspace(*DOMAIN, 101)
     upwind_diagonal(SYSTEM, psystem_initial_cells("shocks", CASES["shocks"], small), small, T, CFL)  # compile or load
     print(f"{'case':12} {'cells':>6} {'python [s]':>11} {'compiled [s]':>13} {'ratio':>7} {'python ns':>10} "

@@ -20,6 +20,8 @@ import sys
 import tempfile
 import time
 
+from timing import print_cpu
+
 
 def exclusive_times(events):
     """(kernel -> exclusive seconds, (kernel <- overload) -> inclusive seconds, outermost total) from the
@@ -56,6 +58,7 @@ def main(argv=None) -> int:
     event.register("numba:compile", recorder)
     code = compile(open(args.script).read(), args.script, "exec")
     stdout = sys.stdout
+    print_cpu(stdout)
     start = time.perf_counter()
     sys.argv = [args.script]
     exec(code, {"__name__": "__main__", "__file__": args.script})  # the job redirects stdout to its log

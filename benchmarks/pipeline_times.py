@@ -10,10 +10,12 @@ when a rule benchmarks several repeats). The job graph comes from a dry run,
 `snakemake -n --forceall [--configfile ...]` in the repository root, which computes nothing: it prints
 every job with its rule, wildcards, input and output files, and a job depends on the jobs that write
 its input files. (`--d3dag` and `--dag` print the same graph, but without all of a job's wildcards.)
-Printed: each job's wall time, largest first (`-`: no benchmark file, counted as 0 s, e.g. `all`),
-their sum, the core-seconds (a job that holds several cores counts that many times), the critical path
-(the chain of dependent jobs with the largest total wall time) and the lower bound
-max(critical path, core-seconds / cores) on the run's wall time with --cores cores.
+Printed: the CPU the run was measured on (the one its `results/versions.md` names, written by the run's
+`versions` rule: not the machine reading the logs; "CPU not recorded" without it), each job's wall time,
+largest first (`-`: no benchmark file, counted as 0 s, e.g. `all`), their sum, the core-seconds (a job
+that holds several cores counts that many times), the critical path (the chain of dependent jobs with the
+largest total wall time) and the lower bound max(critical path, core-seconds / cores) on the run's wall time
+with --cores cores.
 """
 
 import argparse
@@ -22,6 +24,8 @@ import subprocess
 import sys
 from collections import deque
 from pathlib import Path
+
+from particle_replication.environment import CPU_NOT_RECORDED, recorded_cpu
 
 REPOSITORY = Path(__file__).resolve().parent.parent
 JOB_HEADER = re.compile(r"^(?:local)?(?:rule|checkpoint) (\w+):$")
@@ -37,6 +41,13 @@ def read_benchmarks(directory) -> dict[str, float]:
             column = header.index("s")
             seconds[path.stem] = sum(float(row[column]) for row in rows) / len(rows)
     return seconds
+
+
+def run_cpu(root) -> str:
+    """The CPU the run under ``root`` was measured on, as its ``results/versions.md`` records it (the run's
+    machine, not this one), or "CPU not recorded" when the run has no such record."""
+    path = Path(root) / "results" / "versions.md"
+    return recorded_cpu(path.read_text()) if path.is_file() else CPU_NOT_RECORDED
 
 
 def benchmark_name(rule, wildcards) -> str:
@@ -124,9 +135,9 @@ def job_graph(configfiles=(), cores=2):
     return parse_dry_run(result.stdout + result.stderr)
 
 
-def report(jobs, edges, seconds, cores, markdown=False, threads=None, top=None):
-    """The table (the ``top`` longest jobs and those on the critical path, when ``top`` is given), sum,
-    core-seconds, critical path and lower bound, as text lines."""
+def report(jobs, edges, seconds, cores, markdown=False, threads=None, top=None, cpu=CPU_NOT_RECORDED):
+    """The CPU the run was measured on (``cpu``: :func:`run_cpu`), the table (the ``top`` longest jobs and those
+    on the critical path, when ``top`` is given), sum, core-seconds, critical path and lower bound, as text lines."""
     threads = threads or {}
     names = {jobid: benchmark_name(rule, wildcards) for jobid, (rule, wildcards) in jobs.items()}
     durations = {jobid: seconds.get(name, 0.0) for jobid, name in names.items()}
@@ -138,7 +149,7 @@ def report(jobs, edges, seconds, cores, markdown=False, threads=None, top=None):
     if top is not None:
         order = [jobid for rank, jobid in enumerate(order) if rank < top or jobid in on_path]
     width = max(map(len, names.values()), default=3)
-    lines = []
+    lines = [f"Measured on {cpu}" if cpu != CPU_NOT_RECORDED else cpu, ""]
     if markdown:
         lines += ["| job | wall time [s] | critical path |", "|---|---:|:---:|"]
         for jobid in order:
@@ -183,7 +194,7 @@ def main():
     names = {benchmark_name(rule, wildcards) for rule, wildcards in jobs.values()}
     if unmatched := sorted(set(seconds) - names):
         print(f"Benchmark files of no job in the graph (left out): {', '.join(unmatched)}\n")
-    print("\n".join(report(jobs, edges, seconds, args.cores, args.markdown, threads, args.top)))
+    print("\n".join(report(jobs, edges, seconds, args.cores, args.markdown, threads, args.top, run_cpu(args.root))))
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@ import sys
 import time
 
 import numpy as np
+from timing import print_cpu
 
 from particle_methods.finite_volume.fluxes import CONCAVE
 from particle_methods.finite_volume.grids import cell_averages_of_step_cdf, l1_distance_to_step_cdf
@@ -27,6 +28,7 @@ def main(n=256, t=1.0, cells_per_unit=(1600, 3200, 6400, 12800, 25600)):
     x, v = SCALAR_CASES["concave_laplace"].initial_state(n)
     positions = spd_positions(x, v, t)
     previous = None
+    print_cpu()
     print(f"n = {n}, t = {t:g}\ncells per unit | distance | pairwise order | seconds")
     for count in cells_per_unit:
         left = math.ceil((1.0 - min(x[0], positions[0])) * count)  # a cell edge at x = 0, as in the pipeline

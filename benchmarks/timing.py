@@ -1,6 +1,10 @@
-"""Timing helper shared by the benchmark scripts."""
+"""Timing helpers shared by the benchmark scripts: the best of repeated calls, and the header that names the CPU
+every time printed below it was measured on."""
 
+import sys
 import time
+
+from particle_replication.environment import cpu
 
 
 def best_time(function, repeats: int = 3):
@@ -12,3 +16,9 @@ def best_time(function, repeats: int = 3):
         result = function()
         best = min(best, time.perf_counter() - start)
     return best, result
+
+
+def print_cpu(file=None) -> None:
+    """Print the header of a benchmark's output: the CPU its times are measured on (model, widest vector
+    extension, cores: :func:`particle_replication.environment.cpu`), to ``file`` (default: standard output)."""
+    print(f"Measured on {cpu()}", file=sys.stdout if file is None else file, flush=True)

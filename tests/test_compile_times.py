@@ -1,12 +1,14 @@
 """benchmarks/compile_times.py: exclusive compile times from nested numba:compile events."""
 
 import importlib.util
+import sys
 from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
 
 SCRIPT = Path(__file__).resolve().parent.parent / "benchmarks" / "compile_times.py"
+sys.path.insert(0, str(SCRIPT.parent))  # its helper module timing.py, as when the script runs
 spec = importlib.util.spec_from_file_location("compile_times", SCRIPT)
 compile_times = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(compile_times)

@@ -1,5 +1,7 @@
-"""The pure functions of benchmarks/pipeline_times.py: benchmark files, job graph, critical path."""
+"""The pure functions of benchmarks/pipeline_times.py: benchmark files, job graph, critical path, the run's CPU;
+and every benchmark script's header naming the CPU its times are measured on."""
 
+import ast
 import importlib.util
 from pathlib import Path
 
@@ -91,3 +93,46 @@ def test_critical_path_counts_jobs_without_benchmark_as_zero():
 def test_critical_path_rejects_a_cycle():
     with pytest.raises(ValueError, match="cycle"):
         pipeline_times.critical_path({"a": 1.0, "b": 1.0}, [("a", "b"), ("b", "a")])
+
+
+def test_the_summary_names_the_cpu_the_run_recorded_not_this_machine(tmp_path):
+    (tmp_path / "results").mkdir()
+    (tmp_path / "results" / "versions.md").write_text("# Software versions\n\nCommit: 0123abc\n\n"
+                                                      "CPU: Intel Xeon (AVX-512, 2 cores)\n\n| package | version |\n")
+    jobs, edges, threads = pipeline_times.parse_dry_run(DRY_RUN)
+    seconds = {"sticky_psystem_data_shocks": 3.0}
+    cpu = pipeline_times.run_cpu(tmp_path)
+    assert cpu == "Intel Xeon (AVX-512, 2 cores)"
+    for markdown in (False, True):
+        lines = pipeline_times.report(jobs, edges, seconds, 2, markdown, threads, cpu=cpu)
+        assert lines[0] == "Measured on Intel Xeon (AVX-512, 2 cores)"
+
+
+def test_a_run_without_a_cpu_record_says_so(tmp_path):
+    assert pipeline_times.run_cpu(tmp_path) == "CPU not recorded"
+    (tmp_path / "results").mkdir()
+    (tmp_path / "results" / "versions.md").write_text("# Software versions\n\nCommit: 0123abc\n")
+    assert pipeline_times.run_cpu(tmp_path) == "CPU not recorded"
+    jobs, edges, threads = pipeline_times.parse_dry_run(DRY_RUN)
+    assert pipeline_times.report(jobs, edges, {}, 2, cpu=pipeline_times.run_cpu(tmp_path))[0] == "CPU not recorded"
+
+
+def imported_names(path):
+    return {(node.module, alias.name) for node in ast.walk(ast.parse(path.read_text()))
+            if isinstance(node, ast.ImportFrom) for alias in node.names}
+
+
+def test_every_benchmark_prints_the_cpu_from_its_one_description():
+    """Each timing script calls timing.print_cpu, which prints particle_replication.environment.cpu(); the
+    pipeline's summary reads the run's record of it instead (environment.recorded_cpu)."""
+    folder = SCRIPT.parent
+    assert ("particle_replication.environment", "cpu") in imported_names(folder / "timing.py")
+    scripts = sorted(path for path in folder.glob("*.py") if path.name != "timing.py")
+    assert len(scripts) >= 10
+    for path in scripts:
+        expected = (("particle_replication.environment", "recorded_cpu") if path == SCRIPT
+                    else ("timing", "print_cpu"))
+        assert expected in imported_names(path), path.name
+        calls = {node.func.id for node in ast.walk(ast.parse(path.read_text()))
+                 if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)}
+        assert expected[1] in calls or path == SCRIPT, f"{path.name} imports {expected[1]} but never calls it"

@@ -118,7 +118,7 @@ def test_rate_tables_mark_the_deciding_window(snippets):
 
 def test_the_title_page_names_the_commit(snippets):
     assert snippets["commit"] == ("\\newcommand{\\builtfrom}{Built from commit \\texttt{0123abc} of 2026-11-23}\n"
-                                  "\\newcommand{\\builton}{AMD EPYC (AVX-512, 2 cores)}\n")
+                                  "\\newcommand{\\builton}{run on AMD EPYC (AVX-512, 2 cores)}\n")
 
 
 def test_versions_name_the_commit_or_say_unknown_outside_a_clone(tmp_path, monkeypatch):
@@ -129,6 +129,16 @@ def test_versions_name_the_commit_or_say_unknown_outside_a_clone(tmp_path, monke
     monkeypatch.setenv("PARTICLE_METHODS_SOURCE", str(tmp_path))
     assert environment.commit() == {"hash": "unknown", "date": "unknown", "epoch": "0", "modified": "unknown"}
     assert "Commit: unknown" in environment.markdown()
+
+
+def test_the_cpu_is_read_back_from_the_versions_record():
+    from particle_replication import environment
+
+    assert environment.recorded_cpu(environment.markdown()) == environment.cpu()
+    assert environment.recorded_cpu("# Software versions\n\nCommit: 0123abc\n") == "CPU not recorded"
+    assert environment.recorded_cpu("CPU: \n") == "CPU not recorded"
+    with pytest.raises(TypeError, match="versions"):
+        environment.recorded_cpu(None)
 
 
 def test_the_changes_after_failing_runs_are_listed_with_their_failing_values(snippets):

@@ -1,6 +1,7 @@
 """The report's table of the comparison: per method and case, the W1 error at the largest size and
-the wall time to the target error."""
+the wall time to the target error, on the CPU the study recorded when it timed the runs."""
 
+from particle_replication.report import tex
 from particle_replication.verdicts import cross as v
 from particle_replication.workflow import load_results, logged
 
@@ -16,7 +17,8 @@ def latex_number(value: float) -> str:
 
 def work_precision_table(d, cfg) -> str:
     """LaTeX rows: per method and case, the W1 error at the largest size and the wall time to the target
-    (an asterisk marks an extrapolation from the two largest runs)."""
+    (an asterisk marks an extrapolation from the two largest runs), and a last row naming the CPU the times were
+    measured on (the study's record, ``particle_replication.environment.cpu``)."""
     table = v.fastest_table(d, cfg["target_error"], cfg["min_timed_seconds"])
     keys = list(table)
     head = " & ".join(f"({data}, $t = {t:g}$)" for data, t in keys)
@@ -31,6 +33,8 @@ def work_precision_table(d, cfg) -> str:
             seconds, extrapolated = table[(data, t)][method]
             cells.append(f"{latex_number(errors[-1])} / {latex_number(seconds)}{'*' if extrapolated else ''}")
         lines.append(f"{method} & " + " & ".join(cells) + " \\\\")
+    lines.append("\\midrule")
+    lines.append(f"\\multicolumn{{{len(keys) + 1}}}{{@{{}}l}}{{wall times measured on {tex(str(d['cpu']))}}} \\\\")
     lines.append("\\bottomrule\\end{tabular}")
     return "\n".join(lines) + "\n"
 

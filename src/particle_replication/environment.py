@@ -3,6 +3,8 @@
 ``python -m particle_replication.environment versions.md`` writes them for the report;
 ``python -m particle_replication.environment --epoch`` prints the commit time in seconds since 1970,
 the SOURCE_DATE_EPOCH that makes two builds of the PDF from one commit byte-identical.
+:func:`cpu` is the one description of a CPU that every timing names (the benchmarks, the timing claims, the
+report, the README); :func:`recorded_cpu` reads it back from a run's record.
 """
 
 from __future__ import annotations
@@ -52,6 +54,22 @@ def cpu() -> str:
     return f"{model} ({width + ', ' if width else ''}{cores} cores)"
 
 
+#: The field of the versions record (:func:`markdown`) that names the CPU, and what is said without it.
+CPU_FIELD, CPU_NOT_RECORDED = "CPU", "CPU not recorded"
+
+
+def recorded_cpu(versions: str) -> str:
+    """The CPU a run's versions record (the text of its ``results/versions.md``, :func:`markdown`) names: the
+    machine the run was timed on, not the one reading it; :data:`CPU_NOT_RECORDED` if the record has none."""
+    if not isinstance(versions, str):
+        raise TypeError(f"versions must be the text of a versions record, not {type(versions).__name__}")
+    for line in versions.splitlines():
+        key, separator, value = line.partition(": ")
+        if separator and key.strip() == CPU_FIELD and value.strip():
+            return value.strip()
+    return CPU_NOT_RECORDED
+
+
 def repository() -> Path:
     """The clone the run was made from: PARTICLE_METHODS_SOURCE (set by the Snakefile), else this package's."""
     return Path(os.environ.get("PARTICLE_METHODS_SOURCE", Path(__file__).resolve().parents[2]))
@@ -82,7 +100,7 @@ def markdown() -> str:
     state = commit()
     lines = ["# Software versions", "", f"Commit: {state['hash']}", "", f"Commit date: {state['date']}", "",
              f"Modified since the commit: {state['modified']}", "", f"Platform: {platform.platform()}", "",
-             f"CPU: {cpu()}", "",
+             f"{CPU_FIELD}: {cpu()}", "",
              "| package | version |", "|---|---|"]
     lines += [f"| {name} | {version} |" for name, version in versions().items()]
     return "\n".join(lines) + "\n"

@@ -15,6 +15,7 @@ import sys
 from pathlib import Path
 
 from .claims import CAUSES, KINDS, counts, fragile, read_claims, read_verdicts
+from .environment import recorded_cpu
 from .paths import REPOSITORY
 
 START = ("<!-- results: generated from the full run by `python -m particle_replication.readme --write`; "
@@ -51,7 +52,7 @@ def results_block(claims, expected, versions: str, margin_min: float, robustness
               for cause in CAUSES}
     shaky = [claim for claim in fragile(claims, margin_min) if claim.kind in ("paper", "derived")]
     run = (f"At the last full run (commit {_field(versions, 'Commit')[:7]} of {_field(versions, 'Commit date')[:10]}, "
-           f"on {_field(versions, 'CPU')})")
+           f"on {recorded_cpu(versions)})")
     lines = [
         f"{run}, {paper[0]} of the papers' {paper[1]} claims are reproduced; {derived[0]} of {derived[1]} claims we "
         f"derive from their theory and {check[0]} of our {check[1]} checks pass"

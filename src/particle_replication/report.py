@@ -49,6 +49,7 @@ from .claims import (
     read_verdicts,
     window_dependent,
 )
+from .environment import CPU_NOT_RECORDED, recorded_cpu
 from .paths import REPOSITORY
 from .rates import read_rates
 
@@ -351,14 +352,17 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
                                                    for key, text in [*parameters, *_case_fields(config)]))
     (outdir / "configuration.tex").write_text("".join(
         f"\\noindent\\texttt{{{_breakable(key)}}} = {cell(text)}\\par\n" for key, text in parameters))
-    lines = Path(versions_md).read_text().splitlines()
-    fields = dict(line.split(": ", 1) for line in lines if line.startswith(("Commit", "Modified", "CPU")))
+    versions = Path(versions_md).read_text()
+    lines = versions.splitlines()
+    fields = dict(line.split(": ", 1) for line in lines if line.startswith(("Commit", "Modified")))
     modified = " (with uncommitted changes)" if fields.get("Modified since the commit") == "yes" else ""
     hash_, date = fields.get("Commit", "unknown"), fields.get("Commit date", "unknown")[:10]
     built = (f"Built from commit \\texttt{{{tex(hash_)}}}{modified} of {tex(date)}" if hash_ != "unknown"
              else "Built outside a git clone (commit unknown)")
+    cpu = recorded_cpu(versions)
+    ran_on = cpu if cpu == CPU_NOT_RECORDED else f"run on {cpu}"
     (outdir / "commit.tex").write_text(f"\\newcommand{{\\builtfrom}}{{{built}}}\n"
-                                       f"\\newcommand{{\\builton}}{{{tex(fields.get('CPU', 'an unrecorded CPU'))}}}\n")
+                                       f"\\newcommand{{\\builton}}{{{tex(ran_on)}}}\n")
     rows = [line for line in lines if re.match(r"\| [^-]", line)][1:]
     table = "".join(f"{tex(cells[1].strip())} & {tex(cells[2].strip())} \\\\\n"
                     for cells in (row.split("|") for row in rows))

@@ -725,7 +725,7 @@ def beyond_claims(d, rates: Recorder, p):
                    "5.2: the exponents 1 and 2 are the claims beyond.exponent.*)",
             figure=label,
             text=f"{label}: wall time of the Godunov scheme over that of the SPD at the common error "
-                 f"eps* = {eps:.3g} (interpolated, never extrapolated)",
+                 f"eps* = {eps:.3g} (interpolated, never extrapolated); on {d['cpu']}",
             tolerance=p["scalar_ratio_min"], measured=ratio, published="SPD cheaper (exponent 1 against 2)"))
     sizes = {"tspd": d["tspd_n"], "exact": d["exact_n"], "upwind": d["upwind_cells"]}
     for name in d["cases"]:
@@ -748,7 +748,7 @@ def beyond_claims(d, rates: Recorder, p):
                    "cost as the exact simulation; the exponents are the claims beyond.exponent.*)",
             figure=f"p-system, {name}",
             text=f"{name} case: wall time of the exact MSPD over that of the "
-                 f"iterated TSPD at the common error eps* = {eps:.3g}",
+                 f"iterated TSPD at the common error eps* = {eps:.3g}; on {d['cpu']}",
             tolerance=p["same_cost_band"], measured=same_cost, published="same cost, O(n^2)"))
         out += [
             claim(
