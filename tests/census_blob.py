@@ -106,6 +106,7 @@ ENTRIES = {
         "positions": PLANE, "masses": MASSES3, "coefficients": A([2.0, -1.0]), "widths": A([0.5, 0.7])}),
     B + "pair_sums.pair_sums": E(pair_sums.pair_sums, {"positions": LINE, "masses": MASSES3, **CUBIC_ARRAYS,
                                                        "newtonian_2d": "auto"}),
+    B + "pair_sums.checked_terms": E(pair_sums.checked_terms, {"dimension": 1, **CUBIC_ARRAYS}),
     # radial tables, rings
     B + "radial.RadialTable": E(radial.RadialTable, {"radius": 1.0, "gradient": A([1.0, 0.5, 0.2]),
                                                      "laplacian": A([2.0, 0.5, 0.1])}),
@@ -147,7 +148,8 @@ ENTRIES = {
 
 #: Compiled helpers and predicates of the pair sums that trust their caller's checks (their docstrings say so:
 #: CONTRIBUTING, "Names"); their callers (pair_sums, the array wrappers, BlobRun.energies) are in the census.
-TRUSTING = ("kernels.is_newtonian_2d", "kernels.radial_power", "pair_sums.pair_energy", "pair_sums.tiled_2d_supported",
+TRUSTING = ("kernels.is_newtonian_2d", "kernels.radial_power", "pair_sums.checked_pair_sums", "pair_sums.pair_energy",
+            "pair_sums.tiled_2d_supported",
             "special.dawson", "special.dawson_and_slope", "special.exp1", "sums_1d.far_coefficients",
             "sums_1d.log_series", "sums_1d.log_supported", "sums_1d.sorted_log_sums", "sums_1d.sorted_sums",
             "sums_1d.supported", "tile_sums.row_share", "vector_erfc.erfc_and_gauss",
