@@ -145,7 +145,7 @@ def test_newtonian_potential_values():
     (lambda: Potential("sub-Newtonian", (1.0,), (0.5,)), r"exponents must all be at least 1 .*got \[0\.5\]"),
     (lambda: Potential("mixed", (1.0, 1.0), (1.0, 0.99)), r"at least 1 .*got \[1\.   0\.99\]"),
     (lambda: potential("power", a=0.9), r"at least 1 .*0\.9"),
-    (lambda: potential("attractive_repulsive", a=2.0, b=0.0), r"at least 1 .*0\.\]"),
+    (lambda: potential("attractive_repulsive", a=2.0, b=0.0), r"b must be at least 1 .*got 0\.0"),
     (lambda: convolutions(TARGETS, CENTRES, WEIGHTS, WIDTHS, [1.0], [0.999], B3.breaks, B3.coefficients),
      r"at least 1 .*0\.999"),
     (lambda: potential("newtonian", a=1), "the newtonian potential takes no exponent a, got 1"),

@@ -111,7 +111,7 @@ def test_bad_input(kwargs, message):
     [
         (lambda: potential("morse"), "unknown kind of potential"),
         (lambda: potential("power"), "needs the exponent a"),
-        (lambda: potential("power", a=0.5), "exponents must all be at least 1"),
+        (lambda: potential("power", a=0.5), "a must be at least 1"),
         (lambda: potential("attractive_repulsive", a=3.0), "needs the exponents a and b"),
         (lambda: exact_density(RHO1, potential("power", a=1.5), 0.1, GRID), "quadratic potential"),
     ],

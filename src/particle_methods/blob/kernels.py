@@ -292,7 +292,7 @@ class Kernel:
         kinds, coefficients, parameters, tables, steps = self.arrays()
         if self.tables and r.size and r.max() > TABLE_REACH * steps.min():
             raise ValueError(f"r must stay within 2^40 steps of the kernel's radial table, got {r.max()}")
-        cause = "the kernel overflows at these distances"
+        cause = "the kernel overflows at these distances r"
         forces = [profile_forces_kernel(kinds, coefficients, parameters, float(x), self.dimension, tables, steps)
                   for x in r.ravel()]
         g, lap = np.moveaxis(finite_result("grad K and Delta K", np.reshape(forces, r.shape + (2,)), cause), -1, 0)

@@ -36,7 +36,7 @@ from ..validation import (
     positive,
     same_length,
 )
-from .checks import MAX_EVALUATIONS, MAX_FMM_PARTICLES, MAX_STORED, MIN_DELTA_OVER_H, output_times
+from .checks import MAX_EVALUATIONS, MAX_FMM_PARTICLES, MAX_STORED, MAX_TIME, MIN_DELTA_OVER_H, output_times
 from .initial import as_data_1d, as_data_2d, grid_1d, grid_2d
 from .kernels import Kernel, kernel_1d, kernel_2d
 from .mollifiers import mollifier
@@ -299,6 +299,8 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
         raise ValueError(f"points must have shape (N, d) with d = 1 or 2, got {points.shape}")
     same_length(points=points[:, 0], rho0=rho0, masses=masses)
     t, offset, threshold = nonnegative("t", t), positive("offset", offset), nonnegative("threshold", threshold)
+    if t > MAX_TIME:
+        raise ValueError(f"t = {t} must be at most MAX_TIME = {MAX_TIME} (a limit on the work of one run)")
     if offset > MAX_OFFSET:
         raise ValueError(f"offset = {offset} must be at most MAX_OFFSET = {MAX_OFFSET} (a finite-difference step)")
     inside = rho0 > threshold

@@ -88,8 +88,8 @@ def check_cell_steps(t: float, dt: float, cells: int, limit: int, speeds: str = 
         steps = np.ceil(np.float64(t) / np.float64(dt)) if t > 0 else 0.0
     if steps * float(cells) > limit:
         raise ValueError(
-            f"t={t} on x_edges with {cells} cells needs {steps:.3g} time steps, more than the limit of "
-            f"{limit:.0e} cell updates: reduce t, use fewer cells, raise cfl or lower the speeds of {speeds}"
+            f"t={t} on x_edges with {cells} cells needs {steps:.3g} time steps of dt = {dt:.3g}, more than the limit "
+            f"of {limit:.0e} cell updates: reduce t, use fewer cells, raise cfl or lower the speeds of {speeds}"
         )
 
 

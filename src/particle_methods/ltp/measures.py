@@ -169,7 +169,7 @@ def shrink_rate_ratios(times, sizes, window: float, since: float, floor: float, 
 
     ends = np.flatnonzero(times - 2.0 * window >= since - 1e-9 * window)
     if ends.size == 0:
-        raise ValueError("no recorded time two windows after `since`")
+        raise ValueError(f"no recorded time two windows (window = {window:g}) after since = {since:g}")
     middle = earlier(times[ends] - window)
     first = earlier(times[middle] - window)
     if np.any(first < 0):

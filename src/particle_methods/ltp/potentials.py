@@ -85,7 +85,11 @@ def potential(kind: str, a: float | None = None, b: float | None = None) -> Pote
     if kind == "newtonian":
         return Potential("|x|/2", (0.5,), (1.0,))
     a = finite_number("a", a)
+    if a < 1.0:
+        raise ValueError(f"a must be at least 1 (a = 1 is the Newtonian |x|; below 1 W' is unbounded at 0), got {a}")
     if kind == "power":
         return Potential(f"|x|^{a:g}/{a:g}", (1.0,), (a,))
     b = finite_number("b", b)
+    if b < 1.0:
+        raise ValueError(f"b must be at least 1 (b = 1 is the Newtonian |x|; below 1 W' is unbounded at 0), got {b}")
     return Potential(f"|x|^{a:g}/{a:g} - |x|^{b:g}/{b:g}", (1.0, -1.0), (a, b))
