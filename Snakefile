@@ -23,9 +23,11 @@ report: "report/workflow.rst"
 include: "rules/common.smk"
 
 
-# Every configuration writes under its own root (relative to the directory snakemake runs in, or
-# to --directory, which takes precedence), so the quick run never touches the full run's files.
-workdir: config["output_root"]
+# Every configuration writes under its own root (relative to this checkout; --directory takes precedence), so
+# the quick run never touches the full run's files. Absolute, because a cluster job parses the workflow again
+# from a directory already inside the root (the SLURM plugin's job step starts in it) and would apply a relative
+# root a second time.
+workdir: Path(workflow.basedir) / config["output_root"]
 
 
 # In the output root: a killed run's locks removed, damaged results and claims tables of results that are gone
