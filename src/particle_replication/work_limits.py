@@ -252,7 +252,9 @@ LIMITS: tuple[Limit, ...] = (
     Limit(("ltp.nonaffine.theorem3.*",), f"{LTP}.MAX_STEPS",
           lambda v, s: _largest(s["times"]) * s["reference_factor"] / (s["dt_over_h"] * _smallest(s["h_values"])),
           "steps of the reference: largest time / (dt_over_h x smallest h / reference_factor)"),
-    Limit(("ltp.fig[5678].steps", "ltp.fig[5678].t", "ltp.fig[5678].t_long"), f"{LTP}.MAX_STEPS",
+    # (the cases' times listed again, so that a refusal reached at steps names them too; their section is below)
+    Limit(("ltp.fig[5678].steps", "ltp.fig[5678].t", "ltp.fig[5678].t_long", "ltp.fig[5678].cases.*.t"),
+          f"{LTP}.MAX_STEPS",
           lambda v, s: _row_steps(s), "steps up to t_long at dt = t / steps"),
     Limit(("ltp.fig[5678].cases.*.t",), f"{LTP}.MAX_STEPS", lambda v, s: _row_steps(s),
           "steps up to t_long at dt = t / steps", up=3),
