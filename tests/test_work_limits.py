@@ -36,7 +36,7 @@ UNCHECKED = {
     "sticky.remark33.refinement.t", "sticky.theory.scalar.times", "sticky.theory.random.times", "sticky.beyond.t",
     "sticky.beyond.scalar.burgers_two_atoms.t", "sticky.beyond.scalar.concave_laplace.t",
     # evaluation grids and scans of the LTP scripts: no solver limit of their own (configuration.MAX_COUNT only)
-    "ltp.fig1.points", "ltp.quadratic.grid_points", "ltp.fig4.grid_points", "ltp.nonaffine.grid_points",
+    "ltp.fig1.points", "ltp.quadratic.grid_points", "ltp.fig4.grid_points",
     "ltp.quadratic.eps_scan.count", "ltp.fig4.eps_scan.count",
 }
 
@@ -126,6 +126,8 @@ ABSURD = [
     ("ltp.nonaffine.theorem1.dt_values", [0.02, 0.01, 1e-9]),
     ("ltp.nonaffine.theorem4.h_values", [0.1, 0.05, 1e-5]),
     ("ltp.nonaffine.theorem3_atomic.atoms", 10**6),
+    ("ltp.nonaffine.grid_points", 10**7),
+    ("ltp.nonaffine.theorem3_atomic.times", [0.1, 0.2, 1e4]),
     ("ltp.nonaffine.theorem3.reference_factor", 10**5),
     ("blob.fig4.repulsive.extra_inverse_h", [640, 10**6]),
     ("blob.fig4.reference_factor", 10**5),

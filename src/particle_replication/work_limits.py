@@ -137,6 +137,7 @@ THEORY = "particle_methods.sticky.theory"
 GRIDS = "particle_methods.finite_volume.grids"
 LTP = "particle_methods.ltp.solver"
 LTP_CHECKS = "particle_methods.ltp.checks"
+LTP_THEOREMS = "particle_methods.ltp.theorems"
 BLOB = "particle_methods.blob.checks"
 CROSS = "particle_methods.cross.methods"
 HULL = "particle_methods.cross.hull"
@@ -259,6 +260,10 @@ LIMITS: tuple[Limit, ...] = (
     Limit(("ltp.fig[5678].cases.*.t",), f"{LTP}.MAX_STEPS", lambda v, s: _row_steps(s),
           "steps up to t_long at dt = t / steps", up=3),
     Limit(("ltp.fig[5678].snapshots",), f"{LTP}.MAX_STEPS", lambda v, s: v, "snapshots"),
+    Limit(("ltp.nonaffine.grid_points",), f"{LTP_THEOREMS}.MAX_GRID_POINTS", lambda v, s: v,
+          "evaluation points of the theorems' studies"),
+    Limit(("ltp.nonaffine.theorem3_atomic.times",), f"{LTP_THEOREMS}.MAX_FLOW_TIME", lambda v, s: v,
+          "time of the atoms' flow"),
     Limit(("cross.ltp.dt_over_h", "cross.ltp.inverse_h", "cross.ltp.sp_after_inverse_h", "cross.ltp.times",
            "cross.ltp.sp_times"), f"{LTP}.MAX_STEPS",
           lambda v, s: _largest(s["times"] + s["sp_times"]) * _largest(s["inverse_h"] + s["sp_after_inverse_h"])
