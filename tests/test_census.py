@@ -16,6 +16,16 @@ def test_every_public_callable_is_in_the_census():
     assert not stale, f"census entries of no public callable: {stale}"
 
 
+def test_an_exemption_for_trust_is_one_its_docstring_states():
+    """A callable exempt because it trusts its caller's checks says so in its docstring (CONTRIBUTING, "Names")."""
+    import importlib
+
+    trusting = [name for name, reason in EXEMPT.items() if "docstring says so" in reason]
+    silent = [name for name in trusting if "trusts its caller" not in " ".join(
+        (getattr(importlib.import_module(name.rpartition(".")[0]), name.rpartition(".")[2]).__doc__ or "").split())]
+    assert trusting and not silent, silent
+
+
 def test_the_census_refuses_a_new_function(monkeypatch):
     import particle_methods.norms as norms
 

@@ -59,14 +59,16 @@ _LARGEST_SCALE = 1e300
 
 
 def pressure_formula(u, nu, kappa):
-    """p(u) of section 5.2.2 without checks: plain arithmetic, for arrays and for compiled kernels."""
+    """p(u) of section 5.2.2 without checks: plain arithmetic, for arrays and for compiled kernels.
+    It trusts its caller's checks."""
     a = np.arcsinh(0.5 * kappa)
     scale = kappa / (4.0 * nu * a**2)
     return scale * (np.arctan(0.5 * kappa) - np.arctan(kappa * (u / nu - 0.5)))
 
 
 def sound_speed_formula(u, nu, kappa):
-    """c(u) = sqrt(-p'(u)) = kappa / (2 nu a) / sqrt(1 + kappa^2 (u/nu - 1/2)^2), without checks (as above)."""
+    """c(u) = sqrt(-p'(u)) = kappa / (2 nu a) / sqrt(1 + kappa^2 (u/nu - 1/2)^2), without checks (as above).
+    It trusts its caller's checks."""
     speed_scale = kappa / (2.0 * nu * np.arcsinh(0.5 * kappa))
     return speed_scale / np.sqrt(1.0 + (kappa * (u / nu - 0.5)) ** 2)
 
@@ -74,7 +76,8 @@ def sound_speed_formula(u, nu, kappa):
 def speed_primitive_formula(spread, a, coefficient):
     """The p-system's primitive coefficient * atan(sinh(a spread)) of :meth:`PSystem.speed_primitive`
     (coefficient = -A/a, spread = w^+ - w^-), without checks (as above): the compiled MSPD
-    (:mod:`particle_methods.sticky.multitype_events`) evaluates the same expression."""
+    (:mod:`particle_methods.sticky.multitype_events`) evaluates the same expression.
+    It trusts its caller's checks."""
     return coefficient * np.arctan(np.sinh(a * spread))
 
 
@@ -91,7 +94,8 @@ def speed_primitives_into(spreads, a, coefficient, primitives):
     :func:`speed_primitive_formula` on NumPy arrays as :meth:`PSystem.speed_primitive`
     evaluates it on the Python path, in chunks of :data:`PRIMITIVE_CHUNK` elements: the same values to the last
     bit (NumPy's vectorised sinh and arctan give an element the same result at any place in any array). The
-    compiled loops of the upwind scheme and of the iterated TSPD call it in object mode once per step."""
+    compiled loops of the upwind scheme and of the iterated TSPD call it in object mode once per step.
+    It trusts its caller's checks."""
     spreads, primitives = spreads.reshape(-1), primitives.reshape(-1)
     for start in range(0, spreads.size, PRIMITIVE_CHUNK):
         stop = start + PRIMITIVE_CHUNK

@@ -226,7 +226,8 @@ def _row(k, x, masses, kinds, coefficients, widths, far, m0, m1, m2, first, last
 
 def pair_sums_1d(positions, masses, kinds, coefficients, parameters):
     """The 1D pair sums of :func:`.pair_sums.pair_sums` for the kernels :func:`supported` takes:
-    positions (N, 1) and masses (N,) already checked; returns velocities (N, 1) and divergences (N,)."""
+    positions (N, 1) and masses (N,) already checked; returns velocities (N, 1) and divergences (N,).
+    It trusts its caller's checks."""
     x = positions[:, 0]
     order = np.argsort(x, kind="stable")
     far = far_coefficients(kinds, coefficients, parameters)
@@ -340,7 +341,8 @@ def sorted_log_sums(x, masses, terms, series_g, series_l, radius):
 
 def log_pair_sums_1d(positions, masses, kinds, coefficients, parameters, tables, steps):
     """The 1D pair sums of :func:`.pair_sums.pair_sums` for the kernels :func:`log_supported` takes:
-    positions (N, 1) and masses (N,) already checked; returns velocities (N, 1) and divergences (N,)."""
+    positions (N, 1) and masses (N,) already checked; returns velocities (N, 1) and divergences (N,).
+    It trusts its caller's checks."""
     x = positions[:, 0]
     order = np.argsort(x, kind="stable")
     series_g, series_l = log_series(kinds, coefficients, parameters)

@@ -25,13 +25,13 @@ _SHAPES = ("convex", "concave")
 
 def burgers_formula(u):
     """u^2/2 without checks, for finite float states or arrays of them (compiled kernels call it on
-    scalars: no array is made)."""
+    scalars: no array is made). It trusts its caller's checks."""
     return 0.5 * u ** 2
 
 
 def concave_formula(u):
     """u(1 - u)/2 without checks, for finite float states or arrays of them (compiled kernels call it
-    on scalars: no array is made)."""
+    on scalars: no array is made). It trusts its caller's checks."""
     return 0.5 * u * (1.0 - u)
 
 

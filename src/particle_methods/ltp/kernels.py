@@ -176,7 +176,7 @@ def far_series(exponents, moments) -> np.ndarray:
 
 def shape_moments(breaks, pieces, count: int = FAR_MOMENTS) -> np.ndarray:
     """mu_m = int s^m phi(s) ds for m < count, exact piece by piece (arrays already checked); computed once
-    per shape (the time loops ask for them at every step)."""
+    per shape (the time loops ask for them at every step). It trusts its caller's checks."""
     breaks, pieces = np.asarray(breaks, dtype=np.float64), np.asarray(pieces, dtype=np.float64)
     return _moments(breaks.tobytes(), pieces.tobytes(), pieces.shape, count).copy()
 
@@ -467,7 +467,7 @@ def convolution_sums(targets, centres, weights, widths, coefficients, exponents,
     once before the time loop of :func:`particle_methods.ltp.solver.simulate`, which checks every step's
     results): the terms with a = 1 from F_h and rho_h (:func:`_cumulative_and_density`), those with an
     integer 3 <= a <= POLYNOMIAL_MAX_EXPONENT from the moments of rho_h (:func:`_polynomial_moments`), the
-    others by the pair sums of :func:`_convolutions`."""
+    others by the pair sums of :func:`_convolutions`. It trusts its caller's checks."""
     pairs, largest, odd = _term_needs(exponents.tobytes())
     with threads_for(targets.size, PARALLEL_MIN_TARGETS):
         if np.any(exponents == 1.0):

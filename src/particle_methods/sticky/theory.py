@@ -56,7 +56,7 @@ CUBIC_LIPSCHITZ = 1.0
 
 
 def cubic_speed(u):
-    """lambda(u) = u^2 - u, the derivative of :func:`cubic_flux` (no checks: the callers check)."""
+    """lambda(u) = u^2 - u, the derivative of :func:`cubic_flux`. It trusts its caller's checks."""
     return u * u - u
 
 
