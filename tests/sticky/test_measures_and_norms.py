@@ -150,3 +150,10 @@ def test_cases_and_cell_distances_name_what_they_refuse():
         distance_to_cells(np.array([[0.5, 0.0]]), np.zeros((1, 4)), edges)
     with pytest.raises(ValueError, match="x_edges must contain at least 2 edges"):
         distance_to_cells(np.array([[0.0]]), np.zeros((1, 4)), [])
+    # the census's whole-word naming: the row of w that overflows, and the unsorted configuration, by name
+    with pytest.raises(ValueError, match=r"^w\[0\] against configuration\[0\]: "):
+        distance_to_cells(np.array([[-0.5, 0.5]]), np.full((1, 4), -1.7e308), edges)
+    from particle_methods.sticky.cases import configuration_distance
+
+    with pytest.raises(ValueError, match="^b must hold each type's positions sorted"):
+        configuration_distance(np.array([[0.0, 1.0]]), np.array([[1.0, 0.0]]))

@@ -278,7 +278,8 @@ def simulate(initial, potential: Potential, h: float, dt: float, t_final: float,
         first, second = convolution_sums(x, x, omega, widths, coefficients, exponents, reference.breaks,
                                          reference.coefficients)
         if not (np.all(np.isfinite(first)) and np.all(np.isfinite(second))):
-            raise ValueError(f"W' * rho_h or W'' * rho_h is not finite at step {n} (t = {n * dt:.6g}): {OVERFLOW}")
+            raise ValueError(f"W' * rho_h or W'' * rho_h is not finite at step {n} (t = {n * dt:.6g}, h = {h:.6g}): "
+                             f"{OVERFLOW}")
         if n % every == 0 or n == steps:
             centres_out.append(x.copy())
             widths_out.append(widths.copy())

@@ -124,7 +124,13 @@ def distance_to_cells(configuration, w, x_edges) -> float:
         raise ValueError(f"the particles of configuration span [{configuration.min():.6g}, "
                          f"{configuration.max():.6g}], beyond the grid [{edges[0]:.6g}, {edges[-1]:.6g}]: "
                          "widen x_edges")
-    return sum(l1_distance_to_step_cdf(values, edges, points) for values, points in zip(w, configuration))
+    distance = 0.0
+    for k, (values, points) in enumerate(zip(w, configuration)):
+        try:
+            distance += l1_distance_to_step_cdf(values, edges, points)
+        except ValueError as error:  # its message names its own arguments: say which row of w it was
+            raise ValueError(f"w[{k}] against configuration[{k}]: {error}") from None
+    return finite_result("the distance between configuration and w", distance, "w is too large")
 
 
 def cells_distance(w_a, edges_a, w_b, edges_b) -> float:
@@ -163,6 +169,9 @@ def configuration_distance(a, b) -> float:
     a, b = finite_array("a", a, ndim=2), finite_array("b", b, ndim=2)
     if a.shape[0] != b.shape[0]:
         raise ValueError(f"a and b must be configurations (d, n) with the same d, got shapes {a.shape} and {b.shape}")
+    for name, rows in (("a", a), ("b", b)):
+        if np.any(np.diff(rows, axis=1) < 0):
+            raise ValueError(f"{name} must hold each type's positions sorted in non-decreasing order")
     distance = float(sum(w1_between_samples(x, y) for x, y in zip(a, b)))
     return finite_result("the distance between a and b", distance, "their positions are too far apart")
 
