@@ -84,7 +84,8 @@ def method(factory, name):
 def V(function, **good):
     """A check of :mod:`particle_methods.validation`: the name (and the limits) are the caller's constants, and the
     message names the value by the name given (``x``)."""
-    fixed = {"name", "ndim", "minimum", "maximum", "low", "high", "what", "cause", "kind", "table"}
+    fixed = {"name", "ndim", "minimum", "maximum", "low", "high", "what", "cause", "kind", "table", "limit",
+             "limit_name", "why"}
     return E(function, good, kinds={key: "fixed" for key in good if key in fixed},
              names={key: ("x",) for key in good})
 
@@ -105,6 +106,8 @@ ENTRIES = {
     PM + "validation.positive": V(validation.positive, name="x", value=1.0),
     PM + "validation.nonnegative": V(validation.nonnegative, name="x", value=1.0),
     PM + "validation.integer_at_least": V(validation.integer_at_least, name="x", value=3, minimum=1, maximum=10),
+    PM + "validation.time_within": V(validation.time_within, name="x", value=1.0, limit=2.0, limit_name="MAX_TIME",
+                                      why="a limit"),
     PM + "validation.in_interval": V(validation.in_interval, name="x", values=X3, low=-1.0, high=1.0),
     PM + "validation.one_of": V(validation.one_of, what="x", name="a", table={"a": 1}),
     # shared

@@ -138,6 +138,15 @@ def nonnegative(name: str, value) -> float:
     return value
 
 
+def time_within(name: str, value, limit: float, limit_name: str, why: str) -> float:
+    """Finite time in [0, ``limit``]; ``limit_name`` names the module constant that sets the limit, ``why`` its
+    reason."""
+    value = nonnegative(name, value)
+    if value > limit:
+        raise ValueError(f"{name} = {value:g} is beyond {limit_name} = {limit:g}: {why}")
+    return value
+
+
 def integer_at_least(name: str, value, minimum: int, maximum: int | None = None) -> int:
     """Integer >= ``minimum`` (and <= ``maximum``, a limit on the work a call may ask for)."""
     if isinstance(value, bool) or not isinstance(value, (Integral, np.integer)):

@@ -35,6 +35,7 @@ from ..validation import (
     one_of,
     positive,
     same_length,
+    time_within,
 )
 from .checks import MAX_EVALUATIONS, MAX_FMM_PARTICLES, MAX_STORED, MAX_TIME, MIN_DELTA_OVER_H, output_times
 from .initial import as_data_1d, as_data_2d, grid_1d, grid_2d
@@ -298,9 +299,8 @@ def mass_defect(points, rho0, masses, kernel: Kernel, t: float, *, offset: float
     if dimension not in (1, 2):
         raise ValueError(f"points must have shape (N, d) with d = 1 or 2, got {points.shape}")
     same_length(points=points[:, 0], rho0=rho0, masses=masses)
-    t, offset, threshold = nonnegative("t", t), positive("offset", offset), nonnegative("threshold", threshold)
-    if t > MAX_TIME:
-        raise ValueError(f"t = {t} must be at most MAX_TIME = {MAX_TIME} (a limit on the work of one run)")
+    t = time_within("t", t, MAX_TIME, "MAX_TIME", "a limit on the work of one run")
+    offset, threshold = positive("offset", offset), nonnegative("threshold", threshold)
     if offset > MAX_OFFSET:
         raise ValueError(f"offset = {offset} must be at most MAX_OFFSET = {MAX_OFFSET} (a finite-difference step)")
     inside = rho0 > threshold

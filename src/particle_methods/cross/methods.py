@@ -45,7 +45,7 @@ from ..ltp.solver import simulate
 from ..norms import cdf_antiderivative
 from ..perturbation import nudged
 from ..sticky.spd import MAX_POSITIONS, spd_positions
-from ..validation import finite_array, finite_result, integer_at_least, nonnegative, positive, same_length
+from ..validation import finite_array, finite_result, integer_at_least, nonnegative, positive, same_length, time_within
 from .exact import solution
 from .hull import BUMP_DATA, BumpData, bump_data
 from .profiles import Profile, profile
@@ -73,11 +73,8 @@ MAX_PATH_VALUES = 10**8
 
 
 def _spd_time(t) -> float:
-    t = nonnegative("t", t)
-    if t > MAX_TIME:
-        raise ValueError(f"t = {t:g} is beyond MAX_TIME = {MAX_TIME:g}: the rounding of the velocities, times t, "
-                         "would move the particles by more than their positions' accuracy")
-    return t
+    return time_within("t", t, MAX_TIME, "MAX_TIME", "the rounding of the velocities, times t, would move the "
+                       "particles by more than their positions' accuracy")
 
 
 def aggregation_flux(mass: float):
@@ -215,11 +212,7 @@ def blob_method(data, h: float, t: float, *, order: int, q: float, rtol: float =
 
 def _blob_time(t) -> float:
     """The time of one particle or blob run, checked here so that the errors name ``t``, not the solver's times."""
-    t = nonnegative("t", t)
-    if t > MAX_BLOB_TIME:
-        raise ValueError(f"t = {t:g} is beyond the particle solver's MAX_TIME = {MAX_BLOB_TIME:g} (a limit on the "
-                         "work of one run)")
-    return t
+    return time_within("t", t, MAX_BLOB_TIME, "the particle solver's MAX_TIME", "a limit on the work of one run")
 
 
 def blob_paths(data, h: float, times, *, order: int, q: float, rtol: float = 1e-12, atol: float = 1e-14):
