@@ -9,7 +9,16 @@ import pytest
 import yaml
 
 from particle_replication.configuration import check_configuration, overlay, repository_configuration
-from particle_replication.work_limits import LIMITS, check_work_limits, solver_limit, walk
+from particle_replication.work_limits import (
+    CASE_FLUXES,
+    LIMITS,
+    SCALAR_SPEEDS,
+    check_work_limits,
+    psystem_peak_speed,
+    psystem_type_cell_steps,
+    solver_limit,
+    walk,
+)
 from particle_replication.workflow import MAX_REPEATS, interleaved
 
 FULL = repository_configuration("full")
@@ -27,14 +36,12 @@ NOT_WORK = {
     "blob.fig1.density_times", "blob.fig2.density_times", "blob.fig3.density_times",
     # a ratio, not a size
     "cross.ltp.sp_eps_over_h",
+    # times of exact solutions: the SPD computes one hull per time (section 5.1.1) and the exact MSPD at most
+    # n^2 + 2 n events whatever the time (their n are held), so their work does not grow with t
+    "sticky.fig1.t", "sticky.fig2.t_max", "sticky.fig3.t_max", "sticky.remark33.dirac_times",
+    "sticky.remark33.admissibility.times", "sticky.theory.scalar.times", "sticky.theory.random.times",
 }
 UNCHECKED = {
-    # The SPD is exact in time (one hull per time): its work does not grow with t. The Godunov and HLL runs'
-    # steps do, at a speed of the flux that the configuration does not give (not yet held to MAX_CELL_STEPS).
-    "sticky.fig1.t", "sticky.fig2.t_max", "sticky.fig3.t_max", "sticky.remark33.dirac_times",
-    "sticky.remark33.admissibility.times", "sticky.remark33.godunov_times", "sticky.remark33.convex.t",
-    "sticky.remark33.refinement.t", "sticky.theory.scalar.times", "sticky.theory.random.times", "sticky.beyond.t",
-    "sticky.beyond.scalar.burgers_two_atoms.t", "sticky.beyond.scalar.concave_laplace.t",
     # evaluation grids and scans of the LTP scripts: no solver limit of their own (configuration.MAX_COUNT only)
     "ltp.fig1.points", "ltp.quadratic.grid_points", "ltp.fig4.grid_points",
     "ltp.quadratic.eps_scan.count", "ltp.fig4.eps_scan.count",
@@ -146,6 +153,14 @@ ABSURD = [
     ("cross.aggregates.t_end", 1e9),
     ("cross.aggregates.path_steps", 10**7),
     ("cross.aggregates.godunov_cells", [256, 10**8]),
+    # finite volumes, whose steps grow with the time
+    ("sticky.remark33.godunov_times", [1.0, 5.0, 1e6]),
+    ("sticky.remark33.convex.t", 1e6),
+    ("sticky.remark33.refinement.t", 1e5),
+    ("sticky.beyond.scalar.burgers_two_atoms.t", 1e5),
+    ("sticky.beyond.scalar.concave_laplace.t", 1e4),
+    ("sticky.beyond.t", 1e3),
+    ("sticky.psystem.nu", 1e-6),
 ]
 
 
@@ -155,6 +170,32 @@ def test_an_absurd_size_stops_at_the_check_naming_the_key_and_its_limit(key, val
     limit = r".*beyond the limit [A-Z_]+ = \S+ of the code it feeds \(particle_(methods|replication)\.[a-z_.]+\)"
     with pytest.raises(ValueError, match=named + limit):
         check_configuration(overlay(FULL, nested(key, value)))
+
+
+def test_the_finite_volumes_speeds_are_the_solvers_own():
+    """The speeds the limits assume are those of the fluxes and of the p-system the runs use."""
+    from particle_methods.finite_volume.fluxes import BURGERS, CONCAVE
+    from particle_methods.sticky.cases import SCALAR_CASES
+    from particle_methods.systems import PSystem
+
+    assert SCALAR_SPEEDS == {"burgers": BURGERS.max_speed(0.0, 1.0), "concave": CONCAVE.max_speed(0.0, 1.0)}
+    fluxes = {"burgers": BURGERS, "concave": CONCAVE}
+    assert {name: fluxes[flux].f for name, flux in CASE_FLUXES.items()} == {
+        name: SCALAR_CASES[name].flux for name in CASE_FLUXES}
+    for nu, kappa in [(0.5, 5.0), (1.0, 1e-3), (2.0, 40.0)]:
+        system = PSystem(nu=nu, kappa=kappa)
+        assert psystem_peak_speed(nu, kappa) == pytest.approx(system.speed_scale, rel=1e-15)
+        assert psystem_peak_speed(nu, kappa) == pytest.approx(float(system.sound_speed(nu / 2)), rel=1e-15)
+
+
+def test_a_time_under_its_finite_volume_limit_passes_and_one_step_beyond_is_refused():
+    """The largest sticky.beyond.t the upwind reference accepts passes; a tenth more is refused naming it."""
+    sticky = FULL["sticky"]
+    work = psystem_type_cell_steps(sticky, sticky["beyond"]["upwind_reference_cells"])
+    largest = sticky["beyond"]["t"] * solver_limit("particle_methods.finite_volume.psystem.MAX_UPWIND_WORK") / work
+    check_configuration(overlay(FULL, nested("sticky.beyond.t", 0.95 * largest)))
+    with pytest.raises(ValueError, match=r"sticky\.beyond\.t = .*MAX_UPWIND_WORK"):
+        check_configuration(overlay(FULL, nested("sticky.beyond.t", 1.1 * largest)))
 
 
 def test_the_check_refuses_what_is_no_configuration():

@@ -135,6 +135,8 @@ EVENTS = "particle_methods.sticky.multitype_events"
 ADMISSIBILITY = "particle_methods.sticky.admissibility"
 THEORY = "particle_methods.sticky.theory"
 GRIDS = "particle_methods.finite_volume.grids"
+GODUNOV = "particle_methods.finite_volume.scalar"
+PSYSTEM_FV = "particle_methods.finite_volume.psystem"
 LTP = "particle_methods.ltp.solver"
 LTP_CHECKS = "particle_methods.ltp.checks"
 LTP_THEOREMS = "particle_methods.ltp.theorems"
@@ -155,6 +157,56 @@ def _row_steps(section: Mapping) -> float:
     cases = section.get("cases") or [section]
     return max(max(case["t"], case.get("t_long", section.get("t_long", case["t"]))) * section["steps"] / case["t"]
                for case in cases)
+
+#: Largest |f'| over the states [0, 1] of the scalar fluxes, Burgers (5.1) u^2/2 and the concave (5.3) u(1 - u)/2 (the
+#: speeds ``ScalarFlux.max_speed(0, 1)`` of ``particle_methods.finite_volume.fluxes``, which a test compares): the
+#: Godunov runs' time step is cfl dx / speed.
+SCALAR_SPEEDS = {"burgers": 1.0, "concave": 0.5}
+#: The flux of each scalar case of ``sticky.beyond.scalar`` (``particle_methods.sticky.cases.SCALAR_CASES``).
+CASE_FLUXES = {"burgers_two_atoms": "burgers", "concave_laplace": "concave"}
+
+
+def psystem_peak_speed(nu: float, kappa: float) -> float:
+    """The largest sound speed c(nu/2) = kappa / (2 nu asinh(kappa/2)) of the p-system of section 5.2.2, the largest
+    |lambda| of (5.7) (``particle_methods.systems.PSystem.speed_scale``, which a test compares; computed here without
+    importing the solvers). Both data of section 5.2.2 reach it, so the finite volumes' time step is cfl dx / it."""
+    return kappa / (2.0 * nu * math.asinh(0.5 * kappa))
+
+
+def _steps(t: float, speed: float, width: float, cells: float, cfl: float = 1.0) -> float:
+    """Time steps ceil(t / dt) of a finite-volume run at dt = cfl dx / speed, dx = width / cells (cfl <= 1: at least
+    the steps of cfl = 1)."""
+    return math.ceil(t * speed * cells / (cfl * width))
+
+
+def _remark33_cell_steps(s: Mapping) -> float:
+    """Cell updates of the largest Godunov run of Remark 3.3's check: its grid spans [min - 1, max + 1] of the data and
+    the SPD positions, at least [-1, 1], at cells_per_unit (the refinement's own list for its run)."""
+    cfl = s["cfl"]
+    runs = [(t, SCALAR_SPEEDS["concave"], c) for t in s["godunov_times"] for c in s["cells_per_unit"]]
+    runs += [(s["convex"]["t"], SCALAR_SPEEDS["burgers"], c) for c in s["cells_per_unit"]]
+    runs += [(s["refinement"]["t"], SCALAR_SPEEDS["concave"], c) for c in s["refinement"]["cells_per_unit"]]
+    return max(2 * c * _steps(t, speed, 1.0, c, cfl) for t, speed, c in runs)
+
+
+def _scalar_cell_steps(s: Mapping) -> float:
+    """Cell updates (cells x steps) of the finest Godunov run of the cases of ``sticky.beyond.scalar``, each on its
+    ``cells`` over its ``domain`` up to its ``t``."""
+    return max(_largest(case["cells"]) * _steps(case["t"], SCALAR_SPEEDS[CASE_FLUXES[name]],
+                                                case["domain"][1] - case["domain"][0], _largest(case["cells"]))
+               for name, case in s.items())
+
+
+def psystem_type_cell_steps(s: Mapping, cells: float) -> float:
+    """Type-cell updates (2 x cells x steps) of a run on ``cells`` cells of ``sticky.beyond.domain`` up to
+    ``sticky.beyond.t``: the upwind scheme updates both invariants of every cell at each step."""
+    beyond, system = s["beyond"], s["psystem"]
+    width = beyond["domain"][1] - beyond["domain"][0]
+    return 2 * cells * _steps(beyond["t"], psystem_peak_speed(system["nu"], system["kappa"]), width, cells,
+                              beyond["cfl"])
+
+
+_PSYSTEM_KEYS = ("sticky.beyond.t", "sticky.beyond.cfl", "sticky.psystem.nu", "sticky.psystem.kappa")
 
 LIMITS: tuple[Limit, ...] = (
     # --- sticky: the SPD (hull), the MSPD and iterated TSPD, the exact MSPD's events, finite volumes
@@ -224,6 +276,27 @@ LIMITS: tuple[Limit, ...] = (
           "n steps x d^2 x n rank entries"),
     Limit(("sticky.beyond.reference_cells", "sticky.beyond.upwind_reference_cells", "sticky.beyond.upwind_cells",
            "sticky.beyond.scalar.*.cells"), f"{GRIDS}.MAX_CELLS", lambda v, s: v, "cells"),
+    # finite volumes: steps grow with the time, at the largest speed of the flux
+    # (the nested keys named by the refusal; the check itself is reached at the section's own keys)
+    Limit(("sticky.remark33.godunov_times", "sticky.remark33.cells_per_unit", "sticky.remark33.cfl",
+           "sticky.remark33.convex.t", "sticky.remark33.refinement.t", "sticky.remark33.refinement.cells_per_unit"),
+          f"{GODUNOV}.MAX_CELL_STEPS", lambda v, s: _remark33_cell_steps(s),
+          "cell updates of the largest Godunov run, at least (2 cells_per_unit) x steps over [-1, 1]"),
+    Limit(("sticky.beyond.scalar.*.t", "sticky.beyond.scalar.*.cells"),
+          f"{GODUNOV}.MAX_CELL_STEPS", lambda v, s: _scalar_cell_steps(s),
+          "cell updates of the finest Godunov run of a case, cells x steps over its domain (at least those of cfl = 1)",
+          up=2),
+    Limit((*_PSYSTEM_KEYS, "sticky.beyond.reference_cells"), f"{PSYSTEM_FV}.MAX_CELL_STEPS",
+          lambda v, s: psystem_type_cell_steps(s, s["beyond"]["reference_cells"]) / 2,
+          "cell updates of the HLL reference, reference_cells x steps over sticky.beyond.domain at the peak sound "
+          "speed",
+          up=2),
+    Limit((*_PSYSTEM_KEYS, "sticky.beyond.upwind_reference_cells", "sticky.beyond.upwind_cells"),
+          f"{PSYSTEM_FV}.MAX_UPWIND_WORK",
+          lambda v, s: psystem_type_cell_steps(s, max(s["beyond"]["upwind_reference_cells"],
+                                                   _largest(s["beyond"]["upwind_cells"]))),
+          "type-cell updates of the finest upwind run, 2 x cells x steps over sticky.beyond.domain at the peak speed",
+          up=2),
     # --- LTP and SP (particle_methods.ltp): particles on [-1, 1] at step h, steps of dt
     Limit(("ltp.*.h", "ltp.*h_values", "ltp.*.sp_h", "ltp.*.plot_h", "ltp.*.reference_h"),
           f"{LTP_CHECKS}.MAX_PARTICLES",
