@@ -1,16 +1,17 @@
-"""The pure functions of benchmarks/pipeline_times.py: benchmark files, job graph, critical path, the run's CPU;
-and every benchmark script's header naming the CPU its times are measured on."""
+"""The times of a pipeline run (particle_replication.pipeline_times, printed by benchmarks/pipeline_times.py):
+benchmark files, job graph, critical path, the run's CPU, its span and whether it compiled its kernels; the README's
+sentence on them; and every benchmark script's header naming the CPU its times are measured on."""
 
 import ast
-import importlib.util
+import os
 from pathlib import Path
 
 import pytest
 
+from particle_replication import pipeline_times
+from particle_replication.readme import times_sentence
+
 SCRIPT = Path(__file__).resolve().parent.parent / "benchmarks" / "pipeline_times.py"
-spec = importlib.util.spec_from_file_location("pipeline_times", SCRIPT)
-pipeline_times = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(pipeline_times)
 
 HEADER = "s\th:m:s\tmax_rss\tmax_vms\tmax_uss\tmax_pss\tio_in\tio_out\tmean_load\tcpu_time\n"
 
@@ -130,9 +131,48 @@ def test_every_benchmark_prints_the_cpu_from_its_one_description():
     scripts = sorted(path for path in folder.glob("*.py") if path.name != "timing.py")
     assert len(scripts) >= 10
     for path in scripts:
-        expected = (("particle_replication.environment", "recorded_cpu") if path == SCRIPT
+        expected = (("particle_replication.pipeline_times", "run_cpu") if path == SCRIPT
                     else ("timing", "print_cpu"))
         assert expected in imported_names(path), path.name
         calls = {node.func.id for node in ast.walk(ast.parse(path.read_text()))
                  if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)}
-        assert expected[1] in calls or path == SCRIPT, f"{path.name} imports {expected[1]} but never calls it"
+        assert expected[1] in calls, f"{path.name} imports {expected[1]} but never calls it"
+
+
+def test_a_span_is_measured_only_for_jobs_of_one_invocation(tmp_path):
+    """Each job ends at its benchmark file's time; a gap longer than MAX_IDLE with no job running means several
+    invocations (an incremental run), whose span says nothing of one run's time."""
+    for name, seconds, end in [("a", 10.0, 1010.0), ("b", 20.0, 1025.0), ("c", 5.0, 1040.0)]:
+        path = tmp_path / f"{name}.tsv"
+        path.write_text(HEADER + row(seconds))
+        os.utime(path, (end, end))
+    intervals = pipeline_times.job_intervals(tmp_path)
+    assert intervals == [(1000.0, 1010.0), (1005.0, 1025.0), (1035.0, 1040.0)]
+    assert pipeline_times.one_invocation_span(intervals) == 40.0
+    assert pipeline_times.job_intervals(tmp_path, {"a", "c"}) == [(1000.0, 1010.0), (1035.0, 1040.0)]
+    late = intervals + [(1040.0 + pipeline_times.MAX_IDLE + 1.0, 1100.0)]
+    assert pipeline_times.one_invocation_span(late) is None
+    assert pipeline_times.one_invocation_span([]) is None
+
+
+def test_a_run_is_cold_when_no_kernel_cache_predates_it(tmp_path):
+    cache = tmp_path / "sub" / "__pycache__"
+    cache.mkdir(parents=True)
+    assert pipeline_times.compiled_during(100.0, tmp_path) is None
+    index = cache / "kernels.f-10.py311.nbi"
+    index.write_text("")
+    os.utime(index, (150.0, 150.0))
+    assert pipeline_times.compiled_during(100.0, tmp_path) is True
+    assert pipeline_times.compiled_during(200.0, tmp_path) is False
+
+
+def test_the_readme_says_what_the_run_cost_and_how_it_was_run():
+    times = pipeline_times.RunTimes(span=804.2, jobs=1488.5, core_seconds=1583.5, path=304.4, bound=791.8, cores=2,
+                                    cold=True, cpu="AMD EPYC (AVX2, 2 cores)")
+    sentence = times_sentence(times)
+    assert "took 804 s on 2 cores" in sentence and "compiling every kernel itself" in sentence
+    assert "1488 s together" in sentence and "less than 792 s (the critical path 304 s" in sentence
+    warm = times_sentence(pipeline_times.RunTimes(**{**times.__dict__, "cold": False}))
+    assert "earlier run had compiled" in warm
+    several = times_sentence(pipeline_times.RunTimes(**{**times.__dict__, "span": None}))
+    assert "several invocations" in several and "took 1488 s together" in several

@@ -2,7 +2,8 @@
 
 ``python -m particle_replication.readme`` prints the block the README holds between its results markers, from
 the run's claims table (``results/claims.csv``: the counts, the margins), its software record
-(``results/versions.md``: the commit, its date, the CPU it ran on) and the expected verdicts
+(``results/versions.md``: the commit, its date, the CPU it ran on), its times (its benchmark files and job
+graph: :func:`~particle_replication.pipeline_times.run_times`) and the expected verdicts
 (``config/verdicts.yaml``: each failure's cause and reason); ``--write`` puts it into README.md. The tests keep
 the block in step with the expected verdicts (tests/test_readme.py).
 """
@@ -17,6 +18,7 @@ from pathlib import Path
 from .claims import CAUSES, KINDS, counts, fragile, read_claims, read_verdicts
 from .environment import recorded_cpu
 from .paths import REPOSITORY
+from .pipeline_times import RunTimes, run_times
 
 START = ("<!-- results: generated from the full run by `python -m particle_replication.readme --write`; "
          "tests/test_readme.py keeps it in step with config/verdicts.yaml -->")
@@ -40,10 +42,26 @@ def _field(versions: str, name: str) -> str:
     return found.group(1).strip() if found else "unknown"
 
 
-def results_block(claims, expected, versions: str, margin_min: float, robustness: str = "") -> str:
+def times_sentence(times: RunTimes) -> str:
+    """What the run cost: its span, whether it compiled its kernels, its summed job time and its lower bound."""
+    compiled = {True: "compiling every kernel itself, as a fresh clone does",
+                False: "with kernels an earlier run had compiled",
+                None: "whether it compiled its kernels itself is not recorded"}[times.cold]
+    took = (f"It took {times.span:.0f} s on {times.cores} cores from its first job's start to its last job's end, "
+            f"{compiled}; its jobs" if times.span is not None else
+            "Its jobs were run by several invocations of Snakemake (its span is not measured); they")
+    return (f"{took} took {times.jobs:.0f} s together, and no schedule on {times.cores} cores "
+            f"finishes them in less than {times.bound:.0f} s (the critical path {times.path:.0f} s, the core-seconds "
+            f"{times.core_seconds:.0f} / {times.cores}). Another machine's times differ: `benchmarks/README.md` "
+            "names the CPU of every measurement.")
+
+
+def results_block(claims, expected, versions: str, margin_min: float, robustness: str = "",
+                  times: RunTimes | None = None) -> str:
     """The README's results paragraph and table of failures for a run's ``claims`` (with their margins), its
-    ``expected`` verdicts (claim id -> :class:`~particle_replication.claims.Expected`), its versions record and
-    its robustness report (``results/robustness.md``, or '' if the run has none)."""
+    ``expected`` verdicts (claim id -> :class:`~particle_replication.claims.Expected`), its versions record,
+    its robustness report (``results/robustness.md``, or '' if the run has none) and its times (None: not
+    measured)."""
     tally = counts(claims)
     paper, derived, check = (tally.get(kind, (0, 0)) for kind in KINDS)
     abstained = sum(claim.status == "abstain" for claim in claims)
@@ -60,7 +78,8 @@ def results_block(claims, expected, versions: str, margin_min: float, robustness
         "Every verdict is compared with the expected one in `config/verdicts.yaml`, at the end of the run and by "
         "`snakemake verify`; each expected failure carries its cause and reason (a pre-asymptotic one: the paper's "
         "limit lies beyond our resolutions; a defect: our own instrument decides the verdict), and the report "
-        "(`paper/ms.pdf`) gives the evidence. " + cause_sentence(causes),
+        "(`paper/ms.pdf`) gives the evidence. " + cause_sentence(causes)
+        + (" " + times_sentence(times) if times else ""),
         "",
         "| claim | kind | cause | why |",
         "|---|---|---|---|",
@@ -112,7 +131,8 @@ def main(argv=None) -> int:
     block = results_block(read_claims(root / "results" / "claims.csv"),
                           read_verdicts(REPOSITORY / config["verdicts"]),
                           (root / "results" / "versions.md").read_text(), config["robustness"]["margin_min"],
-                          report.read_text() if report.exists() else "")
+                          report.read_text() if report.exists() else "",
+                          run_times(root) if (root / "logs" / "benchmarks").is_dir() else None)
     if args.write:
         readme = REPOSITORY / "README.md"
         readme.write_text(replaced(readme.read_text(), block))
