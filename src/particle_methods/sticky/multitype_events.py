@@ -148,49 +148,56 @@ def _position(cluster, t, xref, tref, vel):
 
 
 @njit(inline="always")
-def _heap_swap(heap, where, i, j):
-    a, b = heap[i], heap[j]
-    heap[i], heap[j] = b, a
-    where[b], where[a] = i, j
+def _heap_place(heap, hkey, where, size, i, cluster, value):
+    """File ``cluster`` with meeting time ``value`` in the heap from the free slot i (its old slot, or the end
+    of the heap): the entries it passes move into the hole, up while their parent's time is larger, else
+    down while the smaller child's time is smaller (the left child on a tie). The times sit in the heap
+    beside the ids (``hkey``, +inf beyond the last entry), so a comparison reads no cluster, and the right
+    child is read without a test of the size."""
+    moved = False
+    while i > 0:
+        parent = (i - 1) >> 1
+        if not hkey[parent] > value:
+            break
+        entry = heap[parent]
+        heap[i], hkey[i], where[entry] = entry, hkey[parent], i
+        i, moved = parent, True
+    while not moved:
+        child = 2 * i + 1
+        if child >= size:
+            break
+        child += hkey[child + 1] < hkey[child]
+        if not hkey[child] < value:
+            break
+        entry = heap[child]
+        heap[i], hkey[i], where[entry] = entry, hkey[child], i
+        i = child
+    heap[i], hkey[i], where[cluster] = cluster, value, i
 
 
 @njit(inline="always")
-def _heap_update(heap, where, size, key, cluster):
-    """Restore the heap after ``key[cluster]`` changed; inserts ``cluster`` if absent. Returns the size."""
+def _heap_update(heap, hkey, where, size, cluster, value):
+    """File ``cluster`` with the meeting time ``value``, in the heap or not yet. Returns the size."""
     i = where[cluster]
     if i < 0:
         i = size
-        heap[i] = cluster
-        where[cluster] = i
         size += 1
-    while i > 0 and key[heap[(i - 1) // 2]] > key[heap[i]]:
-        _heap_swap(heap, where, i, (i - 1) // 2)
-        i = (i - 1) // 2
-    while True:
-        smallest, left = i, 2 * i + 1
-        if left < size and key[heap[left]] < key[heap[smallest]]:
-            smallest = left
-        if left + 1 < size and key[heap[left + 1]] < key[heap[smallest]]:
-            smallest = left + 1
-        if smallest == i:
-            return size
-        _heap_swap(heap, where, i, smallest)
-        i = smallest
+    _heap_place(heap, hkey, where, size, i, cluster, value)
+    return size
 
 
 @njit(inline="always")
-def _heap_remove(heap, where, size, key, cluster):
-    """Remove ``cluster`` from the heap if present. Returns the size."""
+def _heap_remove(heap, hkey, where, size, cluster):
+    """Remove ``cluster`` from the heap if present: the last entry fills its slot. Returns the size."""
     i = where[cluster]
     if i < 0:
         return size
     size -= 1
-    last = heap[size]
     where[cluster] = -1
+    last, value = heap[size], hkey[size]
+    hkey[size] = np.inf
     if i < size:
-        heap[i] = last
-        where[last] = i
-        size = _heap_update(heap, where, size, key, last)
+        _heap_place(heap, hkey, where, size, i, last, value)
     return size
 
 
@@ -205,12 +212,12 @@ def _meeting_time(a, now, kind, nxt, xref, tref, vel):
 
 
 @njit(inline="always")
-def _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel):
-    """Set the meeting time of cluster a with the next one and file it in the heap. Returns the size."""
-    key[a] = _meeting_time(a, now, kind, nxt, xref, tref, vel)
-    if key[a] < np.inf:
-        return _heap_update(heap, where, size, key, a)
-    return _heap_remove(heap, where, size, key, a)
+def _schedule(a, now, heap, hkey, where, size, kind, nxt, xref, tref, vel):
+    """File cluster a in the heap with the time it meets the next one (out of it if never). Returns the size."""
+    time = _meeting_time(a, now, kind, nxt, xref, tref, vel)
+    if time < np.inf:
+        return _heap_update(heap, hkey, where, size, a, time)
+    return _heap_remove(heap, hkey, where, size, a)
 
 
 @njit(inline="always")
@@ -288,7 +295,7 @@ def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, 
     :func:`_advance`). Returns ``_DONE``, or ``_VIOLATES_USH`` (:func:`_record_speeds`) on the velocities."""
     d, n = x0.shape
     kind, low, high, prv, nxt, heap, where, free = clusters
-    xref, tref, vel, key = motion
+    xref, tref, vel, hkey = motion
     row = rows[0]
     for gamma in range(d):
         if not _record_speeds(lam, gamma, 0, n, extremes, report):
@@ -330,7 +337,7 @@ def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, 
     size = 0
     cluster = head
     while cluster >= 0:
-        size = _schedule(cluster, 0.0, heap, where, size, key, kind, nxt, xref, tref, vel)
+        size = _schedule(cluster, 0.0, heap, hkey, where, size, kind, nxt, xref, tref, vel)
         cluster = nxt[cluster]
     state[_SIZE], state[_HEAD], state[_INDEX] = size, head, 0
     return _DONE
@@ -356,14 +363,14 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
     inlined, about 5 times without (n = 3200 per type)."""
     d, n = x0.shape
     kind, low, high, prv, nxt, heap, where, free = clusters
-    xref, tref, vel, key = motion
+    xref, tref, vel, hkey = motion
     row, row_b = rows[0], rows[1]
     nfree = state[_FREE:_FREE + 1]
     size, head, index = state[_SIZE], state[_HEAD], state[_INDEX]
     supplied = state[_STAGE] == _SUPPLIED
     state[_STAGE] = _RUNNING
     while index < times.size:
-        event_time = key[heap[0]] if size > 0 else np.inf
+        event_time = hkey[0] if size > 0 else np.inf
         while index < times.size and times[index] <= event_time:
             # Between events every cluster moves straight; a rounding guard keeps each type sorted.
             behind[:] = -np.inf
@@ -389,11 +396,11 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
             nxt[a] = after
             if after >= 0:
                 prv[after] = a
-            size = _heap_remove(heap, where, size, key, b)
+            size = _heap_remove(heap, hkey, where, size, b)
             free[nfree[0]] = b
             nfree[0] += 1
             stats[0] += 1
-            size = _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+            size = _schedule(a, now, heap, hkey, where, size, kind, nxt, xref, tref, vel)
         else:  # a (lower type) passes b: new ranks, new velocities (1.8) for their members only
             alpha, beta = kind[a], kind[b]
             lo_a, hi_a, lo_b, hi_b = low[a], high[a], low[b], high[b]
@@ -434,11 +441,11 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
             cluster = first_b
             while cluster != after:
                 stats[2] += 1
-                size = _schedule(cluster, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+                size = _schedule(cluster, now, heap, hkey, where, size, kind, nxt, xref, tref, vel)
                 cluster = nxt[cluster]
             stats[2] -= 2  # the two clusters that passed each other are not new
         if before >= 0:
-            size = _schedule(before, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+            size = _schedule(before, now, heap, hkey, where, size, kind, nxt, xref, tref, vel)
     state[_SIZE], state[_HEAD], state[_INDEX] = size, head, index
     return _DONE
 
@@ -471,7 +478,8 @@ class _Run(NamedTuple):
         state[_STAGE], state[_FREE] = _RUNNING, capacity
         extremes = np.empty((2, d))
         extremes[0], extremes[1] = np.inf, -np.inf
-        return cls(lam, (*ints, where, free), tuple(np.empty(capacity) for _ in range(4)),
+        motion = (*(np.empty(capacity) for _ in range(3)), np.full(capacity + 1, np.inf))  # xref, tref, vel, hkey
+        return cls(lam, (*ints, where, free), motion,
                    np.empty((capacity, d), dtype=np.int64), np.empty(n, dtype=np.int64), np.empty(n),
                    np.empty((2, d), dtype=np.int64), np.empty(d), state, np.empty(6, dtype=np.int64), extremes,
                    np.empty(3))
