@@ -98,20 +98,47 @@ class EventCounts(_Counts):
 _primitive_formula = njit(speed_primitive_formula)
 
 
+#: Values of the primitive the compiled loop keeps per difference of counts (:func:`_primitive_of_spread`).
+PRIMITIVE_WAYS = 8
+
+
 @njit(inline="always")
-def _psystem_speeds(a, coefficient, gamma, lo, hi, row, lam):
+def _primitive_of_spread(spread, difference, table, a, coefficient):
+    """coefficient * atan(sinh(a spread)) for spread = (i - j)/n as the loop rounds it, fl(i/n) - fl(j/n): the
+    value kept in row ``difference`` = i - j + n of ``table`` (pairs spread, value, most recent first) for the
+    same double, else computed and kept. Rounding makes a few doubles of one difference (up to 16 at n = 6400),
+    each a row keeps (:data:`PRIMITIVE_WAYS`) is evaluated once: the same value as evaluated anew.
+    A spread is never -0.0 (x - x is +0.0), so == compares the bits."""
+    for way in range(PRIMITIVE_WAYS):
+        if table[difference, 2 * way] == spread:
+            return table[difference, 2 * way + 1]
+    value = _primitive_formula(spread, a, coefficient)
+    for slot in range(2 * PRIMITIVE_WAYS - 1, 1, -1):
+        table[difference, slot] = table[difference, slot - 2]
+    table[difference, 0], table[difference, 1] = spread, value
+    return value
+
+
+@njit(inline="always")
+def _psystem_speeds(a, coefficient, gamma, lo, hi, row, lam, table):
     """Velocities (1.8) lam[gamma, lo:hi] of the p-system's particles gamma:lo .. gamma:hi-1 with ``row[g]``
     particles of type g behind them, from the m + 1 = hi - lo + 1 values of the primitive of (5.7) in its own
     variable, P = coefficient * atan(sinh(a (w^+ - w^-))), at the own levels lo/n .. hi/n: particle k moves
-    at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+."""
+    at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+: the
+    spread w^+ - w^- is (count - k)/n, resp. (k - count)/n, each value kept in ``table``
+    (:func:`_primitive_of_spread`)."""
     n = lam.shape[1]
-    other = row[1 - gamma] / n
-    level = lo / n
-    below = _primitive_formula(other - level if gamma == 0 else level - other, a, coefficient)
-    for k in range(lo, hi):
-        level = (k + 1) / n
-        above = _primitive_formula(other - level if gamma == 0 else level - other, a, coefficient)
-        lam[gamma, k] = n * (above - below)
+    count = row[1 - gamma]
+    other = count / n
+    below = 0.0
+    for k in range(lo, hi + 1):
+        level = k / n
+        if gamma == 0:
+            above = _primitive_of_spread(other - level, count - k + n, table, a, coefficient)
+        else:
+            above = _primitive_of_spread(level - other, k - count + n, table, a, coefficient)
+        if k > lo:
+            lam[gamma, k - 1] = n * (above - below)
         below = above
 
 
@@ -345,7 +372,7 @@ def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, 
 
 @njit(**NO_RUNTIME)
 def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums, rows, behind, state, request,
-             extremes, report, constants, compiled):
+             extremes, report, constants, compiled, table):
     """Event loop of the MSPD from x0 (shape (d, n)) with the initial velocities (1.8) ``lam``, writing the
     configuration at each of ``times`` (non-decreasing) to ``out``; ``stats`` receives the :class:`EventCounts`.
 
@@ -412,8 +439,8 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
                 row[beta] += hi_b - lo_b
                 row_b[alpha] -= hi_a - lo_a
                 if compiled:
-                    _psystem_speeds(constants[0], constants[1], alpha, lo_a, hi_a, row, lam)
-                    _psystem_speeds(constants[0], constants[1], beta, lo_b, hi_b, row_b, lam)
+                    _psystem_speeds(constants[0], constants[1], alpha, lo_a, hi_a, row, lam, table)
+                    _psystem_speeds(constants[0], constants[1], beta, lo_b, hi_b, row_b, lam, table)
                 else:
                     request[0], request[1], request[2] = alpha, lo_a, hi_a
                     request[3], request[4], request[5] = beta, lo_b, hi_b
@@ -466,6 +493,7 @@ class _Run(NamedTuple):
     request: np.ndarray
     extremes: np.ndarray
     report: np.ndarray
+    table: np.ndarray
 
     @classmethod
     def allocate(cls, lam: np.ndarray) -> _Run:
@@ -482,12 +510,12 @@ class _Run(NamedTuple):
         return cls(lam, (*ints, where, free), motion,
                    np.empty((capacity, d), dtype=np.int64), np.empty(n, dtype=np.int64), np.empty(n),
                    np.empty((2, d), dtype=np.int64), np.empty(d), state, np.empty(6, dtype=np.int64), extremes,
-                   np.empty(3))
+                   np.empty(3), np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan))
 
     def nbytes(self) -> int:
         """Bytes held by the run's arrays (the velocities included)."""
         arrays = [self.lam, *self.clusters, *self.motion, self.counts, self.starts, self.sums, self.rows, self.behind,
-                  self.state, self.request, self.extremes, self.report]
+                  self.state, self.request, self.extremes, self.report, self.table]
         return sum(array.nbytes for array in arrays)
 
 
@@ -584,7 +612,8 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     stats = np.zeros(4, dtype=np.int64)
     while status != _VIOLATES_USH:
         status = _advance(x0, run.lam, times, out, stats, run.clusters, run.motion, run.counts, run.starts, run.sums,
-                          run.rows, run.behind, run.state, run.request, run.extremes, run.report, constants, compiled)
+                          run.rows, run.behind, run.state, run.request, run.extremes, run.report, constants, compiled,
+                          run.table)
         if status != _NEEDS_SPEEDS:
             break
         for (gamma, lo, hi), row in zip(run.request.reshape(2, 3), run.rows):
