@@ -8,8 +8,8 @@ of such events is of order n^2 and leaves the exact algorithm aside; it is built
 Data structure: one list of clusters of all types ordered along the line, a tie at one place
 being ordered by decreasing type (the post-collisional order of (USH), as in
 :func:`~particle_methods.sticky.mspd.ranks_kernel`). Trajectories are straight between events, so the
-next meeting is between neighbours of this list: each cluster holds the time at which it meets
-the next one, in an indexed binary heap. At an event:
+next meeting is between neighbours of this list: the time at which each cluster meets the next one
+is filed in an indexed binary heap, which holds the times beside the cluster ids. At an event:
 
 - two clusters of one type merge; mass and momentum are conserved, so the merged cluster moves
   at the mean of its members' velocities;
@@ -32,7 +32,12 @@ d (n+1)^d of them), so a run holds O(d^2 n) words: d n clusters with their d cou
 as the ranks of :func:`~particle_methods.sticky.mspd.ranks_kernel`; for d = 2, 128 bytes per
 particle. For a :class:`~particle_methods.systems.PSystem` the primitive is evaluated inside the
 compiled event loop (:func:`~particle_methods.systems.speed_primitive_formula`, with libm's sinh
-and atan where NumPy has its own: the results agree to rounding). Any other system's
+and atan where NumPy has its own: the results agree to rounding). Its variable is the spread
+w^+ - w^- = (i - j)/n of two counts, as the loop rounds it, fl(i/n) - fl(j/n): a few doubles for
+each of the 2 n + 1 differences i - j. A table of 2 n + 1 rows keeps the values computed for the
+last :data:`PRIMITIVE_WAYS` doubles of each difference (128 more bytes per particle), so the loop
+evaluates each double about once (3.3 n evaluations in a run at n = 3200, for 4 a crossing without
+it), and a kept value is the one it would compute anew: the table changes no bit. Any other system's
 ``speed_primitive`` is a Python method: the loop leaves the compiled kernel at each crossing for
 it and resumes there (:data:`MAX_PYTHON_EVENTS`). (USH) is checked on every velocity the run
 computes: each must be above every velocity of the higher types computed so far and below those of
@@ -377,14 +382,14 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
     configuration at each of ``times`` (non-decreasing) to ``out``; ``stats`` receives the :class:`EventCounts`.
 
     With ``compiled`` (a p-system, constants (a, -A/a)) a crossing's velocities are computed here by
-    :func:`_psystem_speeds`. Otherwise the loop returns ``_NEEDS_SPEEDS`` at each crossing, with its two
+    :func:`_psystem_speeds`, with the primitive's ``table``. Otherwise the loop returns ``_NEEDS_SPEEDS`` at each crossing, with its two
     clusters in ``request`` (type, first and end member, for a then b) and their counts behind in ``rows``;
     the caller writes their velocities into ``lam``, sets the stage to ``_SUPPLIED`` and calls again: the
     loop resumes at the same event (nothing has moved) from ``state``. Returns ``_DONE``, or
     ``_VIOLATES_USH`` (see :func:`_record_speeds`) before using a velocity that breaks (USH).
     The arrays of ``clusters`` (kind, first member, end member, previous, next, heap, heap slot, free ids),
-    ``motion`` (reference place and time, velocity, meeting time) and ``counts`` have one row per cluster,
-    at most d n of them. Compiled without numba's runtime (:data:`~particle_methods.jit.NO_RUNTIME`): it
+    ``motion`` (reference place and time, velocity; then the heap's meeting times, one per slot of the heap and
+    +inf beyond its last entry) and ``counts`` have one row per cluster, at most d n of them. Compiled without numba's runtime (:data:`~particle_methods.jit.NO_RUNTIME`): it
     creates no array, and its helpers are inlined. With the runtime, the atomic reference counts of the
     arrays passed to its helpers took half of its time (perf): it ran 2.4 times slower with the helpers
     inlined, about 5 times without (n = 3200 per type)."""
@@ -496,7 +501,9 @@ class _Run(NamedTuple):
     table: np.ndarray
 
     @classmethod
-    def allocate(cls, lam: np.ndarray) -> _Run:
+    def allocate(cls, lam: np.ndarray, compiled: bool) -> _Run:
+        """The arrays for the velocities ``lam`` (d, n); with ``compiled`` (a p-system) the table of the primitive's
+        values (:func:`_primitive_of_spread`), 2 n + 1 rows of 2 :data:`PRIMITIVE_WAYS` doubles."""
         d, n = lam.shape
         capacity = d * n  # at most one cluster per particle
         ints = [np.empty(capacity, dtype=np.int64) for _ in range(6)]  # kind, low, high, prv, nxt, heap
@@ -510,7 +517,7 @@ class _Run(NamedTuple):
         return cls(lam, (*ints, where, free), motion,
                    np.empty((capacity, d), dtype=np.int64), np.empty(n, dtype=np.int64), np.empty(n),
                    np.empty((2, d), dtype=np.int64), np.empty(d), state, np.empty(6, dtype=np.int64), extremes,
-                   np.empty(3), np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan))
+                   np.empty(3), np.full((2 * n + 1 if compiled else 0, 2 * PRIMITIVE_WAYS), np.nan))
 
     def nbytes(self) -> int:
         """Bytes held by the run's arrays (the velocities included)."""
@@ -603,7 +610,7 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     # (|atan(sinh(y))| <= |y|), below A for any n accepted: 2 A bounds every velocity the run computes.
     check_reach(x0, 2.0 * system.speed_scale if compiled else float(np.abs(lam).max()), last, "times", "velocities",
                 position_name="x0")
-    run = _Run.allocate(lam)
+    run = _Run.allocate(lam, compiled)
     status = _start(x0, ranks, run.lam, run.clusters, run.motion, run.counts, run.starts, run.sums, run.rows, run.state,
                     run.extremes, run.report)
     del ranks
