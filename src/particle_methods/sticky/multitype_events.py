@@ -64,10 +64,11 @@ from .mspd import checked_configuration, ranks_kernel
 from .spd import MAX_POSITIONS, check_reach
 
 #: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts: n = 26,456 per type for d = 2, above the
-#: cost study's reference (25,600 per type). The p-system cases with n = 20,000 per type (bound 4.0e8) take
-#: 60-65 s (rarefaction, 1.8e8 crossings) and 35-40 s (shocks, 1.3e8) up to t = 2
-#: (benchmarks/bench_mspd_exact.py); a run reaching the bound, at the same 0.35 us per crossing, about 4
-#: minutes. Memory is no limit: 128 bytes per particle.
+#: cost study's reference (25,600 per type). On an AMD EPYC (AVX2, 2 cores, shared: load average 4.4) the
+#: p-system cases with n = 6400 per type took 8.8 s (rarefaction, 1.8e7 crossings, 0.48 us each) and 4.8 s
+#: (shocks, 1.3e7 crossings, 0.37 us) up to t = 2 (benchmarks/bench_mspd_exact.py); by the n^2 count of
+#: crossings about 140 s and 80 s at n = 25,600, and a run reaching the bound about 5 minutes. Memory is no
+#: limit: 256 bytes per particle.
 MAX_EVENTS = 7 * 10**8
 
 #: Largest crossing bound d(d-1) n^2 / 2 for a system whose ``speed_primitive`` is Python (any but a
