@@ -16,9 +16,10 @@ relative to the largest |position|.
 
 Issue 47 (default ``--old-commit`` b351c67, before it): the heap's times beside its ids and a table of the
 primitive's values per difference of counts (the same events and positions, bit for bit). On an AMD EPYC
-(AVX2, 2 cores, shared with other jobs: load average 4.3 to 4.6), old and new alternating in one process (this
-script runs a size's repeats of one, then of the other), best of 3 at n = 6400 per type: rarefaction old 13.06 s, new 8.76 s (1.49 times faster; 1.8e7 crossings), shocks old
-8.08 s, new 4.83 s (1.67 times; 1.3e7 crossings).
+(AVX2, 2 cores, shared with other jobs), old and new alternating in one process (this script runs a size's
+repeats of one, then of the other), best of 3 at n = 6400 per type, load average 2.0: rarefaction old
+7.35 s, new 4.80 s (1.53 times faster; 1.8e7 crossings), shocks old 4.77 s, new 2.80 s (1.70 times; 1.3e7
+crossings); at load 4.3 to 4.6, 1.49 and 1.67 times.
 
 Issue 27 (``--old-commit 2c8f79b``: the velocity table of d (n+1)^d values, which refuses n > 4999, against
 the primitive at the ranks each event needs). Measured before that change (2026-12-02, same machine, one run

@@ -14,8 +14,14 @@ from particle_methods.norms import w1_between_samples
 from particle_methods.sticky import mspd_exact
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, rank_velocities
-from particle_methods.sticky.multitype_events import (MAX_EVENTS, MAX_PYTHON_EVENTS, PRIMITIVE_WAYS, _primitive_formula,
-                                                      _primitive_of_spread, _Run)
+from particle_methods.sticky.multitype_events import (
+    MAX_EVENTS,
+    MAX_PYTHON_EVENTS,
+    PRIMITIVE_WAYS,
+    _primitive_formula,
+    _primitive_of_spread,
+    _Run,
+)
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
 from particle_methods.systems import MINUS, PLUS, PSystem
 

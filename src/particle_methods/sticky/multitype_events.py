@@ -36,8 +36,9 @@ and atan where NumPy has its own: the results agree to rounding). Its variable i
 w^+ - w^- = (i - j)/n of two counts, as the loop rounds it, fl(i/n) - fl(j/n): a few doubles for
 each of the 2 n + 1 differences i - j. A table of 2 n + 1 rows keeps the values computed for the
 last :data:`PRIMITIVE_WAYS` doubles of each difference (128 more bytes per particle), so the loop
-evaluates each double about once (3.3 n evaluations in a run at n = 3200, for 4 a crossing without
-it), and a kept value is the one it would compute anew: the table changes no bit. Any other system's
+evaluates each double about once (at n = 3200, 1.1e4 and 2.2e4 evaluations in the rarefaction and shock
+cases for 1.8e7 and 1.9e7 without it), and a kept value is the one it would compute anew: the table
+changes no bit. Any other system's
 ``speed_primitive`` is a Python method: the loop leaves the compiled kernel at each crossing for
 it and resumes there (:data:`MAX_PYTHON_EVENTS`). (USH) is checked on every velocity the run
 computes: each must be above every velocity of the higher types computed so far and below those of
@@ -64,11 +65,13 @@ from .mspd import checked_configuration, ranks_kernel
 from .spd import MAX_POSITIONS, check_reach
 
 #: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts: n = 26,456 per type for d = 2, above the
-#: cost study's reference (25,600 per type). On an AMD EPYC (AVX2, 2 cores, shared: load average 4.4) the
-#: p-system cases with n = 6400 per type took 8.8 s (rarefaction, 1.8e7 crossings, 0.48 us each) and 4.8 s
-#: (shocks, 1.3e7 crossings, 0.37 us) up to t = 2 (benchmarks/bench_mspd_exact.py); by the n^2 count of
-#: crossings about 140 s and 80 s at n = 25,600, and a run reaching the bound about 5 minutes. Memory is no
-#: limit: 256 bytes per particle.
+#: cost study's reference (25,600 per type). On an AMD EPYC (AVX2, 2 cores, shared: load average 2.0) the
+#: p-system cases with n = 6400 per type took 4.8 s (rarefaction, 1.8e7 crossings, 0.26 us each) and 2.8 s
+#: (shocks, 1.3e7 crossings, 0.22 us) up to t = 2 (benchmarks/bench_mspd_exact.py). A crossing costs more
+#: at larger n, as the heap and the clusters leave the caches (before the heap and table of issue 47: 0.40 us
+#: at n = 6400, 0.65 us in the pipeline's jobs at n = 25,600 and 12,800), so the n^2 count of crossings
+#: gives a lower bound: over 75 s for the rarefaction case at n = 25,600, over 3 minutes for a run reaching
+#: the bound. Memory is no limit: 256 bytes per particle.
 MAX_EVENTS = 7 * 10**8
 
 #: Largest crossing bound d(d-1) n^2 / 2 for a system whose ``speed_primitive`` is Python (any but a
@@ -383,16 +386,17 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
     configuration at each of ``times`` (non-decreasing) to ``out``; ``stats`` receives the :class:`EventCounts`.
 
     With ``compiled`` (a p-system, constants (a, -A/a)) a crossing's velocities are computed here by
-    :func:`_psystem_speeds`, with the primitive's ``table``. Otherwise the loop returns ``_NEEDS_SPEEDS`` at each crossing, with its two
-    clusters in ``request`` (type, first and end member, for a then b) and their counts behind in ``rows``;
-    the caller writes their velocities into ``lam``, sets the stage to ``_SUPPLIED`` and calls again: the
-    loop resumes at the same event (nothing has moved) from ``state``. Returns ``_DONE``, or
-    ``_VIOLATES_USH`` (see :func:`_record_speeds`) before using a velocity that breaks (USH).
-    The arrays of ``clusters`` (kind, first member, end member, previous, next, heap, heap slot, free ids),
-    ``motion`` (reference place and time, velocity; then the heap's meeting times, one per slot of the heap and
-    +inf beyond its last entry) and ``counts`` have one row per cluster, at most d n of them. Compiled without numba's runtime (:data:`~particle_methods.jit.NO_RUNTIME`): it
-    creates no array, and its helpers are inlined. With the runtime, the atomic reference counts of the
-    arrays passed to its helpers took half of its time (perf): it ran 2.4 times slower with the helpers
+    :func:`_psystem_speeds`, with the primitive's ``table``. Otherwise the loop returns ``_NEEDS_SPEEDS`` at
+    each crossing, with its two clusters in ``request`` (type, first and end member, for a then b) and their
+    counts behind in ``rows``; the caller writes their velocities into ``lam``, sets the stage to
+    ``_SUPPLIED`` and calls again: the loop resumes at the same event (nothing has moved) from ``state``.
+    Returns ``_DONE``, or ``_VIOLATES_USH`` (see :func:`_record_speeds`) before using a velocity that breaks
+    (USH). The arrays of ``clusters`` (kind, first member, end member, previous, next, heap, heap slot, free
+    ids), ``motion`` (reference place and time, velocity; then the heap's meeting times, one per slot of the
+    heap and +inf beyond its last entry) and ``counts`` have one row per cluster, at most d n of them.
+    Compiled without numba's runtime (:data:`~particle_methods.jit.NO_RUNTIME`): it creates no array, and its
+    helpers are inlined. With the runtime, the atomic reference counts of the arrays passed to its helpers
+    took half of its time (perf): it ran 2.4 times slower with the helpers
     inlined, about 5 times without (n = 3200 per type)."""
     d, n = x0.shape
     kind, low, high, prv, nxt, heap, where, free = clusters
