@@ -1,21 +1,30 @@
-"""Time the exact MSPD (sticky.mspd_exact) on the p-system cases: the velocity table of d (n+1)^d values
-against the velocities computed from the primitive at the ranks each event needs (issue 27, item 3).
+"""Time the exact MSPD (sticky.mspd_exact) on the p-system cases: the current code against an older commit
+of sticky/multitype_events.py, side by side in one run.
 
-    python benchmarks/bench_mspd_exact.py [--sizes 800 3200] [--largest 20000] [--old-commit 2c8f79b]
+    python benchmarks/bench_mspd_exact.py [--sizes 800 3200] [--largest 20000] [--old-commit b351c67]
 
 Both p-system cases of the pipeline (config sticky.psystem: rarefaction x0 = 0.1, shocks x0 = -4; nu = 0.5,
 kappa = 5) at t = 2 (sticky.beyond.t), side by side in one run:
-  - old: ``mspd_exact`` as of ``--old-commit`` (the table, its last commit), read with ``git show`` and
-         imported beside the package (compiled once in a temporary directory, outside the timings);
+  - old: ``mspd_exact`` as of ``--old-commit``, read with ``git show`` and imported beside the package
+         (compiled once in a temporary directory, outside the timings);
   - new: ``particle_methods.sticky.mspd_exact``;
-at each of ``--sizes`` particles per type, then the new one alone at ``--largest`` (the old one refuses
-n > 4999). Each row: best wall time of ``--repeats`` runs (one run from 10,000 particles on), the ratio
-old/new, the peak memory of one run (resident memory sampled every millisecond from a thread, minus the
-resident memory before the call; and the peak of NumPy's allocations by tracemalloc), the events, and the
-largest position difference old - new relative to the largest |position|.
+at each of ``--sizes`` particles per type, then the new one alone at ``--largest``. Each row: best wall time of
+``--repeats`` runs (one run from 10,000 particles on), the ratio old/new, the peak memory of one run
+(resident memory sampled every millisecond from a thread, minus the resident memory before the call; and the
+peak of NumPy's allocations by tracemalloc), the events, and the largest position difference old - new
+relative to the largest |position|.
 
-Measured before the change (2026-12-02, same machine, one run each): old 0.336 s and 7.60 s (rarefaction,
-n = 800 and 3200), 0.222 s and 5.12 s (shocks); the table alone took 2.8 s at n = 3200.
+Issue 47 (default ``--old-commit`` b351c67, before it): the heap's times beside its ids and a table of the
+primitive's values per difference of counts (the same events and positions, bit for bit). On an AMD EPYC
+(AVX2, 2 cores, shared with other jobs), old and new alternating in one process (this script runs a size's
+repeats of one, then of the other), best of 3 at n = 6400 per type, load average 2.0: rarefaction old
+7.35 s, new 4.80 s (1.53 times faster; 1.8e7 crossings), shocks old 4.77 s, new 2.80 s (1.70 times; 1.3e7
+crossings); at load 4.3 to 4.6, 1.49 and 1.67 times.
+
+Issue 27 (``--old-commit 2c8f79b``: the velocity table of d (n+1)^d values, which refuses n > 4999, against
+the primitive at the ranks each event needs). Measured before that change (2026-12-02, same machine, one run
+each): old 0.336 s and 7.60 s (rarefaction, n = 800 and 3200), 0.222 s and 5.12 s (shocks); the table alone
+took 2.8 s at n = 3200.
 """
 
 import argparse
@@ -54,10 +63,10 @@ def load_old(commit: str):
         return None
     folder = Path(tempfile.gettempdir()) / f"bench_mspd_exact_{commit}"
     folder.mkdir(exist_ok=True)
-    path = folder / "multitype_events_table.py"
+    path = folder / "multitype_events_old.py"
     if not path.exists() or path.read_text() != source:
         path.write_text(source)
-    name = "particle_methods.sticky.multitype_events_table"
+    name = "particle_methods.sticky.multitype_events_old"
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
@@ -119,7 +128,7 @@ def main():
     parser.add_argument("--sizes", type=int, nargs="+", default=[800, 3200])
     parser.add_argument("--largest", type=int, default=20000)
     parser.add_argument("--repeats", type=int, default=3)
-    parser.add_argument("--old-commit", default="2c8f79b")
+    parser.add_argument("--old-commit", default="b351c67")
     args = parser.parse_args()
     print_cpu()
     fixed_mmap_threshold()

@@ -14,7 +14,14 @@ from particle_methods.norms import w1_between_samples
 from particle_methods.sticky import mspd_exact
 from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.mspd import ScalarLaw, mspd_positions, rank_velocities
-from particle_methods.sticky.multitype_events import MAX_EVENTS, MAX_PYTHON_EVENTS, _Run
+from particle_methods.sticky.multitype_events import (
+    MAX_EVENTS,
+    MAX_PYTHON_EVENTS,
+    PRIMITIVE_WAYS,
+    _primitive_formula,
+    _primitive_of_spread,
+    _Run,
+)
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
 from particle_methods.systems import MINUS, PLUS, PSystem
 
@@ -230,6 +237,28 @@ def test_compiled_primitive_gives_the_python_primitives_dynamics(case):
     assert np.abs(compiled - python).max() <= 1e-12 * np.abs(python).max()
 
 
+def test_primitive_table_gives_the_formulas_values_bit_for_bit():
+    # The compiled loop keeps the primitive's values per difference of counts, for the last PRIMITIVE_WAYS
+    # doubles the spread rounds to: every value it returns is the formula's at that very double, also on a
+    # difference with more doubles than a row keeps (the oldest evicted), in any order, asked again.
+    n = 6400
+    levels = np.arange(n + 1) / n
+    counts = np.arange(n + 1)
+    # Of the differences 1 to 399, the one whose spreads fl(c/n) - fl(k/n) round to the most distinct doubles.
+    difference = max(range(1, 400), key=lambda i: np.unique(levels[counts[i:]] - levels[counts[i:] - i]).size)
+    pairs = [(c, c - difference) for c in range(difference, n + 1)]
+    assert len({levels[c] - levels[k] for c, k in pairs}) > PRIMITIVE_WAYS
+    rng = np.random.default_rng(3)
+    random = [tuple(pair) for pair in rng.integers(0, n + 1, size=(2000, 2))]
+    asked = [pairs[i] for i in rng.integers(0, len(pairs), size=2000)] + random + random[::-1]
+    table = np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan)
+    a, coefficient = SYSTEM.a, SYSTEM.primitive_coefficient
+    for c, k in asked:
+        spread = levels[c] - levels[k]
+        kept = _primitive_of_spread(spread, c - k + n, table, a, coefficient)
+        assert np.float64(kept).tobytes() == np.float64(_primitive_formula(spread, a, coefficient)).tobytes()
+
+
 def test_refuses_velocities_that_break_ush_during_the_run():
     # The velocities are computed event by event: (USH) is checked on each, not only on those at the start.
     n = 8
@@ -265,12 +294,16 @@ def test_20000_particles_per_type_run_in_o_n_memory():
 
 
 def test_run_arrays_grow_linearly_in_n():
-    # Every array of a run has d n rows (clusters) of at most d entries, or n entries: O(d^2 n) words.
-    sizes = {(d, n): _Run.allocate(np.zeros((d, n))).nbytes() for d in (2, 3) for n in (1000, 2000, 20_000)}
-    for d in (2, 3):
-        per_particle = (sizes[d, 20_000] - sizes[d, 2000]) / (18_000 * d)
-        assert sizes[d, 20_000] - sizes[d, 2000] == 18 * (sizes[d, 2000] - sizes[d, 1000])  # affine in n
-        assert per_particle <= 8 * (16 + d)  # 13 arrays of d n entries, counts (d n, d), 2 of n
+    # Every array of a run has d n rows (clusters) of at most d entries, or n entries: O(d^2 n) words; a
+    # p-system's run (compiled, d = 2) adds the primitive's table, 2 n + 1 rows of 2 PRIMITIVE_WAYS words.
+    kinds = [(2, False), (3, False), (2, True)]
+    sizes = {(d, compiled, n): _Run.allocate(np.zeros((d, n)), compiled).nbytes() for d, compiled in kinds
+             for n in (1000, 2000, 20_000)}
+    for d, compiled in kinds:
+        growth = sizes[d, compiled, 20_000] - sizes[d, compiled, 2000]
+        assert growth == 18 * (sizes[d, compiled, 2000] - sizes[d, compiled, 1000])  # affine in n
+        table = 8 * 2 * PRIMITIVE_WAYS * 2 / d if compiled else 0  # per particle: 2 n rows over d n particles
+        assert growth / (18_000 * d) <= 8 * (16 + d) + table  # 13 arrays of d n entries, counts (d n, d), 2 of n
 
 
 def test_20000_particles_per_type_cross_one_pair_at_a_time():

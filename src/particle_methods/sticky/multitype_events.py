@@ -8,8 +8,8 @@ of such events is of order n^2 and leaves the exact algorithm aside; it is built
 Data structure: one list of clusters of all types ordered along the line, a tie at one place
 being ordered by decreasing type (the post-collisional order of (USH), as in
 :func:`~particle_methods.sticky.mspd.ranks_kernel`). Trajectories are straight between events, so the
-next meeting is between neighbours of this list: each cluster holds the time at which it meets
-the next one, in an indexed binary heap. At an event:
+next meeting is between neighbours of this list: the time at which each cluster meets the next one
+is filed in an indexed binary heap, which holds the times beside the cluster ids. At an event:
 
 - two clusters of one type merge; mass and momentum are conserved, so the merged cluster moves
   at the mean of its members' velocities;
@@ -32,7 +32,13 @@ d (n+1)^d of them), so a run holds O(d^2 n) words: d n clusters with their d cou
 as the ranks of :func:`~particle_methods.sticky.mspd.ranks_kernel`; for d = 2, 128 bytes per
 particle. For a :class:`~particle_methods.systems.PSystem` the primitive is evaluated inside the
 compiled event loop (:func:`~particle_methods.systems.speed_primitive_formula`, with libm's sinh
-and atan where NumPy has its own: the results agree to rounding). Any other system's
+and atan where NumPy has its own: the results agree to rounding). Its variable is the spread
+w^+ - w^- = (i - j)/n of two counts, as the loop rounds it, fl(i/n) - fl(j/n): a few doubles for
+each of the 2 n + 1 differences i - j. A table of 2 n + 1 rows keeps the values computed for the
+last :data:`PRIMITIVE_WAYS` doubles of each difference (128 more bytes per particle), so the loop
+evaluates each double about once (at n = 3200, 1.1e4 and 2.2e4 evaluations in the rarefaction and shock
+cases for 1.8e7 and 1.9e7 without it), and a kept value is the one it would compute anew: the table
+changes no bit. Any other system's
 ``speed_primitive`` is a Python method: the loop leaves the compiled kernel at each crossing for
 it and resumes there (:data:`MAX_PYTHON_EVENTS`). (USH) is checked on every velocity the run
 computes: each must be above every velocity of the higher types computed so far and below those of
@@ -59,10 +65,13 @@ from .mspd import checked_configuration, ranks_kernel
 from .spd import MAX_POSITIONS, check_reach
 
 #: Largest crossing bound d(d-1) n^2 / 2 + d n one call accepts: n = 26,456 per type for d = 2, above the
-#: cost study's reference (25,600 per type). The p-system cases with n = 20,000 per type (bound 4.0e8) take
-#: 60-65 s (rarefaction, 1.8e8 crossings) and 35-40 s (shocks, 1.3e8) up to t = 2
-#: (benchmarks/bench_mspd_exact.py); a run reaching the bound, at the same 0.35 us per crossing, about 4
-#: minutes. Memory is no limit: 128 bytes per particle.
+#: cost study's reference (25,600 per type). On an AMD EPYC (AVX2, 2 cores, shared: load average 2.0) the
+#: p-system cases with n = 6400 per type took 4.8 s (rarefaction, 1.8e7 crossings, 0.26 us each) and 2.8 s
+#: (shocks, 1.3e7 crossings, 0.22 us) up to t = 2 (benchmarks/bench_mspd_exact.py). A crossing costs more
+#: at larger n, as the heap and the clusters leave the caches (before the heap and table of issue 47: 0.40 us
+#: at n = 6400, 0.65 us in the pipeline's jobs at n = 25,600 and 12,800), so the n^2 count of crossings
+#: gives a lower bound: over 75 s for the rarefaction case at n = 25,600, over 3 minutes for a run reaching
+#: the bound. Memory is no limit: 256 bytes per particle.
 MAX_EVENTS = 7 * 10**8
 
 #: Largest crossing bound d(d-1) n^2 / 2 for a system whose ``speed_primitive`` is Python (any but a
@@ -98,20 +107,47 @@ class EventCounts(_Counts):
 _primitive_formula = njit(speed_primitive_formula)
 
 
+#: Values of the primitive the compiled loop keeps per difference of counts (:func:`_primitive_of_spread`).
+PRIMITIVE_WAYS = 8
+
+
 @njit(inline="always")
-def _psystem_speeds(a, coefficient, gamma, lo, hi, row, lam):
+def _primitive_of_spread(spread, difference, table, a, coefficient):
+    """coefficient * atan(sinh(a spread)) for spread = (i - j)/n as the loop rounds it, fl(i/n) - fl(j/n): the
+    value kept in row ``difference`` = i - j + n of ``table`` (pairs spread, value, most recent first) for the
+    same double, else computed and kept. Rounding makes a few doubles of one difference (up to 16 at n = 6400),
+    each a row keeps (:data:`PRIMITIVE_WAYS`) is evaluated once: the same value as evaluated anew.
+    A spread is never -0.0 (x - x is +0.0), so == compares the bits."""
+    for way in range(PRIMITIVE_WAYS):
+        if table[difference, 2 * way] == spread:
+            return table[difference, 2 * way + 1]
+    value = _primitive_formula(spread, a, coefficient)
+    for slot in range(2 * PRIMITIVE_WAYS - 1, 1, -1):
+        table[difference, slot] = table[difference, slot - 2]
+    table[difference, 0], table[difference, 1] = spread, value
+    return value
+
+
+@njit(inline="always")
+def _psystem_speeds(a, coefficient, gamma, lo, hi, row, lam, table):
     """Velocities (1.8) lam[gamma, lo:hi] of the p-system's particles gamma:lo .. gamma:hi-1 with ``row[g]``
     particles of type g behind them, from the m + 1 = hi - lo + 1 values of the primitive of (5.7) in its own
     variable, P = coefficient * atan(sinh(a (w^+ - w^-))), at the own levels lo/n .. hi/n: particle k moves
-    at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+."""
+    at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+: the
+    spread w^+ - w^- is (count - k)/n, resp. (k - count)/n, each value kept in ``table``
+    (:func:`_primitive_of_spread`)."""
     n = lam.shape[1]
-    other = row[1 - gamma] / n
-    level = lo / n
-    below = _primitive_formula(other - level if gamma == 0 else level - other, a, coefficient)
-    for k in range(lo, hi):
-        level = (k + 1) / n
-        above = _primitive_formula(other - level if gamma == 0 else level - other, a, coefficient)
-        lam[gamma, k] = n * (above - below)
+    count = row[1 - gamma]
+    other = count / n
+    below = 0.0
+    for k in range(lo, hi + 1):
+        level = k / n
+        if gamma == 0:
+            above = _primitive_of_spread(other - level, count - k + n, table, a, coefficient)
+        else:
+            above = _primitive_of_spread(level - other, k - count + n, table, a, coefficient)
+        if k > lo:
+            lam[gamma, k - 1] = n * (above - below)
         below = above
 
 
@@ -148,49 +184,56 @@ def _position(cluster, t, xref, tref, vel):
 
 
 @njit(inline="always")
-def _heap_swap(heap, where, i, j):
-    a, b = heap[i], heap[j]
-    heap[i], heap[j] = b, a
-    where[b], where[a] = i, j
+def _heap_place(heap, hkey, where, size, i, cluster, value):
+    """File ``cluster`` with meeting time ``value`` in the heap from the free slot i (its old slot, or the end
+    of the heap): the entries it passes move into the hole, up while their parent's time is larger, else
+    down while the smaller child's time is smaller (the left child on a tie). The times sit in the heap
+    beside the ids (``hkey``, +inf beyond the last entry), so a comparison reads no cluster, and the right
+    child is read without a test of the size."""
+    moved = False
+    while i > 0:
+        parent = (i - 1) >> 1
+        if not hkey[parent] > value:
+            break
+        entry = heap[parent]
+        heap[i], hkey[i], where[entry] = entry, hkey[parent], i
+        i, moved = parent, True
+    while not moved:
+        child = 2 * i + 1
+        if child >= size:
+            break
+        child += hkey[child + 1] < hkey[child]
+        if not hkey[child] < value:
+            break
+        entry = heap[child]
+        heap[i], hkey[i], where[entry] = entry, hkey[child], i
+        i = child
+    heap[i], hkey[i], where[cluster] = cluster, value, i
 
 
 @njit(inline="always")
-def _heap_update(heap, where, size, key, cluster):
-    """Restore the heap after ``key[cluster]`` changed; inserts ``cluster`` if absent. Returns the size."""
+def _heap_update(heap, hkey, where, size, cluster, value):
+    """File ``cluster`` with the meeting time ``value``, in the heap or not yet. Returns the size."""
     i = where[cluster]
     if i < 0:
         i = size
-        heap[i] = cluster
-        where[cluster] = i
         size += 1
-    while i > 0 and key[heap[(i - 1) // 2]] > key[heap[i]]:
-        _heap_swap(heap, where, i, (i - 1) // 2)
-        i = (i - 1) // 2
-    while True:
-        smallest, left = i, 2 * i + 1
-        if left < size and key[heap[left]] < key[heap[smallest]]:
-            smallest = left
-        if left + 1 < size and key[heap[left + 1]] < key[heap[smallest]]:
-            smallest = left + 1
-        if smallest == i:
-            return size
-        _heap_swap(heap, where, i, smallest)
-        i = smallest
+    _heap_place(heap, hkey, where, size, i, cluster, value)
+    return size
 
 
 @njit(inline="always")
-def _heap_remove(heap, where, size, key, cluster):
-    """Remove ``cluster`` from the heap if present. Returns the size."""
+def _heap_remove(heap, hkey, where, size, cluster):
+    """Remove ``cluster`` from the heap if present: the last entry fills its slot. Returns the size."""
     i = where[cluster]
     if i < 0:
         return size
     size -= 1
-    last = heap[size]
     where[cluster] = -1
+    last, value = heap[size], hkey[size]
+    hkey[size] = np.inf
     if i < size:
-        heap[i] = last
-        where[last] = i
-        size = _heap_update(heap, where, size, key, last)
+        _heap_place(heap, hkey, where, size, i, last, value)
     return size
 
 
@@ -205,12 +248,12 @@ def _meeting_time(a, now, kind, nxt, xref, tref, vel):
 
 
 @njit(inline="always")
-def _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel):
-    """Set the meeting time of cluster a with the next one and file it in the heap. Returns the size."""
-    key[a] = _meeting_time(a, now, kind, nxt, xref, tref, vel)
-    if key[a] < np.inf:
-        return _heap_update(heap, where, size, key, a)
-    return _heap_remove(heap, where, size, key, a)
+def _schedule(a, now, heap, hkey, where, size, kind, nxt, xref, tref, vel):
+    """File cluster a in the heap with the time it meets the next one (out of it if never). Returns the size."""
+    time = _meeting_time(a, now, kind, nxt, xref, tref, vel)
+    if time < np.inf:
+        return _heap_update(heap, hkey, where, size, a, time)
+    return _heap_remove(heap, hkey, where, size, a)
 
 
 @njit(inline="always")
@@ -288,7 +331,7 @@ def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, 
     :func:`_advance`). Returns ``_DONE``, or ``_VIOLATES_USH`` (:func:`_record_speeds`) on the velocities."""
     d, n = x0.shape
     kind, low, high, prv, nxt, heap, where, free = clusters
-    xref, tref, vel, key = motion
+    xref, tref, vel, hkey = motion
     row = rows[0]
     for gamma in range(d):
         if not _record_speeds(lam, gamma, 0, n, extremes, report):
@@ -330,7 +373,7 @@ def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, 
     size = 0
     cluster = head
     while cluster >= 0:
-        size = _schedule(cluster, 0.0, heap, where, size, key, kind, nxt, xref, tref, vel)
+        size = _schedule(cluster, 0.0, heap, hkey, where, size, kind, nxt, xref, tref, vel)
         cluster = nxt[cluster]
     state[_SIZE], state[_HEAD], state[_INDEX] = size, head, 0
     return _DONE
@@ -338,32 +381,33 @@ def _start(x0, ranks, lam, clusters, motion, counts, starts, sums, rows, state, 
 
 @njit(**NO_RUNTIME)
 def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums, rows, behind, state, request,
-             extremes, report, constants, compiled):
+             extremes, report, constants, compiled, table):
     """Event loop of the MSPD from x0 (shape (d, n)) with the initial velocities (1.8) ``lam``, writing the
     configuration at each of ``times`` (non-decreasing) to ``out``; ``stats`` receives the :class:`EventCounts`.
 
     With ``compiled`` (a p-system, constants (a, -A/a)) a crossing's velocities are computed here by
-    :func:`_psystem_speeds`. Otherwise the loop returns ``_NEEDS_SPEEDS`` at each crossing, with its two
-    clusters in ``request`` (type, first and end member, for a then b) and their counts behind in ``rows``;
-    the caller writes their velocities into ``lam``, sets the stage to ``_SUPPLIED`` and calls again: the
-    loop resumes at the same event (nothing has moved) from ``state``. Returns ``_DONE``, or
-    ``_VIOLATES_USH`` (see :func:`_record_speeds`) before using a velocity that breaks (USH).
-    The arrays of ``clusters`` (kind, first member, end member, previous, next, heap, heap slot, free ids),
-    ``motion`` (reference place and time, velocity, meeting time) and ``counts`` have one row per cluster,
-    at most d n of them. Compiled without numba's runtime (:data:`~particle_methods.jit.NO_RUNTIME`): it
-    creates no array, and its helpers are inlined. With the runtime, the atomic reference counts of the
-    arrays passed to its helpers took half of its time (perf): it ran 2.4 times slower with the helpers
+    :func:`_psystem_speeds`, with the primitive's ``table``. Otherwise the loop returns ``_NEEDS_SPEEDS`` at
+    each crossing, with its two clusters in ``request`` (type, first and end member, for a then b) and their
+    counts behind in ``rows``; the caller writes their velocities into ``lam``, sets the stage to
+    ``_SUPPLIED`` and calls again: the loop resumes at the same event (nothing has moved) from ``state``.
+    Returns ``_DONE``, or ``_VIOLATES_USH`` (see :func:`_record_speeds`) before using a velocity that breaks
+    (USH). The arrays of ``clusters`` (kind, first member, end member, previous, next, heap, heap slot, free
+    ids), ``motion`` (reference place and time, velocity; then the heap's meeting times, one per slot of the
+    heap and +inf beyond its last entry) and ``counts`` have one row per cluster, at most d n of them.
+    Compiled without numba's runtime (:data:`~particle_methods.jit.NO_RUNTIME`): it creates no array, and its
+    helpers are inlined. With the runtime, the atomic reference counts of the arrays passed to its helpers
+    took half of its time (perf): it ran 2.4 times slower with the helpers
     inlined, about 5 times without (n = 3200 per type)."""
     d, n = x0.shape
     kind, low, high, prv, nxt, heap, where, free = clusters
-    xref, tref, vel, key = motion
+    xref, tref, vel, hkey = motion
     row, row_b = rows[0], rows[1]
     nfree = state[_FREE:_FREE + 1]
     size, head, index = state[_SIZE], state[_HEAD], state[_INDEX]
     supplied = state[_STAGE] == _SUPPLIED
     state[_STAGE] = _RUNNING
     while index < times.size:
-        event_time = key[heap[0]] if size > 0 else np.inf
+        event_time = hkey[0] if size > 0 else np.inf
         while index < times.size and times[index] <= event_time:
             # Between events every cluster moves straight; a rounding guard keeps each type sorted.
             behind[:] = -np.inf
@@ -389,11 +433,11 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
             nxt[a] = after
             if after >= 0:
                 prv[after] = a
-            size = _heap_remove(heap, where, size, key, b)
+            size = _heap_remove(heap, hkey, where, size, b)
             free[nfree[0]] = b
             nfree[0] += 1
             stats[0] += 1
-            size = _schedule(a, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+            size = _schedule(a, now, heap, hkey, where, size, kind, nxt, xref, tref, vel)
         else:  # a (lower type) passes b: new ranks, new velocities (1.8) for their members only
             alpha, beta = kind[a], kind[b]
             lo_a, hi_a, lo_b, hi_b = low[a], high[a], low[b], high[b]
@@ -405,8 +449,8 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
                 row[beta] += hi_b - lo_b
                 row_b[alpha] -= hi_a - lo_a
                 if compiled:
-                    _psystem_speeds(constants[0], constants[1], alpha, lo_a, hi_a, row, lam)
-                    _psystem_speeds(constants[0], constants[1], beta, lo_b, hi_b, row_b, lam)
+                    _psystem_speeds(constants[0], constants[1], alpha, lo_a, hi_a, row, lam, table)
+                    _psystem_speeds(constants[0], constants[1], beta, lo_b, hi_b, row_b, lam, table)
                 else:
                     request[0], request[1], request[2] = alpha, lo_a, hi_a
                     request[3], request[4], request[5] = beta, lo_b, hi_b
@@ -434,11 +478,11 @@ def _advance(x0, lam, times, out, stats, clusters, motion, counts, starts, sums,
             cluster = first_b
             while cluster != after:
                 stats[2] += 1
-                size = _schedule(cluster, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+                size = _schedule(cluster, now, heap, hkey, where, size, kind, nxt, xref, tref, vel)
                 cluster = nxt[cluster]
             stats[2] -= 2  # the two clusters that passed each other are not new
         if before >= 0:
-            size = _schedule(before, now, heap, where, size, key, kind, nxt, xref, tref, vel)
+            size = _schedule(before, now, heap, hkey, where, size, kind, nxt, xref, tref, vel)
     state[_SIZE], state[_HEAD], state[_INDEX] = size, head, index
     return _DONE
 
@@ -459,9 +503,12 @@ class _Run(NamedTuple):
     request: np.ndarray
     extremes: np.ndarray
     report: np.ndarray
+    table: np.ndarray
 
     @classmethod
-    def allocate(cls, lam: np.ndarray) -> _Run:
+    def allocate(cls, lam: np.ndarray, compiled: bool) -> _Run:
+        """The arrays for the velocities ``lam`` (d, n); with ``compiled`` (a p-system) the table of the primitive's
+        values (:func:`_primitive_of_spread`), 2 n + 1 rows of 2 :data:`PRIMITIVE_WAYS` doubles."""
         d, n = lam.shape
         capacity = d * n  # at most one cluster per particle
         ints = [np.empty(capacity, dtype=np.int64) for _ in range(6)]  # kind, low, high, prv, nxt, heap
@@ -471,15 +518,16 @@ class _Run(NamedTuple):
         state[_STAGE], state[_FREE] = _RUNNING, capacity
         extremes = np.empty((2, d))
         extremes[0], extremes[1] = np.inf, -np.inf
-        return cls(lam, (*ints, where, free), tuple(np.empty(capacity) for _ in range(4)),
+        motion = (*(np.empty(capacity) for _ in range(3)), np.full(capacity + 1, np.inf))  # xref, tref, vel, hkey
+        return cls(lam, (*ints, where, free), motion,
                    np.empty((capacity, d), dtype=np.int64), np.empty(n, dtype=np.int64), np.empty(n),
                    np.empty((2, d), dtype=np.int64), np.empty(d), state, np.empty(6, dtype=np.int64), extremes,
-                   np.empty(3))
+                   np.empty(3), np.full((2 * n + 1 if compiled else 0, 2 * PRIMITIVE_WAYS), np.nan))
 
     def nbytes(self) -> int:
         """Bytes held by the run's arrays (the velocities included)."""
         arrays = [self.lam, *self.clusters, *self.motion, self.counts, self.starts, self.sums, self.rows, self.behind,
-                  self.state, self.request, self.extremes, self.report]
+                  self.state, self.request, self.extremes, self.report, self.table]
         return sum(array.nbytes for array in arrays)
 
 
@@ -567,7 +615,7 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     # (|atan(sinh(y))| <= |y|), below A for any n accepted: 2 A bounds every velocity the run computes.
     check_reach(x0, 2.0 * system.speed_scale if compiled else float(np.abs(lam).max()), last, "times", "velocities",
                 position_name="x0")
-    run = _Run.allocate(lam)
+    run = _Run.allocate(lam, compiled)
     status = _start(x0, ranks, run.lam, run.clusters, run.motion, run.counts, run.starts, run.sums, run.rows, run.state,
                     run.extremes, run.report)
     del ranks
@@ -576,7 +624,8 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     stats = np.zeros(4, dtype=np.int64)
     while status != _VIOLATES_USH:
         status = _advance(x0, run.lam, times, out, stats, run.clusters, run.motion, run.counts, run.starts, run.sums,
-                          run.rows, run.behind, run.state, run.request, run.extremes, run.report, constants, compiled)
+                          run.rows, run.behind, run.state, run.request, run.extremes, run.report, constants, compiled,
+                          run.table)
         if status != _NEEDS_SPEEDS:
             break
         for (gamma, lo, hi), row in zip(run.request.reshape(2, 3), run.rows):
