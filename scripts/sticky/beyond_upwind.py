@@ -3,9 +3,10 @@
 The upwind scheme for (1.7) on ``upwind_reference_cells`` cells at the study's time, and its distance to
 the same scheme on half as many cells, its own error. ``beyond_limits.py`` measures the exact MSPD against
 it (and against the conservative HLL scheme); the cost study (``beyond_data.py``) takes it as one of its two
-candidate references. On a machine without AVX-512 NumPy evaluates the primitive of (5.7) by libm (about
-40 ns a value, three values per face and step), so the two runs take most of a minute per case: one job per
-case, so that the two run side by side with the rest of the pipeline. Untimed.
+candidate references. On a machine without AVX-512 NumPy evaluates the primitive of (5.7) by libm's sinh and
+arctan (20 to 25 ns a value on these data, three values per face and step: about 90 % of a step on an AMD EPYC
+with AVX2), so the two runs take 30 to 45 s of a core per case: one job per case, so that the two run side by
+side with the rest of the pipeline (issue 47). Untimed.
 """
 
 import numpy as np
