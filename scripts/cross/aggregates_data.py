@@ -13,9 +13,9 @@ solution by the continuous hull.
   exact aggregates' levels just before it) over delta;
 - the particle method: its largest distance to the grid SPD of the same particles (NaN for the other methods).
 
-Two jobs per case (issue 47: one job took up to 110 s): part ``ltp`` finds the exact merger and the time grid and
-runs LTP and SP with their rows (their W1 against the exact solution is a third of the work); part ``rest`` reads
-them, runs every other method and writes the case's result, its rows followed by those of LTP and SP.
+Two jobs per case (issue 47: one job took up to 110 s): part ``godunov_ltp`` finds the exact merger and the time grid
+and runs Godunov, LTP and SP with their rows (about 45 % of the work); part ``rest`` reads them, runs every other
+method and writes the case's result, with every method's rows in the order of :data:`METHOD_ORDER`.
 """
 
 from fractions import Fraction
@@ -120,6 +120,13 @@ def merger_or_nan(measure, *args, **kwargs):
 
 #: The per-run rows of a part, in the order of its runs.
 ROW_KEYS = ("methods", "size", "count", "error", "centre", "spread")
+#: The methods (names or their beginnings) in the order of the result's rows, each by increasing size.
+METHOD_ORDER = ("SPD, equal masses", "SPD, grid weights", "blob", "Godunov for F", "particle method", "LTP", "SP")
+
+
+def method_rank(name):
+    """The place of the method ``name`` in :data:`METHOD_ORDER`."""
+    return next(rank for rank, method in enumerate(METHOD_ORDER) if name.startswith(method))
 
 
 def exact_times(p):
@@ -173,12 +180,15 @@ def method_rows(data, runs, times, solutions, pad, sp_own):
     return rows
 
 
-def run_ltp(p, output):
-    """Part ``ltp``: the exact merger and time grid, and the rows of LTP (up to the first blow-up) and SP."""
+def run_godunov_ltp(p, output):
+    """Part ``godunov_ltp``: the exact merger and time grid, and the rows of Godunov, LTP (up to the first blow-up) and
+    SP."""
     data = p["data"]
     merger, window, times = exact_times(p)
     progress(f"exact ({data}): merger at t = {merger!r}")
     solutions, pad = exact_solutions(data, times)
+    godunov = {cells: dict(zip(times, m.godunov_paths(data, cells, times, cfl=p["cfl"])))
+               for cells in p["godunov_cells"]}
     first_blowup = float(min(1.0 / b.height for b in bump_data(data).bumps))
     ltp = p["ltp"]
     early = times[times < first_blowup]
@@ -194,7 +204,8 @@ def run_ltp(p, output):
         states = dict(zip(steps, m.ltp_paths(data, 1.0 / k, dt, steps, method="sp", eps=ltp["sp_eps_over_h"] / k)))
         ltp_runs["SP", k] = {t: states[s] for t, s in zip(times, own)}
         sp_own[k] = dict(zip(times, own))
-    runs = [(name, k, lambda k, t, name=name: ltp_runs[name, k].get(t)) for name, k in ltp_runs]
+    runs = [("Godunov for F", cells, lambda n, t: godunov[n][t]) for cells in p["godunov_cells"]]
+    runs += [(name, k, lambda k, t, name=name: ltp_runs[name, k].get(t)) for name, k in ltp_runs]
     rows = method_rows(data, runs, times, solutions, pad, sp_own)
     for name, size, row in zip(rows["methods"], rows["size"], rows["error"]):
         progress(f"{name:18} size {size:6d}: largest W1 over t > 0 {np.nanmax(row[1:]):.4g} (t = 0: {row[0]:.4g})")
@@ -203,8 +214,8 @@ def run_ltp(p, output):
 
 
 def run(p, ltp_path, output):
-    """Part ``rest``: every other method, and the case's result with the rows of part ``ltp`` (read from
-    ``ltp_path``) after its own."""
+    """Part ``rest``: every other method, and the case's result with the rows of part ``godunov_ltp`` (read from
+    ``ltp_path``), every row in the order of :data:`METHOD_ORDER`."""
     data = p["data"]
     bumps = bump_data(data)
     ltp_rows = load_results(ltp_path)
@@ -248,9 +259,6 @@ def run(p, ltp_path, output):
     runs += [(f"blob, m = {blob['order']}", k,
               lambda k, t: (blob_paths[k][0][int(np.searchsorted(blob_times, t))], blob_paths[k][1]))
              for k in blob["inverse_h"]]
-    godunov = {cells: dict(zip(times, m.godunov_paths(data, cells, times, cfl=p["cfl"])))
-               for cells in p["godunov_cells"]}
-    runs += [("Godunov for F", cells, lambda n, t: godunov[n][t]) for cells in p["godunov_cells"]]
     first_blowup = float(blowups.min())
     early = times[times < first_blowup]
     # The particle method, defined up to its first collision (the first blow-up): the times before it.
@@ -271,12 +279,16 @@ def run(p, ltp_path, output):
         gaps.append(gap)
         progress(f"{name:18} size {size:6d}: largest W1 over t > 0 {np.nanmax(row[1:]):.4g} (t = 0: {row[0]:.4g}); "
                  f"merger {merged!r}; blob gap at the merger / delta {gap!r}")
-    # LTP and SP (part ltp) after the other methods; they have no merger, gap or distance to the grid SPD.
+    # Godunov, LTP and SP (part godunov_ltp) have no merger, gap or distance to the grid SPD; every row in the order
+    # of METHOD_ORDER.
     later = len(ltp_rows["methods"])
     names, sizes, counts, errors, centres, spreads = (np.concatenate([np.array(rows[key]), ltp_rows[key]])
                                                       for key in ROW_KEYS)
-    mergers, gaps = np.array(mergers + [np.nan] * later), np.array(gaps + [np.nan] * later)
-    differences = np.array(rows["difference"] + [np.nan] * later)
+    order = np.argsort([method_rank(name) for name in names], kind="stable")
+    names, sizes, counts, errors, centres, spreads = (a[order] for a in (names, sizes, counts, errors, centres,
+                                                                        spreads))
+    mergers, gaps = np.array(mergers + [np.nan] * later)[order], np.array(gaps + [np.nan] * later)[order]
+    differences = np.array(rows["difference"] + [np.nan] * later)[order]
     # The equal-mass SPD's merger: the fraction of a particle's mass on either side of the gap between the bumps
     # follows n m_1 / M, so the error changes sign and size from one n to the next: every n of a block above each size.
     period = merger_period(bumps, p["spd_merger_block_max"])
@@ -323,7 +335,7 @@ def spd_start(data, n):
 
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
-    if snakemake.params.part == "ltp":  # noqa: F821
-        run_ltp(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+    if snakemake.params.part == "godunov_ltp":  # noqa: F821
+        run_godunov_ltp(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
     else:
         run(snakemake.params.cfg, snakemake.input.ltp, snakemake.output[0])  # noqa: F821
