@@ -12,6 +12,10 @@ solution by the continuous hull.
   each configured n, and the grid SPD's at each size; the blob's gap at the exact merger (the centres of the two
   exact aggregates' levels just before it) over delta;
 - the particle method: its largest distance to the grid SPD of the same particles (NaN for the other methods).
+
+Two jobs per case (issue 47: one job took up to 110 s): part ``godunov_ltp`` finds the exact merger and the time grid
+and runs Godunov, LTP and SP with their rows (about 45 % of the work); part ``rest`` reads them, runs every other
+method and writes the case's result, with every method's rows in the order of :data:`METHOD_ORDER`.
 """
 
 from fractions import Fraction
@@ -24,7 +28,7 @@ from particle_methods.cross import methods as m
 from particle_methods.cross.distances import w1_atoms, w1_cells, w1_particles
 from particle_methods.cross.hull import bump_data
 from particle_methods.sticky.spd import spd_positions
-from particle_replication.workflow import logged, progress, save_results
+from particle_replication.workflow import load_results, logged, progress, save_results
 
 #: Heavy clusters of the smallest SPD kept per time for the figure (two aggregates at most, and room to spare).
 CLUSTER_SLOTS = 4
@@ -114,17 +118,113 @@ def merger_or_nan(measure, *args, **kwargs):
         return np.nan
 
 
-def run(p, output):
+#: The per-run rows of a part, in the order of its runs.
+ROW_KEYS = ("methods", "size", "count", "error", "centre", "spread")
+#: The methods (names or their beginnings) in the order of the result's rows, each by increasing size.
+METHOD_ORDER = ("SPD, equal masses", "SPD, grid weights", "blob", "Godunov for F", "particle method", "LTP", "SP")
+
+
+def method_rank(name):
+    """The place of the method ``name`` in :data:`METHOD_ORDER`."""
+    return next(rank for rank, method in enumerate(METHOD_ORDER) if name.startswith(method))
+
+
+def exact_times(p):
+    """(merger, window, times): the exact merger time (bisection on the number of aggregates), the window of times
+    around it, and the time grid with the window added."""
     data = p["data"]
-    bumps = bump_data(data)
-    times = grid_times(p)
     merger = merger_time(data, *p["merger_bracket"])
-    progress(f"exact ({data}): merger at t = {merger!r}; blow-ups at {[1.0 / b.height for b in bumps.bumps]}")
     window = merger + np.asarray(p["merger_window"], float)
-    times = np.union1d(times, window)
+    return merger, window, np.union1d(grid_times(p), window)
+
+
+def exact_solutions(data, times):
+    """The exact solutions at ``times`` and the padding to the largest number of aggregates among them."""
     solutions = [HullSolution(data, float(t)) for t in times]
     slots = max(s.aggregates[0].size for s in solutions)
-    pad = lambda values: padded(values, slots)  # noqa: E731
+    return solutions, lambda values: padded(values, slots)
+
+
+def method_rows(data, runs, times, solutions, pad, sp_own):
+    """For each (name, size, method) of ``runs``: its name, size, particles (or cells), W1 against the exact solution
+    at every time, the centres and spreads of the exact aggregates' levels in its output, and (the particle method)
+    its largest distance to the grid SPD of the same particles, as a dict of lists."""
+    rows = {key: [] for key in (*ROW_KEYS, "difference")}
+    for name, size, method in runs:
+        row, centre_row, spread_row, difference, particles = [], [], [], np.nan, np.nan
+        own = sp_own.get(size, {}) if name == "SP" else {}
+        for t, solution in zip(times, solutions):
+            out = method(size, float(t))
+            ranges = agg.level_ranges(solution)
+            if out is not None and name == "particle method":
+                difference = np.nanmax([difference, np.max(np.abs(out[0] - m.spd_grid(data, 1.0 / size, t)[0]))])
+            if out is None:  # LTP and the particle method after the first blow-up
+                row.append(np.nan)
+                centre_row.append(pad([np.nan] * ranges.shape[0]))
+                spread_row.append(pad([np.nan] * ranges.shape[0]))
+                continue
+            particles = count(name, out)
+            at = own.get(t, t)  # SP: its own step nearest to t
+            exact = solution if at == t else HullSolution(data, float(at))
+            row.append(w1(name, exact, out))
+            if ranges.size and at == t:
+                x, weights = atoms(name, out, solution.mass)
+                centre_row.append(pad(agg.level_centres(x, weights, ranges)))
+                spread_row.append(pad(agg.level_spreads(x, weights, ranges, solution.aggregates[0])))
+            else:
+                centre_row.append(pad([np.nan] * ranges.shape[0]))
+                spread_row.append(pad([np.nan] * ranges.shape[0]))
+        for key, value in zip((*ROW_KEYS, "difference"), (name, size, particles, row, centre_row, spread_row,
+                                                           difference)):
+            rows[key].append(value)
+    return rows
+
+
+def run_godunov_ltp(p, output):
+    """Part ``godunov_ltp``: the exact merger and time grid, and the rows of Godunov, LTP (up to the first blow-up) and
+    SP."""
+    data = p["data"]
+    merger, window, times = exact_times(p)
+    progress(f"exact ({data}): merger at t = {merger!r}")
+    solutions, pad = exact_solutions(data, times)
+    godunov = {cells: dict(zip(times, m.godunov_paths(data, cells, times, cfl=p["cfl"])))
+               for cells in p["godunov_cells"]}
+    first_blowup = float(min(1.0 / b.height for b in bump_data(data).bumps))
+    ltp = p["ltp"]
+    early = times[times < first_blowup]
+    ltp_runs = {("LTP", k): dict(zip(early, m.ltp_paths(data, 1.0 / k, ltp["dt_over_h"] / k, early)))
+                for k in ltp["inverse_h"]}
+    # SP at the step nearest to each time of the grid (the window around the merger is not on its steps): its W1
+    # against the exact solution at that step.
+    sp_own = {}
+    for k in ltp["sp_inverse_h"]:
+        dt = ltp["dt_over_h"] / k
+        own = np.round(np.rint(times / dt) * dt, 12)
+        steps = np.unique(own)
+        states = dict(zip(steps, m.ltp_paths(data, 1.0 / k, dt, steps, method="sp", eps=ltp["sp_eps_over_h"] / k)))
+        ltp_runs["SP", k] = {t: states[s] for t, s in zip(times, own)}
+        sp_own[k] = dict(zip(times, own))
+    runs = [("Godunov for F", cells, lambda n, t: godunov[n][t]) for cells in p["godunov_cells"]]
+    runs += [(name, k, lambda k, t, name=name: ltp_runs[name, k].get(t)) for name, k in ltp_runs]
+    rows = method_rows(data, runs, times, solutions, pad, sp_own)
+    for name, size, row in zip(rows["methods"], rows["size"], rows["error"]):
+        progress(f"{name:18} size {size:6d}: largest W1 over t > 0 {np.nanmax(row[1:]):.4g} (t = 0: {row[0]:.4g})")
+    save_results(output, merger=merger, window_times=window, times=times,
+                 **{key: np.array(rows[key]) for key in ROW_KEYS})
+
+
+def run(p, ltp_path, output):
+    """Part ``rest``: every other method, and the case's result with the rows of part ``godunov_ltp`` (read from
+    ``ltp_path``), every row in the order of :data:`METHOD_ORDER`."""
+    data = p["data"]
+    bumps = bump_data(data)
+    ltp_rows = load_results(ltp_path)
+    merger, window, times = float(ltp_rows["merger"]), ltp_rows["window_times"], ltp_rows["times"]
+    if not np.array_equal(times, np.union1d(grid_times(p), window)):
+        raise ValueError(f"{ltp_path} holds another time grid than this case's configuration: rerun its rule")
+    progress(f"exact ({data}): merger at t = {merger!r} (from {ltp_path}); blow-ups at "
+             f"{[1.0 / b.height for b in bumps.bumps]}")
+    solutions, pad = exact_solutions(data, times)
     exact_positions = np.array([pad(s.aggregates[0]) for s in solutions])
     exact_masses = np.array([pad(s.aggregates[1]) for s in solutions])
     exact_lowers = np.array([pad(s.aggregates[2]) for s in solutions])
@@ -159,53 +259,14 @@ def run(p, output):
     runs += [(f"blob, m = {blob['order']}", k,
               lambda k, t: (blob_paths[k][0][int(np.searchsorted(blob_times, t))], blob_paths[k][1]))
              for k in blob["inverse_h"]]
-    godunov = {cells: dict(zip(times, m.godunov_paths(data, cells, times, cfl=p["cfl"])))
-               for cells in p["godunov_cells"]}
-    runs += [("Godunov for F", cells, lambda n, t: godunov[n][t]) for cells in p["godunov_cells"]]
-    ltp = p["ltp"]
     first_blowup = float(blowups.min())
     early = times[times < first_blowup]
     # The particle method, defined up to its first collision (the first blow-up): the times before it.
     runs += [("particle method", k, lambda k, t: m.particle_method(data, 1.0 / k, t) if t in early else None)
              for k in p["particle_inverse_h"]]
-    ltp_runs = {("LTP", k): dict(zip(early, m.ltp_paths(data, 1.0 / k, ltp["dt_over_h"] / k, early)))
-                for k in ltp["inverse_h"]}
-    # SP at the step nearest to each time of the grid (the window around the merger is not on its steps): its W1
-    # against the exact solution at that step.
-    sp_own = {}
-    for k in ltp["sp_inverse_h"]:
-        dt = ltp["dt_over_h"] / k
-        own = np.round(np.rint(times / dt) * dt, 12)
-        steps = np.unique(own)
-        states = dict(zip(steps, m.ltp_paths(data, 1.0 / k, dt, steps, method="sp", eps=ltp["sp_eps_over_h"] / k)))
-        ltp_runs["SP", k] = {t: states[s] for t, s in zip(times, own)}
-        sp_own[k] = dict(zip(times, own))
-    runs += [(name, k, lambda k, t, name=name: ltp_runs[name, k].get(t)) for name, k in ltp_runs]
-    names, sizes, counts, errors, centres, spreads, mergers, gaps, differences = ([] for _ in range(9))
-    for name, size, method in runs:
-        row, centre_row, spread_row, difference, particles = [], [], [], np.nan, np.nan
-        own = sp_own.get(size, {}) if name == "SP" else {}
-        for t, solution in zip(times, solutions):
-            out = method(size, float(t))
-            ranges = agg.level_ranges(solution)
-            if out is not None and name == "particle method":
-                difference = np.nanmax([difference, np.max(np.abs(out[0] - m.spd_grid(data, 1.0 / size, t)[0]))])
-            if out is None:  # LTP and the particle method after the first blow-up
-                row.append(np.nan)
-                centre_row.append(pad([np.nan] * ranges.shape[0]))
-                spread_row.append(pad([np.nan] * ranges.shape[0]))
-                continue
-            particles = count(name, out)
-            at = own.get(t, t)  # SP: its own step nearest to t
-            exact = solution if at == t else HullSolution(data, float(at))
-            row.append(w1(name, exact, out))
-            if ranges.size and at == t:
-                x, weights = atoms(name, out, solution.mass)
-                centre_row.append(pad(agg.level_centres(x, weights, ranges)))
-                spread_row.append(pad(agg.level_spreads(x, weights, ranges, solution.aggregates[0])))
-            else:
-                centre_row.append(pad([np.nan] * ranges.shape[0]))
-                spread_row.append(pad([np.nan] * ranges.shape[0]))
+    rows = method_rows(data, runs, times, solutions, pad, {})
+    mergers, gaps = [], []
+    for name, size, row in zip(rows["methods"], rows["size"], rows["error"]):
         merged, gap = np.nan, np.nan
         if name == "SPD, grid weights":
             x0, _, masses = m.grid_particles(data, 1.0 / size)
@@ -214,17 +275,20 @@ def run(p, output):
         elif name.startswith("blob"):
             at = int(np.searchsorted(blob_times, merger))
             gap = agg.gap_path(blob_paths[size][0][at], blob_paths[size][1], merging)[0] / (1.0 / size) ** blob["q"]
-        names.append(name)
-        sizes.append(size)
-        counts.append(particles)
-        errors.append(row)
-        centres.append(centre_row)
-        spreads.append(spread_row)
         mergers.append(merged)
         gaps.append(gap)
-        differences.append(difference)
         progress(f"{name:18} size {size:6d}: largest W1 over t > 0 {np.nanmax(row[1:]):.4g} (t = 0: {row[0]:.4g}); "
                  f"merger {merged!r}; blob gap at the merger / delta {gap!r}")
+    # Godunov, LTP and SP (part godunov_ltp) have no merger, gap or distance to the grid SPD; every row in the order
+    # of METHOD_ORDER.
+    later = len(ltp_rows["methods"])
+    names, sizes, counts, errors, centres, spreads = (np.concatenate([np.array(rows[key]), ltp_rows[key]])
+                                                      for key in ROW_KEYS)
+    order = np.argsort([method_rank(name) for name in names], kind="stable")
+    names, sizes, counts, errors, centres, spreads = (a[order] for a in (names, sizes, counts, errors, centres,
+                                                                        spreads))
+    mergers, gaps = np.array(mergers + [np.nan] * later)[order], np.array(gaps + [np.nan] * later)[order]
+    differences = np.array(rows["difference"] + [np.nan] * later)[order]
     # The equal-mass SPD's merger: the fraction of a particle's mass on either side of the gap between the bumps
     # follows n m_1 / M, so the error changes sign and size from one n to the next: every n of a block above each size.
     period = merger_period(bumps, p["spd_merger_block_max"])
@@ -243,10 +307,10 @@ def run(p, output):
                  exact_lowers=exact_lowers, exact_identity=exact_identity, exact_offsets=exact_offsets,
                  merger=merger, path_times=path_times,
                  path_positions=path_positions, path_masses=path_masses, spd_clusters=np.array(cluster_rows),
-                 blowups=blowups, methods=np.array(names), size=np.array(sizes), count=np.array(counts),
-                 error=np.array(errors), centre=np.array(centres), spread=np.array(spreads),
-                 method_merger=np.array(mergers), merger_gap=np.array(gaps), spd_merger_n=block,
-                 spd_merger=spd_mergers, spd_levels=spd_levels, spd_difference=np.array(differences), mass=bumps.mass,
+                 blowups=blowups, methods=names, size=sizes, count=counts,
+                 error=errors, centre=centres, spread=spreads,
+                 method_merger=mergers, merger_gap=gaps, spd_merger_n=block,
+                 spd_merger=spd_mergers, spd_levels=spd_levels, spd_difference=differences, mass=bumps.mass,
                  support=np.array(bumps.support))
 
 
@@ -271,4 +335,7 @@ def spd_start(data, n):
 
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
-    run(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+    if snakemake.params.part == "godunov_ltp":  # noqa: F821
+        run_godunov_ltp(snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+    else:
+        run(snakemake.params.cfg, snakemake.input.ltp, snakemake.output[0])  # noqa: F821

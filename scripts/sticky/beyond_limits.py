@@ -2,15 +2,16 @@
 
 For both p-system cases the exact MSPD with n particles per type is compared, at one time t, with a
 conservative HLL solution of the p-system on ``reference_cells`` cells (mapped to Riemann invariants)
-and with the upwind scheme for (1.7) on ``upwind_reference_cells``; each reference is also compared
-with itself at half its resolution. The upwind run on its reference grid is one of the cost study's
+and with the upwind scheme for (1.7) on ``upwind_reference_cells`` (computed by ``beyond_upwind.py``,
+one job per case, with its distance to half its resolution); the HLL solution is also compared with
+itself at half its resolution. The upwind run on its reference grid is one of the cost study's
 two candidate references (``beyond_data.py``); the other is the exact MSPD of ``beyond_reference.py``.
 Nothing here is timed, so this job holds one core while the timed runs hold them all.
 """
 
 import numpy as np
 
-from particle_methods.finite_volume.psystem import hll_psystem, invariants_from_conservative, upwind_diagonal
+from particle_methods.finite_volume.psystem import hll_psystem, invariants_from_conservative
 from particle_methods.sticky.cases import (
     cells_distance,
     configuration_distance,
@@ -20,7 +21,7 @@ from particle_methods.sticky.cases import (
 )
 from particle_methods.sticky.multitype_events import mspd_exact
 from particle_methods.systems import PSystem
-from particle_replication.workflow import logged, progress, save_results
+from particle_replication.workflow import load_results, logged, progress, save_results
 
 PSYSTEM_CASES = ("rarefaction", "shocks")
 
@@ -31,12 +32,17 @@ def hll_invariants(system, case, x0, edges, t, cfl):
     return np.array(invariants_from_conservative(system, *hll_psystem(system, u0, v0, edges, t, cfl)))
 
 
-def upwind_invariants(system, case, x0, edges, t, cfl):
-    """Riemann invariants of the upwind scheme for (1.7), shape (2, cells)."""
-    return upwind_diagonal(system, psystem_initial_cells(case, x0, edges), edges, t, cfl)
+def upwind_reference(path, case, cells):
+    """The upwind run of ``beyond_upwind.py`` for ``case``: (invariants (2, cells), distance to half the cells),
+    checked to be that case's on ``cells`` cells."""
+    upwind = load_results(path)
+    if str(upwind["case"]) != case or int(upwind["upwind_reference_cells"]) != cells:
+        raise ValueError(f"{path} holds the upwind run of case {upwind['case']} on {upwind['upwind_reference_cells']} "
+                         f"cells, not of {case} on {cells}: rerun its rule")
+    return upwind["upwind_w"], upwind["upwind_gap"]
 
 
-def run(system_params, cases, p, output):
+def run(system_params, cases, p, upwind, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
     t, cfl = p["t"], p["cfl"]
     limit_n = np.asarray(p["limit_n"])
@@ -47,9 +53,9 @@ def run(system_params, cases, p, output):
         fine, coarse = (np.linspace(*p["domain"], count + 1) for count in (cells, cells // 2))
         hll, hll_half = (hll_invariants(system, name, x0, edges, t, cfl) for edges in (fine, coarse))
         cells = p["upwind_reference_cells"]
-        fine_up, coarse_up = (np.linspace(*p["domain"], count + 1) for count in (cells, cells // 2))
-        up, up_half = (upwind_invariants(system, name, x0, edges, t, cfl) for edges in (fine_up, coarse_up))
-        progress(f"{name}: HLL on {p['reference_cells']} and upwind on {cells} cells done")
+        fine_up = np.linspace(*p["domain"], cells + 1)
+        up, upwind_gap = upwind_reference(upwind[name], name, cells)
+        progress(f"{name}: HLL on {p['reference_cells']} cells done (upwind on {cells} from {upwind[name]})")
         exact = {n: mspd_exact(psystem_initial_configuration(name, x0, int(n)), system, [t])[0] for n in limit_n}
         to_hll = [distance_to_cells(exact[n], hll, fine) for n in limit_n]
         to_upwind = [distance_to_cells(exact[n], up, fine_up) for n in limit_n]
@@ -58,7 +64,7 @@ def run(system_params, cases, p, output):
             limit_to_hll=to_hll, limit_to_upwind=to_upwind,
             mspd_gap=configuration_distance(exact[limit_n[-1]], exact[limit_n[-2]]),
             hll_gap=cells_distance(hll, fine, hll_half, coarse),
-            upwind_gap=cells_distance(up, fine_up, up_half, coarse_up),
+            upwind_gap=upwind_gap,
             hll_to_upwind=cells_distance(hll, fine, up, fine_up), hll_w=hll, upwind_w=up, mspd=exact[limit_n[-1]])
     save_results(output, t=t, cases=np.array(PSYSTEM_CASES), limit_n=limit_n, reference_cells=p["reference_cells"],
                  upwind_reference_cells=p["upwind_reference_cells"],
@@ -66,4 +72,5 @@ def run(system_params, cases, p, output):
 
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
-    run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+    run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg,  # noqa: F821
+        {name: snakemake.input[name] for name in PSYSTEM_CASES}, snakemake.output[0])  # noqa: F821

@@ -100,8 +100,10 @@ class Bump:
         positive("right_radius", self.right_radius)
         unit = Data1D("unit bump", self.power)
         object.__setattr__(self, "unit", unit)
-        # The unit bump's mass, once: every level of a root iteration needs it.
+        # The unit bump's mass and its moment from the left end to the peak, once: every level of a root iteration
+        # needs them.
         object.__setattr__(self, "_unit_mass", unit.mass)
+        object.__setattr__(self, "_unit_moment_at_peak", unit.moment_from_left(0.0))
 
     @property
     def left_end(self) -> float:
@@ -140,7 +142,7 @@ class Bump:
 
     def _density(self, a):
         # (s clipped to [-2, 2], where the bump is 0 beyond +-1: far positions overflow s to +-inf)
-        return self.height * self.unit(np.clip(self._scaled(a), -2.0, 2.0))
+        return self.height * self.unit._density(np.clip(self._scaled(a), -2.0, 2.0))
 
     def _left_integrals(self, a):
         """(int_{-inf}^a of the bump, int_{-inf}^a x times the bump), with s = scaled(a), r = radius and
@@ -151,9 +153,9 @@ class Bump:
         symmetric bump k = 1 and the two are c r (M_1/2 + m_1(s)) and c r (centre (M_1/2 + m_1(s)) + r I(s))."""
         s = np.clip(self._scaled(a), -1.0, 1.0)
         stretch = np.where(s > 0.0, self.right_radius / self.radius, 1.0)
-        left = 0.5 * self._unit_mass + stretch * self.unit.mass_from_origin(s)
+        left = 0.5 * self._unit_mass + stretch * self.unit._mass_from_origin(s)
         square = stretch * stretch
-        moment = square * self.unit.moment_from_left(s) + (1.0 - square) * self.unit.moment_from_left(0.0)
+        moment = square * self.unit._moment_from_left(s) + (1.0 - square) * self._unit_moment_at_peak
         scale = self.height * self.radius
         return scale * left, scale * (self.centre * left + self.radius * moment)
 

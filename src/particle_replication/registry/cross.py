@@ -91,15 +91,31 @@ def aggregate_settings(aggregates, case: str) -> dict:
     return {**common, **aggregates["cases"][case]}
 
 
+#: Part ``godunov_ltp`` of a case (scripts/cross/aggregates_data.py): the exact merger, the time grid, the rows of
+#: Godunov, LTP and SP.
+AGGREGATE_LTP_KEYS = ("merger", "window_times", "times", "methods", "size", "count", "error", "centre", "spread")
+
 RESULTS += tuple(
-    Result(
-        f"results/cross/aggregates_{case}.npz",
-        "aggregates_data.py",
-        AGGREGATE_KEYS,
-        Job(f"{case}: the SPDs, the particle and blob methods, Godunov, LTP and SP against the exact aggregates on a "
-            "time grid", lambda s, case=case: {"cfg": aggregate_settings(s["aggregates"], case)}),
-    )
+    result
     for case in AGGREGATE_CASES
+    for result in (
+        Result(
+            f"results/cross/aggregates_{case}_godunov_ltp.npz",
+            "aggregates_data.py",
+            AGGREGATE_LTP_KEYS,
+            Job(f"{case}: the exact merger and time grid, Godunov, LTP and SP against the exact aggregates on it",
+                lambda s, case=case: {"cfg": aggregate_settings(s["aggregates"], case), "part": "godunov_ltp"}),
+        ),
+        Result(
+            f"results/cross/aggregates_{case}.npz",
+            "aggregates_data.py",
+            AGGREGATE_KEYS,
+            Job(f"{case}: the SPDs, the particle and blob methods against the exact aggregates on a time grid, with "
+                "Godunov, LTP and SP", lambda s, case=case: {"cfg": aggregate_settings(s["aggregates"], case),
+                                                              "part": "rest"},
+                inputs={"ltp": f"results/cross/aggregates_{case}_godunov_ltp.npz"}),
+        ),
+    )
 )
 
 

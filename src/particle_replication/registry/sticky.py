@@ -251,8 +251,19 @@ RESULTS = (
         Job(
             "beyond the paper: the exact MSPD against conservative and upwind finite volumes (untimed)",
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, LIMIT_SETTINGS)},
+            inputs={case: f"results/sticky/beyond_upwind_{case}.npz" for case in ("rarefaction", "shocks")},
         ),
     ),
+    *(Result(
+        f"results/sticky/beyond_upwind_{case}.npz",
+        "beyond_upwind.py",
+        ("case", "upwind_reference_cells", "upwind_w", "upwind_gap"),
+        Job(
+            f"beyond the paper: the upwind reference of the limits study and its half grid, {case} case (untimed)",
+            lambda s, case=case: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
+                                  "cfg": _beyond(s, ("t", "domain", "cfl", "upwind_reference_cells"))},
+        ),
+    ) for case in ("rarefaction", "shocks")),
     *(Result(
         f"results/sticky/beyond_reference_{case}.npz",
         "beyond_reference.py",
