@@ -48,6 +48,21 @@ def test_a_damaged_result_is_found_and_refused_where_it_is_read(tmp_path, damage
         workflow.load_results(path)
 
 
+def test_an_intermediate_file_of_another_configuration_is_refused_where_it_is_read(tmp_path):
+    """A job reading another job's file (beyond_limits reads the upwind runs of beyond_upwind) requires its case and
+    grid: the file of another case or cell count is refused naming the key."""
+    path = tmp_path / "upwind.npz"
+    workflow.save_results(path, case=np.array("rarefaction"), upwind_reference_cells=64000, upwind_gap=1e-3)
+    found = workflow.load_results(path, expect={"case": "rarefaction", "upwind_reference_cells": 64000})
+    assert float(found["upwind_gap"]) == 1e-3
+    with pytest.raises(ValueError, match=r"holds case = .*'rarefaction'.*not the .*'shocks'.*rerun its rule"):
+        workflow.load_results(path, expect={"case": "shocks"})
+    with pytest.raises(ValueError, match=r"holds upwind_reference_cells = .*64000.*not the .*32000"):
+        workflow.load_results(path, expect={"case": "rarefaction", "upwind_reference_cells": 32000})
+    with pytest.raises(ValueError, match="holds no upwind_w"):
+        workflow.load_results(path, expect={"upwind_w": 0})
+
+
 def test_damaged_results_checks_its_arguments(tmp_path):
     with pytest.raises(TypeError, match="path"):
         workflow.damaged(None)

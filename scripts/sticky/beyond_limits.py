@@ -35,10 +35,7 @@ def hll_invariants(system, case, x0, edges, t, cfl):
 def upwind_reference(path, case, cells):
     """The upwind run of ``beyond_upwind.py`` for ``case``: (invariants (2, cells), distance to half the cells),
     checked to be that case's on ``cells`` cells."""
-    upwind = load_results(path)
-    if str(upwind["case"]) != case or int(upwind["upwind_reference_cells"]) != cells:
-        raise ValueError(f"{path} holds the upwind run of case {upwind['case']} on {upwind['upwind_reference_cells']} "
-                         f"cells, not of {case} on {cells}: rerun its rule")
+    upwind = load_results(path, expect={"case": case, "upwind_reference_cells": cells})
     return upwind["upwind_w"], upwind["upwind_gap"]
 
 

@@ -173,16 +173,25 @@ def save_results(path, **arrays) -> None:
         raise
 
 
-def load_results(path) -> dict:
+def load_results(path, expect: dict | None = None) -> dict:
     """Load an ``.npz`` result file into a plain dictionary of arrays, checking every array against the CRC-32
     recorded when it was written (a truncated or altered file raises a ValueError naming it; the next Snakemake
     run rebuilds it, :func:`damaged_results`) and a registered file's keys against the registry (a file written
-    by older code fails here, not later)."""
+    by older code fails here, not later). ``expect`` maps keys to the values a job that reads an intermediate
+    file requires of it (its case, its grid): a file that holds other values, made for another configuration,
+    raises a ValueError naming the key."""
     if problem := damaged(path):
         raise ValueError(f"{path} is damaged ({problem}): the next snakemake run rebuilds it")
     with np.load(path) as data:
         _check_keys(path, data.files)
-        return {key: data[key] for key in data.files}
+        results = {key: data[key] for key in data.files}
+    for key, value in (expect or {}).items():
+        if key not in results:
+            raise ValueError(f"{path} holds no {key}, which its reader requires: rerun its rule")
+        if not np.array_equal(results[key], np.asarray(value)):
+            raise ValueError(f"{path} holds {key} = {results[key]!r}, not the {np.asarray(value)!r} of this "
+                             "configuration: rerun its rule")
+    return results
 
 
 def damaged(path) -> str:
