@@ -53,9 +53,11 @@ CLOSE_FRACTION = 1.0e-3
 #: Below this many particles the near-field loop runs on one thread (measured, benchmarks/bench_threads.py).
 PARALLEL_MIN_PARTICLES = 2000
 #: Most candidate pairs the near field of one call examines (the pairs in each particle's cells of the cell list,
-#: counted before the sums): a few ns each per Gaussian term, like the direct sums' MAX_PARTICLES^2 / 2 (about a
-#: second). Figure 5 extended to h = 1/160 examines 4.8 * 10^7; N points within one width examine N^2 / 2.
-MAX_NEAR_PAIRS = 4 * 10**8
+#: counted before the sums). Measured by benchmarks/bench_fmm.py on an AMD EPYC (AVX2, 2 cores): 19 to 24 ns of
+#: CPU time per pair on one thread (two Gaussian terms), from 4.8 * 10^7 pairs (Figure 5's grid at 1/h = 160) to
+#: 7.9 * 10^8 (1/h = 560, 985,089 points): a call at the limit takes about 25 s of one core for its near field,
+#: with the FMM (7 s at 10^6 points) on the other. N points within one width examine N^2 / 2.
+MAX_NEAR_PAIRS = 10**9
 
 
 @functools.cache
@@ -243,6 +245,21 @@ def _fmm_pool() -> concurrent.futures.ThreadPoolExecutor:
     return concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="fmm")
 
 
+def _near_field(positions, masses, coefficients, widths):
+    """(order, pairs, arguments) of the near field of checked inputs: the points' order by cell key, the pairs
+    :func:`_near_accumulate` examines (:func:`_near_pair_count`) and the arguments of :func:`_near_sums`."""
+    inverse = 1.0 / np.asarray(widths, dtype=np.float64) ** 2
+    g_weights = np.asarray(coefficients, dtype=np.float64) / (2 * math.pi)
+    l_weights = np.asarray(coefficients, dtype=np.float64) * inverse / math.pi
+    cutoff = GAUSS_CUTOFF * float(np.max(widths))
+    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
+    keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
+    order = np.argsort(keys, kind="stable")
+    arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
+                 cutoff * cutoff)
+    return order, _near_pair_count(keys[order], columns), arguments
+
+
 def newtonian_sums(positions, masses, coefficients, widths):
     """Velocities -sum_j m_j grad K(X_i - X_j) (N, 2) and divergences -sum_j m_j Delta K(X_i - X_j) of the
     2D Newtonian kernel: raw C log|x|/(2 pi) when ``widths`` is empty (``coefficients`` = (C,)), else the
@@ -267,21 +284,12 @@ def newtonian_sums(positions, masses, coefficients, widths):
         velocity = finite_result("the velocities", (-total / (2 * math.pi)) * far_field(positions, masses),
                                  "the masses or coefficients are too large")
         return velocity, np.zeros(masses.size)
-    inverse = 1.0 / np.asarray(widths, dtype=np.float64) ** 2
-    g_weights = np.asarray(coefficients, dtype=np.float64) / (2 * math.pi)
-    l_weights = np.asarray(coefficients, dtype=np.float64) * inverse / math.pi
-    cutoff = GAUSS_CUTOFF * float(np.max(widths))
-    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
-    keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
-    order = np.argsort(keys, kind="stable")
-    pairs = _near_pair_count(keys[order], columns)
+    order, pairs, arguments = _near_field(positions, masses, coefficients, widths)
     if pairs > MAX_NEAR_PAIRS:
         raise ValueError(f"positions put {pairs:.3g} pairs in the near field of widths up to {np.max(widths):.3g} "
                          f"(about N^2 / 2 when the N points lie within a few widths), more than MAX_NEAR_PAIRS = "
                          f"{MAX_NEAR_PAIRS:.0e}: the Gaussian terms would be summed over every one")
-    arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
-                 cutoff * cutoff)
-    threads = numba.get_num_threads() if x.size >= PARALLEL_MIN_PARTICLES else 1
+    threads = numba.get_num_threads() if masses.size >= PARALLEL_MIN_PARTICLES else 1
     if threads == 1:
         field = far_field(positions, masses)
         with numba_threads(1):
