@@ -40,7 +40,6 @@ from particle_methods.blob.mollifiers import mollifier
 from particle_methods.blob.pair_sums import FMM_MIN_PARTICLES, _newtonian_2d_forces, pair_sums
 from particle_methods.blob.solver import integrate_particles, setup_2d
 from particle_methods.blob.tile_sums import row_share
-from particle_methods.threads import numba_threads
 
 
 def sums(points, masses, kernel, method, repeats=3):
@@ -128,11 +127,10 @@ def near_field_per_pair():
         points, _, masses, kernel, _ = setup_2d("regular", "newtonian", 1.0 / inverse_h, method="blob", q=0.9)
         _, coefficients, widths, _, _ = kernel.arrays()
         _, pairs, arguments = newtonian_fmm._near_field(points, masses, coefficients, widths)
-        with numba_threads(1):
-            newtonian_fmm._near_sums(*arguments)  # compiled (or loaded from the cache) and warm
-            start = time.thread_time()
-            newtonian_fmm._near_sums(*arguments)
-            cpu = time.thread_time() - start
+        newtonian_fmm._near_sums(arguments, 1)  # compiled (or loaded from the cache) and warm
+        start = time.thread_time()
+        newtonian_fmm._near_sums(arguments, 1)
+        cpu = time.thread_time() - start
         print(f"near field, 1/h = {inverse_h}, N = {points.shape[0]}: {pairs:.3g} pairs in {cpu:.2f} s of CPU, "
               f"{1e9 * cpu / pairs:.1f} ns per pair ({load()})", flush=True)
 
