@@ -1,6 +1,7 @@
 """The 2D Newtonian pair sums by the fast multipole method (blob/newtonian_fmm.py) against the direct sums."""
 
 import math
+import time
 
 import numba
 import numpy as np
@@ -140,19 +141,16 @@ def test_sums_are_bit_identical_on_one_and_two_threads(n):
         np.testing.assert_array_equal(one, two)
 
 
-@TWO_THREADS
-def test_compiled_near_field_is_bit_identical_on_one_and_two_threads(disk_points):
-    """newtonian_sums gives the near field all threads but the FMM's: on 2 threads it runs on one. The compiled
-    near field itself, run on 2 threads, gives the same bits as on one."""
+def test_near_field_is_bit_identical_on_one_two_and_three_threads(disk_points):
+    """The near field's accumulators go to the threads as they come free (the FMM's thread joins once the FMM is
+    done): on one, two or three threads, with or without a task beside, the same bits."""
     arguments = near_arguments(*disk_points, kernel_2d("newtonian", PSI, 0.02))
-    results = []
-    for threads in (1, 2):
-        with numba_threads(threads):
-            assert numba.get_num_threads() == threads
-            results.append(newtonian_fmm._near_sums(*arguments))
-    for one, two in zip(*results):
-        assert np.abs(one).max() > 0
-        np.testing.assert_array_equal(one, two)
+    results = [newtonian_fmm._near_sums(arguments, threads, beside)[0]
+               for threads, beside in ((1, lambda: None), (2, lambda: time.sleep(0.01)), (3, lambda: None))]
+    for other in results[1:]:
+        for one, two in zip(results[0], other):
+            assert np.abs(one).max() > 0
+            np.testing.assert_array_equal(one, two)
 
 
 # (d) Coincident points: the FMM cannot take them, the direct sums do.

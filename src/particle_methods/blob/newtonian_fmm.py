@@ -29,14 +29,13 @@ from __future__ import annotations
 import concurrent.futures
 import ctypes
 import functools
+import itertools
 import math
 
 import numba
 import numpy as np
-from numba import prange
 
-from ..jit import njit, njit_threaded
-from ..threads import numba_threads
+from ..jit import njit
 from ..validation import finite_array, finite_result, same_length
 from .tile_sums import row_share
 from .vector_exp import exp_minus_and_complement
@@ -53,9 +52,11 @@ CLOSE_FRACTION = 1.0e-3
 #: Below this many particles the near-field loop runs on one thread (measured, benchmarks/bench_threads.py).
 PARALLEL_MIN_PARTICLES = 2000
 #: Most candidate pairs the near field of one call examines (the pairs in each particle's cells of the cell list,
-#: counted before the sums): a few ns each per Gaussian term, like the direct sums' MAX_PARTICLES^2 / 2 (about a
-#: second). Figure 5 extended to h = 1/160 examines 4.8 * 10^7; N points within one width examine N^2 / 2.
-MAX_NEAR_PAIRS = 4 * 10**8
+#: counted before the sums). Measured by benchmarks/bench_fmm.py on an AMD EPYC (AVX2, 2 cores): 19 to 26 ns of
+#: CPU time per pair on one thread (two Gaussian terms), from 4.8 * 10^7 pairs (Figure 5's grid at 1/h = 160) to
+#: 7.9 * 10^8 (1/h = 560, 985,089 points, 14 s per call on 2 cores): a call at the limit takes about 25 s of one
+#: core for its near field, and the FMM (7 s at 10^6 points) beside it. N points within one width examine N^2 / 2.
+MAX_NEAR_PAIRS = 10**9
 
 
 @functools.cache
@@ -201,27 +202,41 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
         div[c, i] -= sd + mi * self_term
 
 
-@njit_threaded
-def _near_sums(x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2):
-    """Gaussian share of grad K_delta and the divergence, for points sorted by cell key:
-    v_i = sum_j m_j sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j), div_i = -sum_j m_j sum_k l_k e^{-a_k r^2}
-    over the pairs with r^2 < cutoff2 (i = j included in div), each pair evaluated once, in
-    ACCUMULATORS accumulators summed in a fixed order: the same sums on any number of threads. Also the
-    smallest squared distance between two particles closer than the cut-off (inf when there is none)."""
-    n = x.size
+def _near_sums(arguments, threads, beside=lambda: None):
+    """Gaussian share of grad K_delta and the divergence, for the points sorted by cell key of ``arguments``
+    (:func:`_near_field`): v_i = sum_j m_j sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j),
+    div_i = -sum_j m_j sum_k l_k e^{-a_k r^2} over the pairs with r^2 < cutoff2 (i = j included in div), each
+    pair evaluated once, in ACCUMULATORS accumulators summed in a fixed order; also the smallest squared
+    distance between two particles closer than the cut-off (inf when there is none). ``threads`` threads (this
+    one and threads - 1 of a pool) take the accumulators one at a time as they come free; the first thread of
+    the pool runs ``beside`` (the FMM) first, so that no core waits for the other half of the work. Each
+    accumulator is summed by one thread in a fixed order: the same sums on any number of threads.
+    Returns ((v_x, v_y, div, closest), beside's result)."""
+    n = arguments[0].size
+    vx, vy, div = np.zeros((ACCUMULATORS, n)), np.zeros((ACCUMULATORS, n)), np.zeros((ACCUMULATORS, n))
     closest = np.full(ACCUMULATORS, np.inf)
-    vx = np.zeros((ACCUMULATORS, n))
-    vy = np.zeros((ACCUMULATORS, n))
-    div = np.zeros((ACCUMULATORS, n))
-    for c in prange(ACCUMULATORS):
-        _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div,
-                         closest)
+    claimed = itertools.count()  # next() on it is atomic: each accumulator goes to one thread
+
+    def work(task):
+        result = task()
+        c = next(claimed)
+        while c < ACCUMULATORS:
+            _near_accumulate(c, *arguments, vx, vy, div, closest)  # compiled: releases the interpreter's lock
+            c = next(claimed)
+        return result
+
+    if threads == 1:
+        result = work(beside)
+    else:
+        helpers = [_pool(threads - 1).submit(work, beside if k == 0 else (lambda: None)) for k in range(threads - 1)]
+        work(lambda: None)
+        result = [helper.result() for helper in helpers][0]
     sx, sy, sd = np.zeros(n), np.zeros(n), np.zeros(n)
     for c in range(ACCUMULATORS):
         sx += vx[c]
         sy += vy[c]
         sd += div[c]
-    return sx, sy, sd, closest.min()
+    return (sx, sy, sd, closest.min()), result
 
 
 def _near_pair_count(keys, columns) -> int:
@@ -238,9 +253,24 @@ def _near_pair_count(keys, columns) -> int:
 
 
 @functools.cache
-def _fmm_pool() -> concurrent.futures.ThreadPoolExecutor:
-    """The one thread that runs the FMM beside the near field, started on first use."""
-    return concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="fmm")
+def _pool(workers: int) -> concurrent.futures.ThreadPoolExecutor:
+    """The threads that run the FMM and share the near field beside the calling one, started on first use."""
+    return concurrent.futures.ThreadPoolExecutor(max_workers=workers, thread_name_prefix="fmm")
+
+
+def _near_field(positions, masses, coefficients, widths):
+    """(order, pairs, arguments) of the near field of checked inputs: the points' order by cell key, the pairs
+    :func:`_near_accumulate` examines (:func:`_near_pair_count`) and the arguments of :func:`_near_sums`."""
+    inverse = 1.0 / np.asarray(widths, dtype=np.float64) ** 2
+    g_weights = np.asarray(coefficients, dtype=np.float64) / (2 * math.pi)
+    l_weights = np.asarray(coefficients, dtype=np.float64) * inverse / math.pi
+    cutoff = GAUSS_CUTOFF * float(np.max(widths))
+    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
+    keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
+    order = np.argsort(keys, kind="stable")
+    arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
+                 cutoff * cutoff)
+    return order, _near_pair_count(keys[order], columns), arguments
 
 
 def newtonian_sums(positions, masses, coefficients, widths):
@@ -251,7 +281,8 @@ def newtonian_sums(positions, masses, coefficients, widths):
     masses, positive widths, a spread of at most 2^25 widths.
 
     With two threads or more (and :data:`PARALLEL_MIN_PARTICLES` particles), the FMM runs on one thread
-    while the near field runs on the others: the two take about the same time.
+    while the near field's accumulators go to the others, and to the FMM's thread once it is done (the near
+    field takes 1.6 to 2.6 times the FMM's time from 2 * 10^4 to 10^6 points).
 
     Returns None when two particles are closer than :data:`CLOSE_FRACTION` times the narrowest width: the
     raw field of the pair, m/(2 pi r), and its Gaussian correction then cancel to a few digits, and the
@@ -267,32 +298,13 @@ def newtonian_sums(positions, masses, coefficients, widths):
         velocity = finite_result("the velocities", (-total / (2 * math.pi)) * far_field(positions, masses),
                                  "the masses or coefficients are too large")
         return velocity, np.zeros(masses.size)
-    inverse = 1.0 / np.asarray(widths, dtype=np.float64) ** 2
-    g_weights = np.asarray(coefficients, dtype=np.float64) / (2 * math.pi)
-    l_weights = np.asarray(coefficients, dtype=np.float64) * inverse / math.pi
-    cutoff = GAUSS_CUTOFF * float(np.max(widths))
-    x, y = np.ascontiguousarray(positions[:, 0]), np.ascontiguousarray(positions[:, 1])
-    keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
-    order = np.argsort(keys, kind="stable")
-    pairs = _near_pair_count(keys[order], columns)
+    order, pairs, arguments = _near_field(positions, masses, coefficients, widths)
     if pairs > MAX_NEAR_PAIRS:
         raise ValueError(f"positions put {pairs:.3g} pairs in the near field of widths up to {np.max(widths):.3g} "
                          f"(about N^2 / 2 when the N points lie within a few widths), more than MAX_NEAR_PAIRS = "
                          f"{MAX_NEAR_PAIRS:.0e}: the Gaussian terms would be summed over every one")
-    arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
-                 cutoff * cutoff)
-    threads = numba.get_num_threads() if x.size >= PARALLEL_MIN_PARTICLES else 1
-    if threads == 1:
-        field = far_field(positions, masses)
-        with numba_threads(1):
-            vx, vy, div, closest = _near_sums(*arguments)
-    else:
-        # The FMM runs in the pool's thread (its ctypes call releases the interpreter's lock), the compiled
-        # near field (nogil) in this one.
-        far = _fmm_pool().submit(far_field, positions, masses)
-        with numba_threads(threads - 1):
-            vx, vy, div, closest = _near_sums(*arguments)
-        field = far.result()
+    threads = numba.get_num_threads() if masses.size >= PARALLEL_MIN_PARTICLES else 1
+    (vx, vy, div, closest), field = _near_sums(arguments, threads, lambda: far_field(positions, masses))
     if math.sqrt(closest) < CLOSE_FRACTION * float(np.min(widths)):
         return None
     velocity = (-total / (2 * math.pi)) * field
