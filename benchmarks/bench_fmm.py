@@ -37,7 +37,7 @@ from timing import best_time, print_cpu
 from particle_methods.blob import newtonian_fmm
 from particle_methods.blob.kernels import kernel_2d
 from particle_methods.blob.mollifiers import mollifier
-from particle_methods.blob.pair_sums import FMM_MIN_PARTICLES, _newtonian_2d_forces, pair_sums
+from particle_methods.blob.pair_sums import FMM_MIN_PARTICLES, newtonian_2d_forces, pair_sums
 from particle_methods.blob.solver import integrate_particles, setup_2d
 from particle_methods.blob.tile_sums import row_share
 
@@ -126,10 +126,10 @@ def near_field_per_pair():
     for inverse_h in (160, 320, 560):
         points, _, masses, kernel, _ = setup_2d("regular", "newtonian", 1.0 / inverse_h, method="blob", q=0.9)
         _, coefficients, widths, _, _ = kernel.arrays()
-        _, pairs, arguments = newtonian_fmm._near_field(points, masses, coefficients, widths)
-        newtonian_fmm._near_sums(arguments, 1)  # compiled (or loaded from the cache) and warm
+        _, pairs, arguments = newtonian_fmm.near_field(points, masses, coefficients, widths)
+        newtonian_fmm.near_sums(arguments, 1)  # compiled (or loaded from the cache) and warm
         start = time.thread_time()
-        newtonian_fmm._near_sums(arguments, 1)
+        newtonian_fmm.near_sums(arguments, 1)
         cpu = time.thread_time() - start
         print(f"near field, 1/h = {inverse_h}, N = {points.shape[0]}: {pairs:.3g} pairs in {cpu:.2f} s of CPU, "
               f"{1e9 * cpu / pairs:.1f} ns per pair ({load()})", flush=True)
@@ -142,7 +142,7 @@ _TILE = 256
 @numba.njit(parallel=True)
 def direct_targets(targets, x, y, masses, constants):
     """v_i and div_i of the targets i over all N sources j (i included: grad K(0) X = 0 and Delta K(0) is the
-    self term), with the direct path's kernel formula (pair_sums._newtonian_2d_forces), tile by tile."""
+    self term), with the direct path's kernel formula (pair_sums.newtonian_2d_forces), tile by tile."""
     velocity = np.zeros((targets.size, 2))
     divergence = np.zeros(targets.size)
     for t in numba.prange(targets.size):
@@ -151,7 +151,7 @@ def direct_targets(targets, x, y, masses, constants):
         sx = sy = sd = 0.0
         for start in range(0, x.size, _TILE):
             stop = min(start + _TILE, x.size)
-            _newtonian_2d_forces(x[i], y[i], x, y, start, stop, constants, wx, wy, lap)
+            newtonian_2d_forces(x[i], y[i], x, y, start, stop, constants, wx, wy, lap)
             tx, ty, td = row_share(start, stop, masses, wx, wy, lap)
             sx += tx
             sy += ty

@@ -145,7 +145,7 @@ def test_near_field_is_bit_identical_on_one_two_and_three_threads(disk_points):
     """The near field's accumulators go to the threads as they come free (the FMM's thread joins once the FMM is
     done): on one, two or three threads, with or without a task beside, the same bits."""
     arguments = near_arguments(*disk_points, kernel_2d("newtonian", PSI, 0.02))
-    results = [newtonian_fmm._near_sums(arguments, threads, beside)[0]
+    results = [newtonian_fmm.near_sums(arguments, threads, beside)[0]
                for threads, beside in ((1, lambda: None), (2, lambda: time.sleep(0.01)), (3, lambda: None))]
     for other in results[1:]:
         for one, two in zip(results[0], other):

@@ -202,16 +202,16 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
         div[c, i] -= sd + mi * self_term
 
 
-def _near_sums(arguments, threads, beside=lambda: None):
+def near_sums(arguments, threads, beside=lambda: None):
     """Gaussian share of grad K_delta and the divergence, for the points sorted by cell key of ``arguments``
-    (:func:`_near_field`): v_i = sum_j m_j sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j),
+    (:func:`near_field`): v_i = sum_j m_j sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j),
     div_i = -sum_j m_j sum_k l_k e^{-a_k r^2} over the pairs with r^2 < cutoff2 (i = j included in div), each
     pair evaluated once, in ACCUMULATORS accumulators summed in a fixed order; also the smallest squared
     distance between two particles closer than the cut-off (inf when there is none). ``threads`` threads (this
     one and threads - 1 of a pool) take the accumulators one at a time as they come free; the first thread of
     the pool runs ``beside`` (the FMM) first, so that no core waits for the other half of the work. Each
     accumulator is summed by one thread in a fixed order: the same sums on any number of threads.
-    Returns ((v_x, v_y, div, closest), beside's result)."""
+    Returns ((v_x, v_y, div, closest), beside's result). It trusts its caller's checks."""
     n = arguments[0].size
     vx, vy, div = np.zeros((ACCUMULATORS, n)), np.zeros((ACCUMULATORS, n)), np.zeros((ACCUMULATORS, n))
     closest = np.full(ACCUMULATORS, np.inf)
@@ -258,9 +258,10 @@ def _pool(workers: int) -> concurrent.futures.ThreadPoolExecutor:
     return concurrent.futures.ThreadPoolExecutor(max_workers=workers, thread_name_prefix="fmm")
 
 
-def _near_field(positions, masses, coefficients, widths):
+def near_field(positions, masses, coefficients, widths):
     """(order, pairs, arguments) of the near field of checked inputs: the points' order by cell key, the pairs
-    :func:`_near_accumulate` examines (:func:`_near_pair_count`) and the arguments of :func:`_near_sums`."""
+    :func:`_near_accumulate` examines (:func:`_near_pair_count`) and the arguments of :func:`near_sums`. It trusts
+    its caller's checks (:func:`newtonian_sums` makes them)."""
     inverse = 1.0 / np.asarray(widths, dtype=np.float64) ** 2
     g_weights = np.asarray(coefficients, dtype=np.float64) / (2 * math.pi)
     l_weights = np.asarray(coefficients, dtype=np.float64) * inverse / math.pi
@@ -298,13 +299,13 @@ def newtonian_sums(positions, masses, coefficients, widths):
         velocity = finite_result("the velocities", (-total / (2 * math.pi)) * far_field(positions, masses),
                                  "the masses or coefficients are too large")
         return velocity, np.zeros(masses.size)
-    order, pairs, arguments = _near_field(positions, masses, coefficients, widths)
+    order, pairs, arguments = near_field(positions, masses, coefficients, widths)
     if pairs > MAX_NEAR_PAIRS:
         raise ValueError(f"positions put {pairs:.3g} pairs in the near field of widths up to {np.max(widths):.3g} "
                          f"(about N^2 / 2 when the N points lie within a few widths), more than MAX_NEAR_PAIRS = "
                          f"{MAX_NEAR_PAIRS:.0e}: the Gaussian terms would be summed over every one")
     threads = numba.get_num_threads() if masses.size >= PARALLEL_MIN_PARTICLES else 1
-    (vx, vy, div, closest), field = _near_sums(arguments, threads, lambda: far_field(positions, masses))
+    (vx, vy, div, closest), field = near_sums(arguments, threads, lambda: far_field(positions, masses))
     if math.sqrt(closest) < CLOSE_FRACTION * float(np.min(widths)):
         return None
     velocity = (-total / (2 * math.pi)) * field

@@ -102,12 +102,13 @@ _TILE = 256
 
 
 @njit
-def _newtonian_2d_forces(xi, yi, x, y, start, stop, constants, wx, wy, lap):
+def newtonian_2d_forces(xi, yi, x, y, start, stop, constants, wx, wy, lap):
     """Row i of the 2D Newtonian kernel: grad K(X_i - X_j) (as wx, wy) and Delta K(X_i - X_j) for
     start <= j < stop, into the tile buffers. Mollified (m = 4, two Gaussians (4.2)) when the first
     constant is 1, raw log|x|/(2 pi) (the particle method, Delta K = 0 away from 0) otherwise. No
     branch inside the loops, so LLVM vectorises them; at r = 0 (coincident particles) the gradient
-    is finite and irrelevant (it multiplies X_i - X_j = 0), so grad K(0) := 0 holds."""
+    is finite and irrelevant (it multiplies X_i - X_j = 0), so grad K(0) := 0 holds. It trusts its caller's
+    checks."""
     mollified, c0, c1, a0, a1, l0, l1 = constants
     if mollified == 1.0:
         for j in range(start, stop):
@@ -218,7 +219,7 @@ def _partners_share(start, stop, mi, wx, wy, lap, vx, vy, divergence):
 @njit
 def _tiled_2d_accumulate(c, x, y, masses, constants, terms, self_lap, vx, vy, divergence):
     """Accumulator c of a tiled 2D path: rows i = c mod 16 and their partners j > i, tile by tile. The
-    Newtonian kernel (:func:`_newtonian_2d_forces`, ``constants``) when ``terms`` has no kind, else the
+    Newtonian kernel (:func:`newtonian_2d_forces`, ``constants``) when ``terms`` has no kind, else the
     terms (kinds, coefficients, parameters, tables, steps) of :func:`_terms_2d_forces`."""
     n = x.size
     kinds, coefficients, parameters, tables, steps = terms
@@ -232,7 +233,7 @@ def _tiled_2d_accumulate(c, x, y, masses, constants, terms, self_lap, vx, vy, di
         for start in range(i + 1, n, _TILE):
             stop = min(start + _TILE, n)
             if kinds.size == 0:
-                _newtonian_2d_forces(x[i], y[i], x, y, start, stop, constants, wx, wy, lap)
+                newtonian_2d_forces(x[i], y[i], x, y, start, stop, constants, wx, wy, lap)
             else:
                 _terms_2d_forces(x[i], y[i], x, y, start, stop, kinds, coefficients, parameters, tables, steps,
                                  wx, wy, lap, buffer)
