@@ -199,6 +199,43 @@ def test_module_dependencies_follow_imports_transitively():
         module_dependencies(root / "scripts" / "sticky" / "scalar_data.py", [packages[0], root / "scripts" / "sticky"])
 
 
+def test_the_import_statements_are_found_at_any_depth():
+    """The dependency scan visits statements only; it finds every import that a walk of the whole tree finds, in
+    functions, classes, branches, handlers and match cases, and in every file of the repository."""
+    import ast
+    from pathlib import Path
+
+    from particle_replication.workflow import _import_statements
+
+    source = """
+import a
+def f():
+    if x:
+        from b import c
+    try:
+        import d
+    except E:
+        import e
+    finally:
+        import f
+class G:
+    def h(self):
+        with y:
+            import i
+match z:
+    case 1:
+        import j
+x = [k for k in range(3)]
+"""
+    tree = ast.parse(source)
+    assert sorted(node.lineno for node in _import_statements(tree)) == [2, 5, 7, 9, 11, 15, 18]
+    root = Path(__file__).resolve().parents[1]
+    for path in [*root.glob("scripts/**/*.py"), *root.glob("src/**/*.py")]:
+        tree = ast.parse(path.read_text())
+        walked = [n for n in ast.walk(tree) if isinstance(n, ast.Import | ast.ImportFrom)]
+        assert sorted(map(id, _import_statements(tree))) == sorted(map(id, walked)), path
+
+
 def test_an_interrupted_write_leaves_the_previous_result_intact(tmp_path, monkeypatch):
     from particle_replication import workflow
 

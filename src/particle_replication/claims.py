@@ -34,6 +34,7 @@ import yaml
 
 from particle_methods.validation import ParameterTypeError
 
+from .paths import read_yaml
 from .rates import Recorder, merge_rates
 from .workflow import load_results
 
@@ -405,7 +406,7 @@ def read_spreads(path, run: str) -> dict[str, Spread]:
     """The spreads recorded for a run (``full``, ``quick``) in a spreads file (``config/spreads.yaml``, written
     from a robustness run's ``results/robustness/spreads.yaml``): claim id -> :class:`Spread`; empty when the file
     has no section for the run."""
-    data = yaml.safe_load(Path(path).read_text()) or {}
+    data = read_yaml(path) or {}
     if not isinstance(data, dict):
         raise ValueError(f"{path}: a spreads file maps runs to {{claim id: {{distance, value}}}}")
     section = data.get(run) or {}
@@ -553,7 +554,7 @@ def read_verdicts(path, run: str = "full") -> dict[str, Expected]:
     (:data:`PASSING`): only an expected failure has to be written down; a listed pass guards against the
     claim vanishing (``verify`` reports it MISSING).
     """
-    data = yaml.safe_load(Path(path).read_text()) or {}
+    data = read_yaml(path) or {}
     if not isinstance(data, dict) or not {"pass", "fail"} & set(data):
         raise ValueError(f"{path}: expected verdicts need the keys 'pass' (a list) and 'fail' (id: {{cause, reason}})")
     sections = set(data) - {"pass", "fail"}
@@ -586,7 +587,7 @@ def read_changes(path, known=None) -> list[Change]:
     """The register of rules changed after a failing run (``config/changes.yaml``): a list ``changes``
     of entries with the keys of :class:`Change`. With ``known`` (claim ids), every claim an entry names
     must be among them, so that the register cannot name a claim that no longer exists."""
-    data = yaml.safe_load(Path(path).read_text()) or {}
+    data = read_yaml(path) or {}
     entries = data.get("changes") if isinstance(data, dict) else None
     if not isinstance(entries, list) or not entries:
         raise ValueError(f"{path}: expected a non-empty list 'changes'")
@@ -700,7 +701,7 @@ def read_values(path) -> tuple[dict[str, float], dict[str, str]]:
     ``exempt`` (id: one-line reason its value may change between builds: a wall-clock time, or a
     quantity at the level of rounding or of the integrator's tolerance).
     """
-    data = yaml.safe_load(Path(path).read_text()) or {}
+    data = read_yaml(path) or {}
     if not isinstance(data, dict) or set(data) != {"values", "exempt"}:
         raise ValueError(f"{path}: a reference of values needs the keys 'values' and 'exempt'")
     values, exempt = data["values"] or {}, data["exempt"] or {}

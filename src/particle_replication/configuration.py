@@ -26,9 +26,7 @@ import math
 from numbers import Real
 from pathlib import Path
 
-import yaml
-
-from .paths import REPOSITORY
+from .paths import REPOSITORY, read_yaml
 from .work_limits import check_work_limits, held, walk
 
 MAX_COUNT = 10**8
@@ -101,7 +99,7 @@ SCHEMA = REPOSITORY / "config" / "schema.yaml"
 def range_paths(schema_path: Path = SCHEMA) -> frozenset[tuple[str, ...]]:
     """The configuration paths (tuples of keys, ``*`` for any list index or free key) whose schema is one of
     :data:`RANGE_DEFINITIONS`: found by walking the schema and the definitions it refers to."""
-    schema = yaml.safe_load(Path(schema_path).read_text())
+    schema = read_yaml(schema_path)
     definitions = schema.get("$defs", {})
     found = set()
 
@@ -209,7 +207,7 @@ def _check_files(config: dict) -> None:
             raise ValueError(f"{key} = {value!r}: no such file in the repository {REPOSITORY}")
     verdicts, run = _get(config, "verdicts"), config.get("verdicts_run")
     if isinstance(verdicts, str) and isinstance(run, str) and run != "full":
-        sections = sorted(set(yaml.safe_load((REPOSITORY / verdicts).read_text()) or {}) - {"pass", "fail"})
+        sections = sorted(set(read_yaml(REPOSITORY / verdicts) or {}) - {"pass", "fail"})
         if run not in sections:
             raise ValueError(f"verdicts_run = {run!r}: {verdicts} has no section for this run (full, {sections})")
 
@@ -258,13 +256,13 @@ def differing_keys(config: dict, other: dict, prefix: str = "") -> list[str]:
 def repository_configuration(run: str, root: Path = REPOSITORY) -> dict:
     """The configuration of one of the repository's own runs: ``config/config.yaml`` for ``full``, with
     ``config/<run>.yaml`` laid over it for another (``quick``)."""
-    base = yaml.safe_load((root / "config" / "config.yaml").read_text())
+    base = read_yaml(root / "config" / "config.yaml")
     if run == "full":
         return base
     path = root / "config" / f"{run}.yaml"
     if not path.is_file():
         raise ValueError(f"verdicts_run {run!r} names no configuration of the repository ({path} does not exist)")
-    return overlay(base, yaml.safe_load(path.read_text()) or {})
+    return overlay(base, read_yaml(path) or {})
 
 
 def compared_run(config: dict, root: Path = REPOSITORY) -> tuple[str | None, list[str]]:

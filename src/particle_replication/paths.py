@@ -14,3 +14,13 @@ REPOSITORY = Path(__file__).resolve().parents[2]
 WORKDIR = Path(os.environ.get("PARTICLE_METHODS_WORKDIR", REPOSITORY)).resolve()
 RESULTS = WORKDIR / "results"
 FIGURES = WORKDIR / "figures"
+
+
+def read_yaml(path):
+    """The YAML file at ``path`` as Python data, through libyaml when PyYAML has it (the same safe loader and
+    resolver, about ten times faster: every Snakemake start reads the configuration, its schema and the expected
+    verdicts)."""
+    import yaml
+
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    return yaml.load(Path(path).read_text(), Loader=loader)

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from .claims import CAUSES, KINDS, counts, fragile, read_claims, read_verdicts
 from .environment import recorded_cpu
-from .paths import REPOSITORY
+from .paths import REPOSITORY, read_yaml
 from .pipeline_times import RunTimes, run_times
 
 START = ("<!-- results: generated from the full run by `python -m particle_replication.readme --write`; "
@@ -123,9 +123,8 @@ def main(argv=None) -> int:
     parser.add_argument("--root", default=".", help="the full run's root (results/ under it)")
     parser.add_argument("--write", action="store_true", help="write the block into README.md")
     args = parser.parse_args(argv)
-    import yaml
 
-    config = yaml.safe_load((REPOSITORY / "config" / "config.yaml").read_text())
+    config = read_yaml(REPOSITORY / "config" / "config.yaml")
     root = Path(args.root)
     report = root / "results" / "robustness.md"
     block = results_block(read_claims(root / "results" / "claims.csv"),

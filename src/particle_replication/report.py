@@ -37,8 +37,6 @@ import re
 import sys
 from pathlib import Path
 
-import yaml
-
 from .claims import (
     KINDS,
     cause_counts,
@@ -50,7 +48,7 @@ from .claims import (
     window_dependent,
 )
 from .environment import CPU_NOT_RECORDED, recorded_cpu
-from .paths import REPOSITORY
+from .paths import REPOSITORY, read_yaml
 from .rates import read_rates
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
@@ -303,7 +301,7 @@ def write_snippets(claims_csv, rates_json, versions_md, config, outdir, expected
     (by default the repository's ``paper/ms.tex`` and ``paper/supplement.tex``), whose figures placed by hand
     :func:`further_figures` leaves out."""
     if not isinstance(config, dict):
-        config = yaml.safe_load(Path(config).read_text())
+        config = read_yaml(config)
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     claims = read_claims(claims_csv)

@@ -34,6 +34,7 @@ from pathlib import Path
 import yaml
 
 from .claims import Spread, margin_of, read_claims
+from .paths import read_yaml
 
 
 def _numpy_cpu() -> tuple[list[str], dict]:
@@ -220,9 +221,9 @@ def write_spreads(path, run: str, spread: dict[str, Spread]) -> None:
 def record(source, target) -> None:
     """Copy the sections of a robustness run's spreads file into the committed one (``config/spreads.yaml``),
     replacing those runs' sections and keeping the others."""
-    new = yaml.safe_load(Path(source).read_text()) or {}
+    new = read_yaml(source) or {}
     target = Path(target)
-    old = yaml.safe_load(target.read_text()) if target.exists() else {}
+    old = read_yaml(target) if target.exists() else {}
     header = ("# The spread of every claim's distance from its threshold, and of its measured value, over the\n"
               "# variants of the robustness run (snakemake --cores 2 robustness; docs/robustness.md), per run.\n"
               "# Written by `python -m particle_replication.robustness record <root>/results/robustness/spreads.yaml`\n"

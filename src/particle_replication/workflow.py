@@ -370,11 +370,30 @@ def _direct_dependencies(path: Path, stamp, dirs: tuple[Path, ...]) -> tuple[Pat
     inside = any(path.is_relative_to(d) for d in dirs)
     here = path.relative_to(root).with_suffix("").parts if inside else ()
     files = []
-    for node in ast.walk(tree):
+    for node in _import_statements(tree):
         for parts, names in _imported(node, here):
             if parts and parts[0] in packages:
                 files.extend(_module_files(root, parts, names))
     return tuple(files)
+
+
+#: The fields of a statement that hold statements (bodies of functions, classes, branches, loops, handlers, cases).
+_BODIES = ("body", "orelse", "finalbody", "handlers", "cases")
+
+
+def _import_statements(tree: ast.AST):
+    """The import statements of a module at any depth (inside functions, classes, branches), found by visiting
+    statements only: imports are statements, and skipping the expressions visits a tenth of the nodes of
+    ``ast.walk``."""
+    pending = [tree]
+    while pending:
+        node = pending.pop()
+        if isinstance(node, ast.Import | ast.ImportFrom):
+            yield node
+        for field in _BODIES:
+            children = getattr(node, field, None)
+            if isinstance(children, list):
+                pending.extend(children)
 
 
 def code_inputs(script, package_dirs) -> list[str]:

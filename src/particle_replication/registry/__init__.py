@@ -55,11 +55,9 @@ def figure_map(config=None) -> str:
     A2, ... for ours) and its file's name, what it shows, the rules that compute its data (with their scripts)
     and the rule that draws it, as a Markdown table."""
     if config is None:
-        import yaml
+        from ..paths import REPOSITORY, read_yaml
 
-        from ..paths import REPOSITORY
-
-        config = yaml.safe_load((REPOSITORY / "config" / "config.yaml").read_text())
+        config = read_yaml(REPOSITORY / "config" / "config.yaml")
     entries = {entry.path: entry for entry in RESULTS}
     rows = ["| paper | figure | shows | data rule (script) | plot rule |", "|---|---|---|---|---|"]
     for paper in PAPERS.values():
