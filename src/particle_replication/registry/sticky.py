@@ -92,6 +92,10 @@ LIMIT_SETTINGS = ("t", "domain", "cfl", "limit_n", "reference_cells", "upwind_re
 COST_SETTINGS = ("t", "domain", "cfl", "repeats", "tspd_n", "exact_n", "upwind_cells", "scalar")
 
 
+#: The p-system's two cases of section 5.2.2 (config ``sticky.psystem``), each with jobs of its own.
+PSYSTEM_CASES = ("rarefaction", "shocks")
+
+
 def _beyond(s, keys):
     return {key: s["beyond"][key] for key in keys}
 
@@ -101,7 +105,7 @@ def _system(s):
 
 
 def _cases(s):
-    return {case: s["psystem"][case] for case in ("rarefaction", "shocks")}
+    return {case: s["psystem"][case] for case in PSYSTEM_CASES}
 
 
 def _scalar_result(name):
@@ -251,7 +255,7 @@ RESULTS = (
         Job(
             "beyond the paper: the exact MSPD against conservative and upwind finite volumes (untimed)",
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, LIMIT_SETTINGS)},
-            inputs={case: f"results/sticky/beyond_upwind_{case}.npz" for case in ("rarefaction", "shocks")},
+            inputs={case: f"results/sticky/beyond_upwind_{case}.npz" for case in PSYSTEM_CASES},
         ),
     ),
     *(Result(
@@ -263,7 +267,7 @@ RESULTS = (
             lambda s, case=case: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
                                   "cfg": _beyond(s, ("t", "domain", "cfl", "upwind_reference_cells"))},
         ),
-    ) for case in ("rarefaction", "shocks")),
+    ) for case in PSYSTEM_CASES),
     *(Result(
         f"results/sticky/beyond_reference_{case}.npz",
         "beyond_reference.py",
@@ -273,7 +277,7 @@ RESULTS = (
             lambda s, case=case: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
                                   "cfg": _beyond(s, ("t", "reference_n"))},
         ),
-    ) for case in ("rarefaction", "shocks")),
+    ) for case in PSYSTEM_CASES),
     Result(
         "results/sticky/beyond.npz",
         "beyond_data.py",
@@ -302,7 +306,7 @@ RESULTS = (
             "beyond the paper: the cost study (timed runs, alone on the cores), merged with the limits",
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, COST_SETTINGS)},
             inputs={"limits": "results/sticky/beyond_limits.npz",
-                    **{case: f"results/sticky/beyond_reference_{case}.npz" for case in ("rarefaction", "shocks")}},
+                    **{case: f"results/sticky/beyond_reference_{case}.npz" for case in PSYSTEM_CASES}},
             threads="all",
         ),
     ),
