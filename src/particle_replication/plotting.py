@@ -64,12 +64,12 @@ def legible(fig) -> list[str]:
     rc parameter cannot print smaller. The figure prints PRINTED_WIDTH wide as saved, that is with its tight
     bounding box, which a legend or a label outside the axes makes wider than the figure: the floors follow that
     width, measured by drawing the figure, again after raising texts (which can widen it), at most three times.
-    Returns the texts raised."""
+    The figure is left drawn at its final sizes: its layout is solved for them. Returns the texts raised."""
     from matplotlib.text import Text
 
     raised = []
+    fig.draw_without_rendering()
     for _ in range(3):
-        fig.draw_without_rendering()
         scale = max(fig.get_figwidth(), fig.get_tightbbox().width) / PRINTED_WIDTH
         now = []
         for text in fig.findobj(Text):
@@ -83,6 +83,7 @@ def legible(fig) -> list[str]:
         if not now:
             break
         raised += now
+        fig.draw_without_rendering()  # the layout with the raised sizes
     return raised
 
 
@@ -146,10 +147,13 @@ def save_figure(fig, pdf_path, png_path=None) -> None:
                 if type(formatter) is LogFormatterSciNotation:
                     set_formatter(UnicodePowers(formatter))
     legible(fig)
-    fig.savefig(pdf_path)
-    # The layout is fixed by the first save: the second one reuses it instead of solving it again.
+    # legible's last draw solved the layout at the final sizes: both saves keep it and crop to the bounding box it
+    # gives (with savefig.pad_inches, as savefig's "tight" pads it), so neither draws the figure once more to solve
+    # the layout and measure the box (two of a plot job's six draws).
+    box = fig.get_tightbbox().padded(plt.rcParams["savefig.pad_inches"])
     fig.set_layout_engine("none")
-    fig.savefig(png_path)
+    fig.savefig(pdf_path, bbox_inches=box)
+    fig.savefig(png_path, bbox_inches=box)
     plt.close(fig)
 
 
