@@ -199,6 +199,68 @@ def test_module_dependencies_follow_imports_transitively():
         module_dependencies(root / "scripts" / "sticky" / "scalar_data.py", [packages[0], root / "scripts" / "sticky"])
 
 
+def _scan_tree(root):
+    """A checkout of two packages side by side and a script importing from both."""
+    for name, text in {"src/alpha/__init__.py": "", "src/alpha/core.py": "from . import helpers\n",
+                       "src/alpha/helpers.py": "", "src/beta/__init__.py": "", "src/beta/use.py": "import alpha.core\n",
+                       "scripts/job.py": "from beta import use\n"}.items():
+        (root / name).parent.mkdir(parents=True, exist_ok=True)
+        (root / name).write_text(text)
+    return [root / "src" / "alpha", root / "src" / "beta"]
+
+
+def _new_process(workflow):
+    """What a new Snakemake start sees: no scan of this process kept, the record on disk read anew."""
+    workflow._scan_cache.cache_clear()
+    workflow._direct_dependencies.cache_clear()
+
+
+def test_the_import_scan_is_kept_between_starts_and_redone_where_a_file_changed(tmp_path, monkeypatch):
+    """A Snakemake start reads the imports found by the last one (SCAN_CACHE) and parses only the files changed
+    since; a new module file, or a record that cannot be read, makes it scan anew, with the same result."""
+    import ast
+    import os
+
+    from particle_replication import workflow
+
+    packages = _scan_tree(tmp_path)
+    script = tmp_path / "scripts" / "job.py"
+    expected = [str((tmp_path / f).resolve()) for f in ("src/alpha/core.py", "src/alpha/helpers.py",
+                                                         "src/beta/use.py")]
+    assert workflow.module_dependencies(script, packages) == expected
+    workflow._scan_cache(tuple(p.resolve() for p in packages)).save()
+    assert (tmp_path / workflow.SCAN_CACHE).is_file()
+
+    _new_process(workflow)
+    parse = ast.parse
+    monkeypatch.setattr(ast, "parse", lambda *a, **k: pytest.fail("parsed a file the record holds"))
+    assert workflow.module_dependencies(script, packages) == expected
+
+    # A changed file (time and size) is parsed again, and only it.
+    parsed = []
+    monkeypatch.setattr(ast, "parse", lambda source, filename, **k: parsed.append(filename) or parse(source, filename))
+    _new_process(workflow)
+    script.write_text("from beta import use\nimport alpha.helpers\n")
+    os.utime(script, ns=(1, 1))
+    assert workflow.module_dependencies(script, packages) == expected
+    assert parsed == [str(script.resolve())]
+    (tmp_path / "src" / "alpha" / "helpers.py").write_text("from . import extra\n")
+    os.utime(tmp_path / "src" / "alpha" / "helpers.py", ns=(2, 2))
+    (tmp_path / "src" / "alpha" / "extra.py").write_text("")  # a new module: the record is dropped
+    _new_process(workflow)
+    parsed.clear()
+    extra = str(tmp_path.resolve() / "src" / "alpha" / "extra.py")
+    assert workflow.module_dependencies(script, packages) == sorted([*expected, extra])
+    assert len(parsed) == 5  # every file of the scan
+    workflow._scan_cache(tuple(p.resolve() for p in packages)).save()
+
+    # A damaged record is ignored.
+    (tmp_path / workflow.SCAN_CACHE).write_text("{not json")
+    _new_process(workflow)
+    parsed.clear()
+    assert len(workflow.module_dependencies(script, packages)) == 4 and len(parsed) == 5
+
+
 def test_the_import_statements_are_found_at_any_depth():
     """The dependency scan visits statements only; it finds every import that a walk of the whole tree finds, in
     functions, classes, branches, handlers and match cases, and in every file of the repository."""
