@@ -26,6 +26,7 @@ from particle_replication.plotting import (
     ("(b) dt = 0.0001, eps = h", r"(b) $\Delta t  = 0.0001$, $\varepsilon  = h$"),
     ("a title without formulas", "a title without formulas"),
     ("$already$ in mathtext", "$already$ in mathtext"),
+    ("W = |x|^1.5/1.5:\ncollapse at t = 2", "$W = |x|^{1.5}/1.5$:\ncollapse at $t = 2$"),
 ])
 def test_mathtext_puts_the_formulas_of_plain_text_in_mathtext(text, expected):
     assert mathtext(text) == expected

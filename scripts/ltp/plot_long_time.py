@@ -20,7 +20,7 @@ def run(inputs, p, output):
         g = shrink_rate_inverse(times, sizes)
         slopes, collapse = collapse_times(times, sizes, windows)
         end = f"collapse at t = {collapse[-1]:.3g}" if math.isfinite(collapse[-1]) else "no collapse"
-        ax.plot(times, g, color=f"C{i}", label=f"W = {label}: {end}")
+        ax.plot(times, g, color=f"C{i}", label=f"W = {label}:\n{end}")  # two lines: the legend fits the panel
     ax.axhline(0, color="0.5", lw=0.8)
     ax.set(xlabel="t", ylabel="g = -1 / (d log h_min / dt)")
     ax.legend(fontsize="small")
@@ -33,10 +33,10 @@ def run(inputs, p, output):
     for i, (label, times, widths, masses) in enumerate(series):
         axes[0, 1].semilogy(times, widths.max(axis=1), color=f"C{i}", label=label)
         axes[1, 0].plot(times, masses.sum(axis=1), color=f"C{i}", label=label)
-    axes[0, 1].set(xlabel="t", ylabel=f"width holding {q['fraction']:g} of a side's mass")
+    axes[0, 1].set(xlabel="t", ylabel=f"width holding {q['fraction']:g}\nof a side's mass")
     axes[0, 1].legend(fontsize="small")
     label_panel(axes[0, 1], "(b) Figures 6-7: concentration widths")
-    axes[1, 0].set(xlabel="t", ylabel=f"mass within {q['radius']:g} of the two peaks", ylim=(0, 1.05))
+    axes[1, 0].set(xlabel="t", ylabel=f"mass within {q['radius']:g}\nof the two peaks", ylim=(0, 1.05))
     axes[1, 0].legend(fontsize="small")
     label_panel(axes[1, 0], "(c) Figures 6-7: mass near the peaks")
     ax = axes[1, 1]
@@ -50,7 +50,7 @@ def run(inputs, p, output):
         if math.isfinite(steady):
             ax.axvline(steady, color=colour, ls="--", lw=1, label=f"{method.upper()} steady from t = {steady:g}")
     ax.axhline(float(p["fig8"]["oscillation"]), color="0.4", lw=0.8, label="oscillation threshold")
-    ax.set(xlabel="t", ylabel="TV / (2 (max left + max right)) - 1")
+    ax.set(xlabel="t", ylabel="TV / (2 (max left\n+ max right)) - 1")
     spread.set(ylabel="max x_k - min x_k", ylim=(0, None))
     lines = ax.get_legend_handles_labels()
     more = spread.get_legend_handles_labels()

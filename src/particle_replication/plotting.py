@@ -251,11 +251,13 @@ def mathtext(text: str) -> str:
     """Plain-text title such as ``"m = 4, delta = h^0.9, K = log|x|/(2 pi)"`` in matplotlib mathtext:
     each formula (a run of tokens with an operator, '|', '^' or a Greek word) goes between '$'.
 
-    Text that already holds a '$' is returned unchanged; text mathtext cannot parse comes back
-    as plain text (with '$' escaped), so a title never breaks a figure.
+    Text that already holds a '$' is returned unchanged; text of several lines is converted line by line;
+    text mathtext cannot parse comes back as plain text (with '$' escaped), so a title never breaks a figure.
     """
     if "$" in text:
         return text
+    if "\n" in text:  # line by line: a formula never spans lines
+        return "\n".join(map(mathtext, text.split("\n")))
     pieces, run, strong, depth = [], [], False, 0
 
     def close():
