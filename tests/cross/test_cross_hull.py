@@ -114,6 +114,20 @@ def test_bad_bumps_and_times_are_refused():
 
 # --- the compiled kernels (issue 47) against the NumPy formulas, bit for bit -----------------------------------------
 
+#: NumPy raises float arrays to integer powers by libm's pow here, and the kernels do: bit for bit. On AVX-512 CPUs
+#: NumPy's power is SVML's, whose last bits may differ: there the kernels are compared with the NumPy formulas to
+#: rounding only.
+_SAMPLE = np.random.default_rng(47).random(20000)
+NUMPY_POW_IS_LIBM = all(np.array_equal(_SAMPLE**k, [math.pow(v, k) for v in _SAMPLE]) for k in (3, 21))
+
+
+def _assert_same(actual, expected):
+    if NUMPY_POW_IS_LIBM:
+        np.testing.assert_array_equal(actual, expected)
+    else:
+        np.testing.assert_allclose(actual, expected, rtol=1e-13, atol=1e-15)
+
+
 KERNEL_DATA = {"two_bumps": TWO_BUMPS, "skewed_bumps": SKEWED_BUMPS, "smooth20": bump_data("smooth20"),
                "indicator": bump_data("indicator"),  # powers 0 and 1: NumPy's x**0 and x**1 by pow
                "powers_1_3": BumpData("powers 1 and 3", (Bump(0.7, -0.5, 0.3, 1, right_radius=0.2),  # x**2: a product
@@ -153,9 +167,9 @@ def test_compiled_bump_integrals_and_density_are_the_numpy_ones(name):
         w, moment = np.empty(a.size), np.empty(a.size)
         _in_bump_kernel(data._table, data._powers, index, a, w, moment)
         expected = data.in_bump(index, a)
-        np.testing.assert_array_equal(w, expected[0])
-        np.testing.assert_array_equal(moment, expected[1])
-        np.testing.assert_array_equal([_density_at(data._table, data._powers, index, v) for v in a], bump.density(a))
+        _assert_same(w, expected[0])
+        _assert_same(moment, expected[1])
+        _assert_same([_density_at(data._table, data._powers, index, v) for v in a], bump.density(a))
 
 
 @pytest.mark.parametrize("name", KERNEL_DATA)
@@ -166,12 +180,12 @@ def test_compiled_roots_are_monotone_roots(name):
         low, high = bump.left_end, bump.right_end
         levels = np.linspace(data.in_bump(index, low)[0], data.in_bump(index, high)[0], 203)[1:-1]
         ends = np.full(levels.size, low), np.full(levels.size, high)
-        np.testing.assert_array_equal(
+        _assert_same(
             _root_kernel(data._table, data._powers, index, t, data.mass, False, levels, *ends),
             monotone_root(lambda s, index=index: data.in_bump(index, s)[0], bump.density, levels, *ends))
         flights = low + t * (0.5 * data.mass - data.in_bump(index, np.array([low, high]))[0]) + [0.0, high - low]
         x = np.linspace(*flights, 203)[1:-1]
-        np.testing.assert_array_equal(
+        _assert_same(
             _root_kernel(data._table, data._powers, index, t, data.mass, True, x, *ends),
             monotone_root(lambda s, index=index: s + t * (0.5 * data.mass - data.in_bump(index, s)[0]),
                           lambda s, bump=bump: 1.0 - t * bump.density(s), x, *ends))
@@ -187,8 +201,10 @@ def test_compiled_hull_maximum_is_the_numpy_one(name, share):
                    solution.kinks)
     value, level = solution._best(x)
     expected = _numpy_best(solution, x)
-    np.testing.assert_array_equal(value, expected[0])
-    np.testing.assert_array_equal(level, expected[1])
+    _assert_same(value, expected[0])
+    # (At an aggregate two pieces tie: where NumPy's last bits differ from libm's, the tie may break the other way.)
+    off = NUMPY_POW_IS_LIBM | np.all(np.abs(x[:, None] - solution.aggregates[0]) > 1e-9, axis=1)
+    _assert_same(level[off], expected[1][off])
 
 
 # --- skewed bumps (issue 44) ----------------------------------------------------------------------------------------

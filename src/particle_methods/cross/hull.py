@@ -15,7 +15,8 @@ Along a bump's levels, parametrised by the initial position a (w = F_0(a)), Y_t(
 has the slope 1 - t rho0(a): it increases except where t rho0 > 1, an interval around the top of each
 bump (closed form for c (1 - s^2)^p). A maximiser lies on a piece where Y_t increases, at the root of
 Y_t = x (or at a piece's end): the maximum over the few pieces is exact up to one monotone root per piece
-(:func:`~particle_methods.cross.profiles.monotone_root`). Aggregates (Dirac masses) are the jumps of F: the
+(the safeguarded Newton iteration of :func:`~particle_methods.cross.profiles.monotone_root`, compiled with the free
+flight and the maximum into one kernel). Aggregates (Dirac masses) are the jumps of F: the
 x at which the best piece of a higher level overtakes the best of the lower ones, found by Brent's
 method on x (the difference of the two maxima grows with x at the rate of the jump in w), with the masses
 and levels on either side. Everything is exact up to rounding: F_0 and int s rho0 are polynomials, evaluated by the
@@ -61,8 +62,9 @@ POSITION_STEPS = 80
 MAX_TIME = 1e6
 #: Largest work of one call, in squared bump counts summed over the solutions it builds: a solution with b bumps
 #: finds each of its up to 2 b - 1 boundaries by Brent's method over the up to 2 b pieces, so it costs about b^2
-#: units of 10 to 25 ms (two_bumps: 30 to 95 ms; 20 bumps 7 s), and 2000 units take about a minute at most. The
-#: pipeline's calls build one solution of two bumps at a time.
+#: units of 0.04 to 0.2 ms with the compiled kernels (two_bumps: 1 to 2 ms; 20 bumps 20 to 45 ms; 40 bumps 70 to
+#: 160 ms), and 2000 units take well under a second (a minute before the kernels of issue 47, when the limit was
+#: set). The pipeline's calls build one solution of two bumps at a time.
 MAX_HULL_WORK = 2000
 #: A jump of F smaller than this share of the mass is no aggregate (two pieces that meet continuously).
 JUMP_SHARE = 1e-13
@@ -188,7 +190,8 @@ class BumpData:
         object.__setattr__(self, "_before", np.concatenate(([0.0], np.cumsum(masses)[:-1])))
         object.__setattr__(self, "_moments_before", np.concatenate(
             ([0.0], np.cumsum([b._left_integrals(b.right_end)[1] for b in self.bumps])[:-1])))
-        # What the compiled kernels need of each bump, one row per bump (columns: see _TABLE_COLUMNS), and the powers.
+        # What the compiled kernels need of each bump, one row per bump (the columns _HEIGHT to _MOMENTS_BEFORE), and
+        # the powers.
         object.__setattr__(self, "_table", np.array(
             [[b.height, b.centre, b.radius, b.right_radius, b._unit_mass, float(b._unit_moment_at_peak), before,
               moment] for b, before, moment in zip(self.bumps, self._before, self._moments_before)]))
@@ -303,7 +306,10 @@ _HEIGHT, _CENTRE, _RADIUS, _RIGHT_RADIUS, _UNIT_MASS, _UNIT_MOMENT_AT_PEAK, _BEF
 
 @njit
 def _power(base, exponent):
-    """base ** exponent as NumPy raises a float array to an integer: a square by one product, else libm's pow."""
+    """base ** exponent as NumPy raises a float array to an integer: a square by one product, else libm's pow (with
+    a float exponent: numba's pow of an integer exponent multiplies, which differs in the last bits). On AVX-512 CPUs
+    NumPy's power is SVML's, whose last bits may differ from libm's (tests/cross/test_cross_hull.py then compares the
+    kernels with the NumPy formulas to rounding)."""
     return base * base if exponent == 2 else math.pow(base, float(exponent))
 
 
@@ -347,7 +353,9 @@ def _density_at(table, powers, index, a):
 @njit
 def _root_kernel(table, powers, index, t, mass, flight, target, low, high):
     """monotone_root's rtsafe iteration, point by point, for bump ``index``: the a in [low, high] with Y_t(a) =
-    target (``flight``; Y_t = a + t (M/2 - F_0(a)), slope 1 - t rho0) or with F_0(a) = target (slope rho0)."""
+    target (``flight``; the free flight Y_t = a + t (M/2 - F_0(a)) of the sticky paper's section 2, slope
+    1 - t rho0) or with F_0(a) = target (slope rho0). The same steps, bracket updates and stopping rule (two ulps),
+    in the same operations; the bracket is the caller's (here, a piece where the function increases)."""
     x = 0.5 * low + 0.5 * high
     before_last = 0.5 * high - 0.5 * low
     last = high - low
