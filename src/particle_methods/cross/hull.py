@@ -314,6 +314,27 @@ def _power(base, exponent):
 
 
 @njit
+def _flight(a, w, t, mass):
+    """The free flight Y_t = a + t (M/2 - w) of the level w from a (module docstring)."""
+    return a + t * (0.5 * mass - w)
+
+
+@njit
+def _psi(w, moment, t, mass):
+    """Psi_t(w) = int_0^w Y_t = int_{-inf}^a s rho0 + t (M w/2 - w^2/2) (module docstring)."""
+    return moment + t * (0.5 * mass * w - 0.5 * w * w)
+
+
+@njit
+def _levels_kernel(table, powers, index, t, mass, a, w, psi, y):
+    """HullSolution._levels: (w, Psi_t(w), Y_t(w)) at the positions a of bump ``index``, into w, psi and y."""
+    _in_bump_kernel(table, powers, index, a, w, psi)
+    for j in range(a.size):
+        psi[j] = _psi(w[j], psi[j], t, mass)
+        y[j] = _flight(a[j], w[j], t, mass)
+
+
+@njit
 def _scaled_at(table, index, a):
     """Bump._scaled at one position a."""
     offset = a - table[index, _CENTRE]
@@ -374,7 +395,7 @@ def _root_kernel(table, powers, index, t, mass, flight, target, low, high):
         for k in range(count):
             i, xa = active[k], points[k]
             if flight:
-                value = xa + t * (0.5 * mass - w[k]) - target[i]
+                value = _flight(xa, w[k], t, mass) - target[i]
                 slope = 1.0 - t * _density_at(table, powers, index, xa)
             else:
                 value = w[k] - target[i]
@@ -410,8 +431,7 @@ def _best_kernel(table, powers, bumps, starts, ends, t, mass, x, value, level):
     for p in range(bumps.size):
         index, a0, a1 = bumps[p], starts[p], ends[p]
         _in_bump_kernel(table, powers, index, np.array([a0, a1]), end_levels, end_moments)
-        y0 = a0 + t * (0.5 * mass - end_levels[0])
-        y1 = a1 + t * (0.5 * mass - end_levels[1])
+        y0, y1 = _flight(a0, end_levels[0], t, mass), _flight(a1, end_levels[1], t, mass)
         inside = np.empty(x.size, dtype=np.int64)
         count = 0
         for j in range(x.size):
@@ -428,8 +448,7 @@ def _best_kernel(table, powers, bumps, starts, ends, t, mass, x, value, level):
                 a[inside[k]] = roots[k]
         _in_bump_kernel(table, powers, index, a, w, moment)
         for j in range(x.size):
-            psi = moment[j] + t * (0.5 * mass * w[j] - 0.5 * w[j] * w[j])
-            v = x[j] * w[j] - psi
+            v = x[j] * w[j] - _psi(w[j], moment[j], t, mass)
             if v > value[j] or (v == value[j] and w[j] > level[j]):
                 value[j], level[j] = v, w[j]
 
@@ -478,10 +497,9 @@ class HullSolution:
 
     def _levels(self, piece, a):
         """(w, Psi_t(w), Y_t(w)) at the positions a of a piece."""
-        w, moment = np.empty(a.size), np.empty(a.size)
-        _in_bump_kernel(self.data._table, self.data._powers, piece.bump, a, w, moment)
-        t, mass = self.t, self.mass
-        return w, moment + t * (0.5 * mass * w - 0.5 * w * w), a + t * (0.5 * mass - w)
+        w, psi, y = np.empty(a.size), np.empty(a.size), np.empty(a.size)
+        _levels_kernel(self.data._table, self.data._powers, piece.bump, self.t, self.mass, a, w, psi, y)
+        return w, psi, y
 
     def _best(self, x, start=0, stop=None):
         """(value, largest maximiser w) of x w - Psi_t(w) over the pieces start to stop (ties: the larger w): on each
