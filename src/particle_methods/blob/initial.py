@@ -23,8 +23,9 @@ _TILE = 256
 
 
 @njit
-def _power_mass(x, power, out):
-    """int_0^x (1 - s^2)^power ds at each x in [-1, 1], by the recurrence of Data1D.mass_from_origin."""
+def power_mass_kernel(x, power, out):
+    """int_0^x (1 - s^2)^power ds at each x in [-1, 1], by the recurrence of Data1D.mass_from_origin, into out (also
+    the bump kernels of particle_methods.cross.hull). It trusts its caller's checks."""
     factor = np.empty(_TILE)
     base = np.empty(_TILE)
     for start in range(0, x.size, _TILE):
@@ -84,7 +85,7 @@ class Data1D:
     def _mass_from_origin(self, x):
         x = np.clip(x, -1.0, 1.0)
         out = np.empty(x.size)
-        _power_mass(np.ascontiguousarray(x).ravel(), self.power, out)
+        power_mass_kernel(np.ascontiguousarray(x).ravel(), self.power, out)
         return out.reshape(x.shape)
 
     def moment_from_left(self, x):

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from ..blob.initial import Data1D, _power_mass
+from ..blob.initial import Data1D, power_mass_kernel
 from ..jit import njit
 from ..validation import (
     ParameterTypeError,
@@ -343,13 +343,13 @@ def _scaled_at(table, index, a):
 
 @njit
 def _in_bump_kernel(table, powers, index, a, w, moment):
-    """BumpData._in_bump (Bump._left_integrals, the unit bump's mass m_1 by _power_mass) at the positions a, into w
-    and moment."""
+    """BumpData._in_bump (Bump._left_integrals, the unit bump's mass m_1 by power_mass_kernel) at the positions a,
+    into w and moment."""
     s = np.empty(a.size)
     for j in range(a.size):
         s[j] = min(max(_scaled_at(table, index, a[j]), -1.0), 1.0)
     unit_mass = np.empty(a.size)
-    _power_mass(s, powers[index], unit_mass)
+    power_mass_kernel(s, powers[index], unit_mass)
     height, centre, radius = table[index, _HEIGHT], table[index, _CENTRE], table[index, _RADIUS]
     scale = height * radius
     exponent = powers[index] + 1
