@@ -56,9 +56,10 @@ class Data1D:
         """rho0 at the points ``x`` (any shape)."""
         return self._density(finite_values("x", x))
 
-    # The unchecked versions, for float64 arrays of finite positions: the root iterations of
-    # particle_methods.cross.hull call them thousands of times on a few points, where the checks took a fifth of
-    # the time (issue 47). The same operations as the checked ones, so the same numbers.
+    # The unchecked versions, for float64 arrays of finite positions: the bumps of particle_methods.cross.hull call
+    # them on positions they have checked (their root iterations, compiled since, called them thousands of times on a
+    # few points, where the checks took a fifth of the time: issue 47). The same operations as the checked ones, so
+    # the same numbers.
 
     def _density(self, x):
         return np.where(np.abs(x) <= 1.0, np.clip(1.0 - x * x, 0.0, None) ** self.power, 0.0)
