@@ -12,7 +12,18 @@ from scipy.spatial import ConvexHull
 
 from particle_methods.cross import AggregationSolution, HullSolution, exact_mass_function, merger_time, methods
 from particle_methods.cross.distances import w1_atoms
-from particle_methods.cross.hull import SKEWED_BUMPS, TWO_BUMPS, Bump, BumpData, aggregate_paths
+from particle_methods.cross.hull import (
+    SKEWED_BUMPS,
+    TWO_BUMPS,
+    Bump,
+    BumpData,
+    _density_at,
+    _in_bump_kernel,
+    _root_kernel,
+    aggregate_paths,
+    bump_data,
+)
+from particle_methods.cross.profiles import monotone_root
 
 MASS_A, MASS_B = 0.64, 0.8 / 3.0  # 2 * 0.3 * 16/15 and 0.25 * 16/15
 MASS = MASS_A + MASS_B
@@ -98,6 +109,102 @@ def test_bad_bumps_and_times_are_refused():
         aggregate_paths("two_bumps", [])
     assert math.isfinite(HullSolution("two_bumps", 1e6).dirac_mass)
 
+
+
+
+# --- the compiled kernels (issue 47) against the NumPy formulas, bit for bit -----------------------------------------
+
+#: NumPy raises float arrays to integer powers by libm's pow here, and the kernels do: bit for bit. On AVX-512 CPUs
+#: NumPy's power is SVML's, whose last bits may differ: there the kernels are compared with the NumPy formulas to
+#: rounding only.
+_SAMPLE = np.random.default_rng(47).random(20000)
+NUMPY_POW_IS_LIBM = all(np.array_equal(_SAMPLE**k, [math.pow(v, k) for v in _SAMPLE]) for k in (3, 21))
+
+
+def _assert_same(actual, expected):
+    if NUMPY_POW_IS_LIBM:
+        np.testing.assert_array_equal(actual, expected)
+    else:
+        np.testing.assert_allclose(actual, expected, rtol=1e-13, atol=1e-15)
+
+
+KERNEL_DATA = {"two_bumps": TWO_BUMPS, "skewed_bumps": SKEWED_BUMPS, "smooth20": bump_data("smooth20"),
+               "indicator": bump_data("indicator"),  # powers 0 and 1: NumPy's x**0 and x**1 by pow
+               "powers_1_3": BumpData("powers 1 and 3", (Bump(0.7, -0.5, 0.3, 1, right_radius=0.2),  # x**2: a product
+                                                         Bump(1.5, 0.4, 0.25, 3, right_radius=0.5)))}
+
+
+def _numpy_best(solution, x):
+    """HullSolution._best as it was computed by NumPy before the kernels (monotone_root on the free flight of each
+    piece, the levels by BumpData.in_bump): the independent slow evaluation the kernel must reproduce to the bit."""
+    data, t, mass = solution.data, solution.t, solution.mass
+
+    def levels(index, a):
+        w, moment = data.in_bump(index, a)
+        return w, moment + t * (0.5 * mass * w - 0.5 * w * w), a + t * (0.5 * mass - w)
+
+    value, level = np.full(x.shape, -np.inf), np.zeros(x.shape)
+    for piece in solution._pieces:
+        bump = data.bumps[piece.bump]
+        y0, y1 = levels(piece.bump, np.array([piece.a0, piece.a1]))[2]
+        inside = (x > y0) & (x < y1)
+        a = np.where(x <= y0, piece.a0, piece.a1)
+        if np.any(inside):
+            a[inside] = monotone_root(lambda s, index=piece.bump: levels(index, s)[2],
+                                      lambda s, bump=bump: 1.0 - t * bump.density(s), x[inside], piece.a0, piece.a1)
+        w, psi, _ = levels(piece.bump, a)
+        v = x * w - psi
+        better = (v > value) | ((v == value) & (w > level))
+        value, level = np.where(better, v, value), np.where(better, w, level)
+    return value, level
+
+
+@pytest.mark.parametrize("name", KERNEL_DATA)
+def test_compiled_bump_integrals_and_density_are_the_numpy_ones(name):
+    data = KERNEL_DATA[name]
+    for index, bump in enumerate(data.bumps):
+        a = np.linspace(bump.left_end - 0.1, bump.right_end + 0.1, 1001)
+        w, moment = np.empty(a.size), np.empty(a.size)
+        _in_bump_kernel(data._table, data._powers, index, a, w, moment)
+        expected = data.in_bump(index, a)
+        _assert_same(w, expected[0])
+        _assert_same(moment, expected[1])
+        _assert_same([_density_at(data._table, data._powers, index, v) for v in a], bump.density(a))
+
+
+@pytest.mark.parametrize("name", KERNEL_DATA)
+def test_compiled_roots_are_monotone_roots(name):
+    data = KERNEL_DATA[name]
+    t = 0.8 / data.peak
+    for index, bump in enumerate(data.bumps):
+        low, high = bump.left_end, bump.right_end
+        levels = np.linspace(data.in_bump(index, low)[0], data.in_bump(index, high)[0], 203)[1:-1]
+        ends = np.full(levels.size, low), np.full(levels.size, high)
+        _assert_same(
+            _root_kernel(data._table, data._powers, index, t, data.mass, False, levels, *ends),
+            monotone_root(lambda s, index=index: data.in_bump(index, s)[0], bump.density, levels, *ends))
+        flights = low + t * (0.5 * data.mass - data.in_bump(index, np.array([low, high]))[0]) + [0.0, high - low]
+        x = np.linspace(*flights, 203)[1:-1]
+        _assert_same(
+            _root_kernel(data._table, data._powers, index, t, data.mass, True, x, *ends),
+            monotone_root(lambda s, index=index: s + t * (0.5 * data.mass - data.in_bump(index, s)[0]),
+                          lambda s, bump=bump: 1.0 - t * bump.density(s), x, *ends))
+
+
+@pytest.mark.parametrize("name", KERNEL_DATA)
+@pytest.mark.parametrize("share", [0.0, 0.9, 1.3, 2.5])  # times as shares of the last blow-up 1/min(height)
+def test_compiled_hull_maximum_is_the_numpy_one(name, share):
+    data = KERNEL_DATA[name]
+    solution = HullSolution(data, share / min(b.height for b in data.bumps))
+    low, high = data.support
+    x = np.union1d(np.linspace(low - solution.t * data.mass - 0.1, high + solution.t * data.mass + 0.1, 1501),
+                   solution.kinks)
+    value, level = solution._best(x)
+    expected = _numpy_best(solution, x)
+    _assert_same(value, expected[0])
+    # (At an aggregate two pieces tie: where NumPy's last bits differ from libm's, the tie may break the other way.)
+    off = NUMPY_POW_IS_LIBM | np.all(np.abs(x[:, None] - solution.aggregates[0]) > 1e-9, axis=1)
+    _assert_same(level[off], expected[1][off])
 
 
 # --- skewed bumps (issue 44) ----------------------------------------------------------------------------------------

@@ -23,8 +23,9 @@ _TILE = 256
 
 
 @njit
-def _power_mass(x, power, out):
-    """int_0^x (1 - s^2)^power ds at each x in [-1, 1], by the recurrence of Data1D.mass_from_origin."""
+def power_mass_kernel(x, power, out):
+    """int_0^x (1 - s^2)^power ds at each x in [-1, 1], by the recurrence of Data1D.mass_from_origin, into out (also
+    the bump kernels of particle_methods.cross.hull). It trusts its caller's checks."""
     factor = np.empty(_TILE)
     base = np.empty(_TILE)
     for start in range(0, x.size, _TILE):
@@ -55,9 +56,10 @@ class Data1D:
         """rho0 at the points ``x`` (any shape)."""
         return self._density(finite_values("x", x))
 
-    # The unchecked versions, for float64 arrays of finite positions: the root iterations of
-    # particle_methods.cross.hull call them thousands of times on a few points, where the checks took a fifth of
-    # the time (issue 47). The same operations as the checked ones, so the same numbers.
+    # The unchecked versions, for float64 arrays of finite positions: the bumps of particle_methods.cross.hull call
+    # them on positions they have checked (their root iterations, compiled since, called them thousands of times on a
+    # few points, where the checks took a fifth of the time: issue 47). The same operations as the checked ones, so
+    # the same numbers.
 
     def _density(self, x):
         return np.where(np.abs(x) <= 1.0, np.clip(1.0 - x * x, 0.0, None) ** self.power, 0.0)
@@ -84,7 +86,7 @@ class Data1D:
     def _mass_from_origin(self, x):
         x = np.clip(x, -1.0, 1.0)
         out = np.empty(x.size)
-        _power_mass(np.ascontiguousarray(x).ravel(), self.power, out)
+        power_mass_kernel(np.ascontiguousarray(x).ravel(), self.power, out)
         return out.reshape(x.shape)
 
     def moment_from_left(self, x):

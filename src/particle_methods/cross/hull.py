@@ -15,7 +15,8 @@ Along a bump's levels, parametrised by the initial position a (w = F_0(a)), Y_t(
 has the slope 1 - t rho0(a): it increases except where t rho0 > 1, an interval around the top of each
 bump (closed form for c (1 - s^2)^p). A maximiser lies on a piece where Y_t increases, at the root of
 Y_t = x (or at a piece's end): the maximum over the few pieces is exact up to one monotone root per piece
-(:func:`~particle_methods.cross.profiles.monotone_root`). Aggregates (Dirac masses) are the jumps of F: the
+(the safeguarded Newton iteration of :func:`~particle_methods.cross.profiles.monotone_root`, compiled with the free
+flight and the maximum into one kernel). Aggregates (Dirac masses) are the jumps of F: the
 x at which the best piece of a higher level overtakes the best of the lower ones, found by Brent's
 method on x (the difference of the two maxima grows with x at the rate of the jump in w), with the masses
 and levels on either side. Everything is exact up to rounding: F_0 and int s rho0 are polynomials, evaluated by the
@@ -39,7 +40,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from ..blob.initial import Data1D
+from ..blob.initial import Data1D, power_mass_kernel
+from ..jit import njit
 from ..validation import (
     ParameterTypeError,
     finite_number,
@@ -52,7 +54,7 @@ from ..validation import (
     one_of,
     positive,
 )
-from .profiles import limited, monotone_root
+from .profiles import MAX_ITERATIONS, limited
 
 #: Iterations of Brent's method allowed for an aggregate's position (it converges to rounding in about 10).
 POSITION_STEPS = 80
@@ -60,8 +62,9 @@ POSITION_STEPS = 80
 MAX_TIME = 1e6
 #: Largest work of one call, in squared bump counts summed over the solutions it builds: a solution with b bumps
 #: finds each of its up to 2 b - 1 boundaries by Brent's method over the up to 2 b pieces, so it costs about b^2
-#: units of 10 to 25 ms (two_bumps: 30 to 95 ms; 20 bumps 7 s), and 2000 units take about a minute at most. The
-#: pipeline's calls build one solution of two bumps at a time.
+#: units of 0.04 to 0.2 ms with the compiled kernels (two_bumps: 1 to 2 ms; 20 bumps 20 to 45 ms; 40 bumps 70 to
+#: 160 ms), and 2000 units take well under a second (a minute before the kernels of issue 47, when the limit was
+#: set). The pipeline's calls build one solution of two bumps at a time.
 MAX_HULL_WORK = 2000
 #: A jump of F smaller than this share of the mass is no aggregate (two pieces that meet continuously).
 JUMP_SHARE = 1e-13
@@ -187,6 +190,12 @@ class BumpData:
         object.__setattr__(self, "_before", np.concatenate(([0.0], np.cumsum(masses)[:-1])))
         object.__setattr__(self, "_moments_before", np.concatenate(
             ([0.0], np.cumsum([b._left_integrals(b.right_end)[1] for b in self.bumps])[:-1])))
+        # What the compiled kernels need of each bump, one row per bump (the columns _HEIGHT to _MOMENTS_BEFORE), and
+        # the powers.
+        object.__setattr__(self, "_table", np.array(
+            [[b.height, b.centre, b.radius, b.right_radius, b._unit_mass, float(b._unit_moment_at_peak), before,
+              moment] for b, before, moment in zip(self.bumps, self._before, self._moments_before)]))
+        object.__setattr__(self, "_powers", np.array([b.power for b in self.bumps], dtype=np.int64))
 
     @property
     def mass(self) -> float:
@@ -284,6 +293,166 @@ class _Piece:
     a1: float
 
 
+# --- compiled kernels -------------------------------------------------------------------------------
+# The root iterations of the hull called NumPy thousands of times on arrays of a few points (Brent's method on
+# 1-point arrays, the bisections of the W1 distances), where the time was the dispatch of each operation (issue 47).
+# These kernels compute the same numbers with the same floating-point operations, in the same order, point by
+# point: Bump._left_integrals, Bump._density, the free flight, monotone_root's rtsafe steps and the maximum over
+# the pieces (tests/cross/test_cross_hull.py compares them bit for bit with the NumPy versions).
+
+#: Columns of BumpData._table, one row per bump.
+_HEIGHT, _CENTRE, _RADIUS, _RIGHT_RADIUS, _UNIT_MASS, _UNIT_MOMENT_AT_PEAK, _BEFORE, _MOMENTS_BEFORE = range(8)
+
+
+@njit
+def _power(base, exponent):
+    """base ** exponent as NumPy raises a float array to an integer: a square by one product, else libm's pow (with
+    a float exponent: numba's pow of an integer exponent multiplies, which differs in the last bits). On AVX-512 CPUs
+    NumPy's power is SVML's, whose last bits may differ from libm's (tests/cross/test_cross_hull.py then compares the
+    kernels with the NumPy formulas to rounding)."""
+    return base * base if exponent == 2 else math.pow(base, float(exponent))
+
+
+@njit
+def _flight(a, w, t, mass):
+    """The free flight Y_t = a + t (M/2 - w) of the level w from a (module docstring)."""
+    return a + t * (0.5 * mass - w)
+
+
+@njit
+def _psi(w, moment, t, mass):
+    """Psi_t(w) = int_0^w Y_t = int_{-inf}^a s rho0 + t (M w/2 - w^2/2) (module docstring)."""
+    return moment + t * (0.5 * mass * w - 0.5 * w * w)
+
+
+@njit
+def _levels_kernel(table, powers, index, t, mass, a, w, psi, y):
+    """HullSolution._levels: (w, Psi_t(w), Y_t(w)) at the positions a of bump ``index``, into w, psi and y."""
+    _in_bump_kernel(table, powers, index, a, w, psi)
+    for j in range(a.size):
+        psi[j] = _psi(w[j], psi[j], t, mass)
+        y[j] = _flight(a[j], w[j], t, mass)
+
+
+@njit
+def _scaled_at(table, index, a):
+    """Bump._scaled at one position a."""
+    offset = a - table[index, _CENTRE]
+    return offset / (table[index, _RADIUS] if offset < 0.0 else table[index, _RIGHT_RADIUS])
+
+
+@njit
+def _in_bump_kernel(table, powers, index, a, w, moment):
+    """BumpData._in_bump (Bump._left_integrals, the unit bump's mass m_1 by power_mass_kernel) at the positions a,
+    into w and moment."""
+    s = np.empty(a.size)
+    for j in range(a.size):
+        s[j] = min(max(_scaled_at(table, index, a[j]), -1.0), 1.0)
+    unit_mass = np.empty(a.size)
+    power_mass_kernel(s, powers[index], unit_mass)
+    height, centre, radius = table[index, _HEIGHT], table[index, _CENTRE], table[index, _RADIUS]
+    scale = height * radius
+    exponent = powers[index] + 1
+    for j in range(a.size):
+        stretch = table[index, _RIGHT_RADIUS] / radius if s[j] > 0.0 else 1.0
+        left = 0.5 * table[index, _UNIT_MASS] + stretch * unit_mass[j]
+        square = stretch * stretch
+        unit_moment = -_power(max(1.0 - s[j] * s[j], 0.0), exponent) / (2.0 * exponent)
+        bump_moment = square * unit_moment + (1.0 - square) * table[index, _UNIT_MOMENT_AT_PEAK]
+        w[j] = table[index, _BEFORE] + scale * left
+        moment[j] = table[index, _MOMENTS_BEFORE] + scale * (centre * left + radius * bump_moment)
+
+
+@njit
+def _density_at(table, powers, index, a):
+    """Bump._density at one position a."""
+    s = min(max(_scaled_at(table, index, a), -2.0), 2.0)
+    unit = _power(max(1.0 - s * s, 0.0), powers[index]) if abs(s) <= 1.0 else 0.0
+    return table[index, _HEIGHT] * unit
+
+
+@njit
+def _root_kernel(table, powers, index, t, mass, flight, target, low, high):
+    """monotone_root's rtsafe iteration, point by point, for bump ``index``: the a in [low, high] with Y_t(a) =
+    target (``flight``; the free flight Y_t = a + t (M/2 - F_0(a)) of the sticky paper's section 2, slope
+    1 - t rho0) or with F_0(a) = target (slope rho0). The same steps, bracket updates and stopping rule (two ulps),
+    in the same operations; the bracket is the caller's (here, a piece where the function increases)."""
+    x = 0.5 * low + 0.5 * high
+    before_last = 0.5 * high - 0.5 * low
+    last = high - low
+    low, high = low.copy(), high.copy()
+    active = np.arange(x.size)
+    count = x.size
+    for _ in range(MAX_ITERATIONS):
+        if count == 0:
+            break
+        points = np.empty(count)
+        for k in range(count):
+            points[k] = x[active[k]]
+        w, moment = np.empty(count), np.empty(count)
+        _in_bump_kernel(table, powers, index, points, w, moment)
+        kept = 0
+        for k in range(count):
+            i, xa = active[k], points[k]
+            if flight:
+                value = _flight(xa, w[k], t, mass) - target[i]
+                slope = 1.0 - t * _density_at(table, powers, index, xa)
+            else:
+                value = w[k] - target[i]
+                slope = _density_at(table, powers, index, xa)
+            lo = xa if value < 0.0 else low[i]
+            hi = xa if value > 0.0 else high[i]
+            newton = False
+            if slope > 0.0:
+                step = xa - value / slope
+                newton = step >= lo and step <= hi and abs(step - xa) <= 0.5 * before_last[i]
+            if not newton:
+                step = 0.5 * lo + 0.5 * hi
+            if value == 0.0:
+                step = xa
+            before_last[i] = last[i]
+            last[i] = abs(step - xa)
+            x[i], low[i], high[i] = step, lo, hi
+            if abs(step - xa) > 2.0 * np.spacing(max(abs(step), 1e-300)):
+                active[kept] = i
+                kept += 1
+        count = kept
+    return x
+
+
+@njit
+def _best_kernel(table, powers, bumps, starts, ends, t, mass, x, value, level):
+    """HullSolution._best: (value, largest maximiser w) of x w - Psi_t(w) over the pieces (bump, start, end), into
+    value and level."""
+    value[:] = -np.inf
+    level[:] = 0.0
+    a, w, moment = np.empty(x.size), np.empty(x.size), np.empty(x.size)
+    end_levels, end_moments = np.empty(2), np.empty(2)
+    for p in range(bumps.size):
+        index, a0, a1 = bumps[p], starts[p], ends[p]
+        _in_bump_kernel(table, powers, index, np.array([a0, a1]), end_levels, end_moments)
+        y0, y1 = _flight(a0, end_levels[0], t, mass), _flight(a1, end_levels[1], t, mass)
+        inside = np.empty(x.size, dtype=np.int64)
+        count = 0
+        for j in range(x.size):
+            a[j] = a0 if x[j] <= y0 else a1
+            if x[j] > y0 and x[j] < y1:
+                inside[count] = j
+                count += 1
+        if count:
+            targets = np.empty(count)
+            for k in range(count):
+                targets[k] = x[inside[k]]
+            roots = _root_kernel(table, powers, index, t, mass, True, targets, np.full(count, a0), np.full(count, a1))
+            for k in range(count):
+                a[inside[k]] = roots[k]
+        _in_bump_kernel(table, powers, index, a, w, moment)
+        for j in range(x.size):
+            v = x[j] * w[j] - _psi(w[j], moment[j], t, mass)
+            if v > value[j] or (v == value[j] and w[j] > level[j]):
+                value[j], level[j] = v, w[j]
+
+
 class HullSolution:
     """Entropy solution at time t of F_t + (M F/2 - F^2/2)_x = 0 from bump data (module docstring).
 
@@ -301,6 +470,9 @@ class HullSolution:
                              "bracket of width about t M, to its rounding")
         self.mass = self.data.mass
         self._pieces = self._increasing_pieces()
+        self._piece_bumps = np.array([piece.bump for piece in self._pieces], dtype=np.int64)
+        self._piece_starts = np.array([piece.a0 for piece in self._pieces])
+        self._piece_ends = np.array([piece.a1 for piece in self._pieces])
         self.aggregates = self._find_aggregates()
         positions, masses, levels = self.aggregates
         #: Mass held in Dirac masses at t.
@@ -325,33 +497,16 @@ class HullSolution:
 
     def _levels(self, piece, a):
         """(w, Psi_t(w), Y_t(w)) at the positions a of a piece."""
-        w, moment = self.data._in_bump(piece.bump, a)
-        t, mass = self.t, self.mass
-        return w, moment + t * (0.5 * mass * w - 0.5 * w * w), a + t * (0.5 * mass - w)
+        w, psi, y = np.empty(a.size), np.empty(a.size), np.empty(a.size)
+        _levels_kernel(self.data._table, self.data._powers, piece.bump, self.t, self.mass, a, w, psi, y)
+        return w, psi, y
 
-    def _best_on_piece(self, piece, x):
-        """(value, w) of max over the piece's levels of x w - Psi_t(w): at the root of Y_t = x, or at an end."""
-        bump = self.data.bumps[piece.bump]
-
-        def flight(a):
-            return self._levels(piece, a)[2]
-
-        ends = np.array([piece.a0, piece.a1])
-        y0, y1 = flight(ends)
-        inside = (x > y0) & (x < y1)
-        a = np.where(x <= y0, piece.a0, piece.a1)
-        if np.any(inside):
-            a[inside] = monotone_root(flight, lambda s: 1.0 - self.t * bump._density(s), x[inside], piece.a0, piece.a1)
-        w, psi, _ = self._levels(piece, a)
-        return x * w - psi, w
-
-    def _best(self, x, pieces):
-        """(value, largest maximiser w) of x w - Psi_t(w) over the given pieces (ties: the larger w)."""
-        value, level = np.full(x.shape, -np.inf), np.zeros(x.shape)
-        for piece in pieces:
-            v, w = self._best_on_piece(piece, x)
-            better = (v > value) | ((v == value) & (w > level))
-            value, level = np.where(better, v, value), np.where(better, w, level)
+    def _best(self, x, start=0, stop=None):
+        """(value, largest maximiser w) of x w - Psi_t(w) over the pieces start to stop (ties: the larger w): on each
+        piece, at the root of Y_t = x or at an end (a compiled kernel)."""
+        value, level = np.empty(x.size), np.empty(x.size)
+        _best_kernel(self.data._table, self.data._powers, self._piece_bumps[start:stop], self._piece_starts[start:stop],
+                     self._piece_ends[start:stop], self.t, self.mass, x, value, level)
         return value, level
 
     # --- aggregates ---------------------------------------------------------------------------------
@@ -365,18 +520,17 @@ class HullSolution:
         bracket = (low - self.t * self.mass, high + self.t * self.mass)  # every Y_t lies within
         found = []
         for split in range(1, len(pieces)):
-            below, above = pieces[:split], pieces[split:]
 
-            def overtaking(x, below=below, above=above):
+            def overtaking(x, split=split):
                 point = np.array([x])
-                return float(self._best(point, above)[0][0] - self._best(point, below)[0][0])
+                return float(self._best(point, split)[0][0] - self._best(point, 0, split)[0][0])
 
             # (Where two pieces meet at one level, the difference is 0 over an interval of x and Brent's method
             # may not settle: any x of it finds no jump.)
             x = brentq(overtaking, *bracket, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=POSITION_STEPS,
                        disp=False)
             point = np.array([x])
-            lower, upper = self._best(point, below)[1][0], self._best(point, above)[1][0]
+            lower, upper = self._best(point, 0, split)[1][0], self._best(point, split)[1][0]
             # Across a gap of the data (F_0 flat: the level where one bump ends and the next begins), the two sides
             # tie over the interval of x between their ends' free flights, and Brent's x may stop a rounding error
             # inside the upper piece, where F grows continuously: a jump from that level below GAP_JUMP_SHARE is none.
@@ -400,13 +554,13 @@ class HullSolution:
     def antiderivative(self, x):
         """int_{-inf}^x F(t, .) = max_w (x w - Psi_t(w))."""
         x = limited("x", finite_values("x", x))
-        value, _ = self._best(x.ravel(), self._pieces)
+        value, _ = self._best(x.ravel())
         return finite_result("int F(t, .)", value.reshape(x.shape), "x is too large: x F(t, x) overflows")
 
     def cdf(self, x):
         """F(t, x), right-continuous: the largest maximiser of x w - Psi_t(w)."""
         x = limited("x", finite_values("x", x))
-        _, level = self._best(x.ravel(), self._pieces)
+        _, level = self._best(x.ravel())
         return np.clip(level, 0.0, self.mass).reshape(x.shape)
 
     def _free_quantile(self, w):
@@ -422,8 +576,8 @@ class HullSolution:
                 continue
             low, high = bump.left_end, bump.right_end
             level = w[mine]
-            a = monotone_root(lambda s, b=b: data._in_bump(b, s)[0], bump._density, level, np.full(level.size, low),
-                              np.full(level.size, high))
+            a = _root_kernel(data._table, data._powers, b, self.t, self.mass, False, level, np.full(level.size, low),
+                             np.full(level.size, high))
             # The bump's first and last levels sit at its ends (F_0 is flat there: a root would be any point of
             # the flat tail to rounding).
             a = np.where(level <= before[b], low, np.where(level >= before[b + 1], high, a))
