@@ -212,7 +212,6 @@ def _scan_tree(root):
 def _new_process(workflow):
     """What a new Snakemake start sees: no scan of this process kept, the record on disk read anew."""
     workflow._scan_cache.cache_clear()
-    workflow._direct_dependencies.cache_clear()
 
 
 def test_the_import_scan_is_kept_between_starts_and_redone_where_a_file_changed(tmp_path, monkeypatch):

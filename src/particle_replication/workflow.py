@@ -358,7 +358,7 @@ def module_dependencies(script, package_dirs) -> list[str]:
         key, version = str(path), [stamp.st_mtime_ns, stamp.st_size]
         entry = scanned.entries.get(key)
         if entry is None or entry[0] != version:
-            entry = [version, [str(f) for f in _direct_dependencies(path, tuple(version), tuple(dirs))]]
+            entry = [version, [str(f) for f in _direct_dependencies(path, tuple(dirs))]]
             scanned.entries[key] = entry
             scanned.save_later()
         for candidate in map(Path, entry[1]):
@@ -417,12 +417,10 @@ def _scan_cache(dirs: tuple[Path, ...]) -> _ScanCache:
     return _ScanCache(dirs)
 
 
-@functools.cache
-def _direct_dependencies(path: Path, stamp, dirs: tuple[Path, ...]) -> tuple[Path, ...]:
-    """Source files of the packages in ``dirs`` that the file ``path`` imports itself, parsed once per version
-    of the file (``stamp``: its modification time and size): every rule's code inputs share the modules, and
-    parsing them again for each of the 75 rules took 4 s of every Snakemake start. Kept between processes by
-    :class:`_ScanCache`."""
+def _direct_dependencies(path: Path, dirs: tuple[Path, ...]) -> tuple[Path, ...]:
+    """Source files of the packages in ``dirs`` that the file ``path`` imports itself. :func:`module_dependencies`
+    parses each version of a file once (:class:`_ScanCache`, within a process and between them): every rule's code
+    inputs share the modules, and parsing them again for each of the 75 rules took 4 s of every Snakemake start."""
     root, packages = dirs[0].parent, {d.name for d in dirs}
     tree = ast.parse(path.read_text(), filename=str(path))
     inside = any(path.is_relative_to(d) for d in dirs)
