@@ -9,6 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import ci_tools
 import pytest
 import yaml
 
@@ -80,12 +81,22 @@ def planned_rules(result):
 
 @pytest.fixture(scope="module")
 def repository(tmp_path_factory):
-    """A scratch copy of the repository where the quick run is made as the README says: from its root."""
+    """A scratch copy of the repository where the quick run is made as the README says: from its root. Where CI
+    still installs LaTeX (tests/ci_tools.py), a half-installed toolchain must not build the documents: the run
+    leaves them out (and what follows them), then the README's command runs again once the install has ended, as
+    the run's message tells a user who installs LaTeX later, and builds only those."""
     repository = copy_repository(tmp_path_factory.mktemp("clone") / "particle-methods")
-    result = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", "--configfile", "config/quick.yaml"],
-                            cwd=repository, capture_output=True, text=True, timeout=900,
-                            env=checkout_environment(repository))
-    assert result.returncode == 0, result.stderr[-4000:]
+    command = [sys.executable, "-m", "snakemake", "--cores", "2", "--configfile", "config/quick.yaml"]
+
+    def run(*extra):
+        result = subprocess.run([*command, *extra], cwd=repository, capture_output=True, text=True, timeout=900,
+                                env=checkout_environment(repository))
+        assert result.returncode == 0, result.stderr[-4000:]
+
+    if ci_tools.installing():
+        run("--omit-from", "manuscript")
+        ci_tools.wait()
+    run()
     return repository
 
 
@@ -451,21 +462,15 @@ def test_a_configuration_of_ones_own_is_compared_with_nothing(workdir, tmp_path)
     assert "Nothing compared" in result.stdout and "sticky.lemma21.n_values" in result.stdout
 
 
+# One bad value for each of the three checks the workflow makes at its start: the schema (an unknown key), the
+# configuration's own checks (Snakefile: check_configuration) and a solver's work limit. The other bad values go
+# through the same two calls in process (tests/test_config_census.py, which starts no Snakemake).
 @WITHOUT_THE_RUN
 @pytest.mark.parametrize(
     "override, key",
     [
-        ("sticky:\n  fig2:\n    field_particles: -1\n", "field_particles"),
         ("sticky:\n  fig2:\n    tmax: 3\n", "tmax"),
-        ("sticky:\n  fig3:\n    case: heat_equation\n", "case"),
-        ("sticky:\n  fig2:\n    t_max: .nan\n", "sticky.fig2.t_max"),
         ("blob:\n  fig5:\n    inverse_h: [5, 10, 10]\n", "blob.fig5.inverse_h"),
-        ("sticky:\n  cost:\n    window: 9\n", "sticky.cost.window"),
-        ("blob:\n  fig1:\n    zoom: [0.06, -0.06, 0.8, 1.0]\n", "blob.fig1.zoom"),
-        ("ltp:\n  quadratic:\n    eps_scan: {h: 0.05, dt: 0.01, fine_dt: 1.0e-3, eps_min: 0.5, eps_max: 0.2, "
-         "count: 5}\n", "ltp.quadratic.eps_scan.eps_min"),
-        ("blob:\n  fig1:\n    density_times: [0.0, 0.4, 5.0]\n", "blob.fig1.density_times"),
-        ("sticky:\n  cost:\n    hull_n: [100, 1000, 1000000000000]\n", "sticky.cost.hull_n"),
         ("sticky:\n  beyond:\n    repeats: 100000000\n", "sticky.beyond.repeats"),  # held to a solver's limit
     ],
 )
