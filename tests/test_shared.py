@@ -260,6 +260,35 @@ def test_the_import_scan_is_kept_between_starts_and_redone_where_a_file_changed(
     assert len(workflow.module_dependencies(script, packages)) == 4 and len(parsed) == 5
 
 
+def test_a_copied_checkout_uses_the_import_scan_as_it_is_and_files_gone_leave_the_record(tmp_path, monkeypatch):
+    """The record keeps paths relative to the checkout: a copy with its file times parses nothing and finds its own
+    files; the entry of a script that no longer exists is dropped when the record is written."""
+    import ast
+    import json
+    import shutil
+
+    from particle_replication import workflow
+
+    original = tmp_path / "original"
+    packages = _scan_tree(original)
+    (original / "scripts" / "old.py").write_text("import alpha.core\n")
+    workflow.module_dependencies(original / "scripts" / "old.py", packages)
+    workflow.module_dependencies(original / "scripts" / "job.py", packages)
+    workflow._scan_cache(tuple(p.resolve() for p in packages)).save()
+    copy = tmp_path / "copy"
+    shutil.copytree(original, copy)  # file times kept, as a copy of a clone keeps them
+    _new_process(workflow)
+    monkeypatch.setattr(ast, "parse", lambda *a, **k: pytest.fail("the copy parsed a file the record holds"))
+    copied = [copy / "src" / "alpha", copy / "src" / "beta"]
+    assert workflow.module_dependencies(copy / "scripts" / "job.py", copied) == [
+        str((copy / f).resolve()) for f in ("src/alpha/core.py", "src/alpha/helpers.py", "src/beta/use.py")]
+    (copy / "scripts" / "old.py").unlink()
+    workflow._scan_cache(tuple(p.resolve() for p in copied)).save()
+    entries = json.loads((copy / workflow.SCAN_CACHE).read_text())["entries"]
+    assert "scripts/job.py" in entries and "scripts/old.py" not in entries
+    assert not any(key.startswith("/") for key in entries)
+
+
 def test_the_import_statements_are_found_at_any_depth():
     """The dependency scan visits statements only; it finds every import that a walk of the whole tree finds, in
     functions, classes, branches, handlers and match cases, and in every file of the repository."""

@@ -355,13 +355,13 @@ def module_dependencies(script, package_dirs) -> list[str]:
     while pending:
         path = pending.pop()
         stamp = path.stat()
-        key, version = str(path), [stamp.st_mtime_ns, stamp.st_size]
+        key, version = scanned.key(path), [stamp.st_mtime_ns, stamp.st_size]
         entry = scanned.entries.get(key)
         if entry is None or entry[0] != version:
-            entry = [version, [str(f) for f in _direct_dependencies(path, tuple(dirs))]]
+            entry = [version, [scanned.key(f) for f in _direct_dependencies(path, tuple(dirs))]]
             scanned.entries[key] = entry
             scanned.save_later()
-        for candidate in map(Path, entry[1]):
+        for candidate in map(scanned.path_of, entry[1]):
             if candidate not in found:
                 found.add(candidate)
                 pending.append(candidate)
@@ -378,20 +378,34 @@ class _ScanCache:
     read from and written to :data:`SCAN_CACHE` of the checkout, so that a Snakemake start parses only the files
     changed since the last one (reading every rule's modules took 0.4 of the 4 s of a start). An entry holds while
     its file keeps its time and size; the whole record holds while the packages hold the same module files (an
-    import resolves to a module or a package's ``__init__`` by which files exist). A record that cannot be read is
-    ignored, one that cannot be written is not kept: the scan is then made anew."""
+    import resolves to a module or a package's ``__init__`` by which files exist). Paths inside the checkout are
+    kept relative to it, so that a copied checkout (file times kept) uses the record as it is, and the entries of
+    files that no longer exist are dropped when the record is written. A record that cannot be read, or of another
+    format, is ignored, one that cannot be written is not kept: the scan is then made anew."""
+
+    #: The record's format: a record of another one is ignored (format 1 kept absolute paths).
+    FORMAT = 2
 
     def __init__(self, dirs: tuple[Path, ...]):
-        self.path = dirs[0].parent.parent / SCAN_CACHE
+        self.checkout = dirs[0].parent.parent
+        self.path = self.checkout / SCAN_CACHE
         self.layout = sorted(str(f.relative_to(dirs[0].parent)) for d in dirs for f in d.rglob("*.py"))
         self.entries: dict[str, list] = {}
         self.pending = False
         try:
             record = json.loads(self.path.read_text())
-            if record.get("layout") == self.layout:
+            if record.get("format") == self.FORMAT and record.get("layout") == self.layout:
                 self.entries = record["entries"]
         except (OSError, ValueError, TypeError, KeyError, AttributeError):
             pass
+
+    def key(self, path: Path) -> str:
+        """A file's key in the record: its path relative to the checkout, or absolute outside it."""
+        return str(path.relative_to(self.checkout)) if path.is_relative_to(self.checkout) else str(path)
+
+    def path_of(self, key: str) -> Path:
+        """The file a key names (the inverse of :meth:`key`)."""
+        return self.checkout / key
 
     def save_later(self) -> None:
         """Write the record when the process ends (once, whatever the number of files scanned)."""
@@ -404,7 +418,8 @@ class _ScanCache:
         try:
             self.path.parent.mkdir(exist_ok=True)  # (not the checkout itself, if it is gone)
             temporary = self.path.with_name(f"{self.path.name}.{os.getpid()}.tmp")
-            temporary.write_text(json.dumps({"layout": self.layout, "entries": self.entries}))
+            self.entries = {key: entry for key, entry in self.entries.items() if self.path_of(key).is_file()}
+            temporary.write_text(json.dumps({"format": self.FORMAT, "layout": self.layout, "entries": self.entries}))
             os.replace(temporary, self.path)
         except OSError:
             pass
