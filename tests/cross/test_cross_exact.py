@@ -322,6 +322,15 @@ def test_issue_46_monotone_root_checks_its_functions_targets_and_bracket():
                                ((np.tanh, derivative, [0.0], -1.0, [1 + 1j]), "high must hold real numbers")]:
         with pytest.raises(ValueError, match=message):
             monotone_root(*arguments)  # a root of NaN, a complex cast or an unclear error before
+    # what the functions return goes to the compiled steps: real numbers of one value per point, or refused by name
+    for arguments, error, message in [((lambda s: s + 0j, derivative, [0.0], -1.0, 1.0), TypeError, "function must"),
+                                      ((np.tanh, lambda s: s * 0j + 1, [0.5], -1.0, 1.0), TypeError, "derivative must"),
+                                      ((np.tanh, lambda s: None, [0.5], -1.0, 1.0), TypeError, "derivative must"),
+                                      ((np.tanh, lambda s: np.ones(3), [0.5, 0.1], -1.0, 1.0), ValueError,
+                                       "derivative returned values of shape")]:
+        with pytest.raises(error, match=message):
+            monotone_root(*arguments)
+    assert monotone_root(np.tanh, lambda s: 1.0, [0.3], -1.0, 1.0)[0] == pytest.approx(np.arctanh(0.3), abs=1e-15)
 
 
 def test_issue_46_a_profile_probes_its_functions_and_radius():

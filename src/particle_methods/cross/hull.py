@@ -54,7 +54,7 @@ from ..validation import (
     one_of,
     positive,
 )
-from .profiles import MAX_ITERATIONS, limited
+from .profiles import MAX_ITERATIONS, limited, rtsafe_start_kernel, rtsafe_steps_kernel
 
 #: Iterations of Brent's method allowed for an aggregate's position (it converges to rounding in about 10).
 POSITION_STEPS = 80
@@ -297,8 +297,9 @@ class _Piece:
 # The root iterations of the hull called NumPy thousands of times on arrays of a few points (Brent's method on
 # 1-point arrays, the bisections of the W1 distances), where the time was the dispatch of each operation (issue 47).
 # These kernels compute the same numbers with the same floating-point operations, in the same order, point by
-# point: Bump._left_integrals, Bump._density, the free flight, monotone_root's rtsafe steps and the maximum over
-# the pieces (tests/cross/test_cross_hull.py compares them bit for bit with the NumPy versions).
+# point: Bump._left_integrals, Bump._density, the free flight and the maximum over the pieces
+# (tests/cross/test_cross_hull.py compares them bit for bit with the NumPy versions); the root iteration's start and
+# steps are monotone_root's own kernels.
 
 #: Columns of BumpData._table, one row per bump.
 _HEIGHT, _CENTRE, _RADIUS, _RIGHT_RADIUS, _UNIT_MASS, _UNIT_MOMENT_AT_PEAK, _BEFORE, _MOMENTS_BEFORE = range(8)
@@ -373,50 +374,31 @@ def _density_at(table, powers, index, a):
 
 @njit
 def _root_kernel(table, powers, index, t, mass, flight, target, low, high):
-    """monotone_root's rtsafe iteration, point by point, for bump ``index``: the a in [low, high] with Y_t(a) =
-    target (``flight``; the free flight Y_t = a + t (M/2 - F_0(a)) of the sticky paper's section 2, slope
-    1 - t rho0) or with F_0(a) = target (slope rho0). The same steps, bracket updates and stopping rule (two ulps),
-    in the same operations; the bracket is the caller's (here, a piece where the function increases)."""
-    x = 0.5 * low + 0.5 * high
-    before_last = 0.5 * high - 0.5 * low
-    last = high - low
+    """monotone_root's iteration (its start and steps: profiles.rtsafe_start_kernel, rtsafe_steps_kernel) for bump
+    ``index``: the a in [low, high] with Y_t(a) = target (``flight``; the free flight Y_t = a + t (M/2 - F_0(a)) of
+    the sticky paper's section 2, slope 1 - t rho0) or with F_0(a) = target (slope rho0); the bracket is the
+    caller's (here, a piece where the function increases)."""
     low, high = low.copy(), high.copy()
+    x, before_last, last = rtsafe_start_kernel(low, high)
     active = np.arange(x.size)
-    count = x.size
     for _ in range(MAX_ITERATIONS):
-        if count == 0:
+        if active.size == 0:
             break
-        points = np.empty(count)
-        for k in range(count):
+        points = np.empty(active.size)
+        for k in range(active.size):
             points[k] = x[active[k]]
-        w, moment = np.empty(count), np.empty(count)
+        w, moment = np.empty(active.size), np.empty(active.size)
         _in_bump_kernel(table, powers, index, points, w, moment)
-        kept = 0
-        for k in range(count):
-            i, xa = active[k], points[k]
+        value, slope = np.empty(active.size), np.empty(active.size)
+        for k in range(active.size):
+            xa = points[k]
             if flight:
-                value = _flight(xa, w[k], t, mass) - target[i]
-                slope = 1.0 - t * _density_at(table, powers, index, xa)
+                value[k] = _flight(xa, w[k], t, mass) - target[active[k]]
+                slope[k] = 1.0 - t * _density_at(table, powers, index, xa)
             else:
-                value = w[k] - target[i]
-                slope = _density_at(table, powers, index, xa)
-            lo = xa if value < 0.0 else low[i]
-            hi = xa if value > 0.0 else high[i]
-            newton = False
-            if slope > 0.0:
-                step = xa - value / slope
-                newton = step >= lo and step <= hi and abs(step - xa) <= 0.5 * before_last[i]
-            if not newton:
-                step = 0.5 * lo + 0.5 * hi
-            if value == 0.0:
-                step = xa
-            before_last[i] = last[i]
-            last[i] = abs(step - xa)
-            x[i], low[i], high[i] = step, lo, hi
-            if abs(step - xa) > 2.0 * np.spacing(max(abs(step), 1e-300)):
-                active[kept] = i
-                kept += 1
-        count = kept
+                value[k] = w[k] - target[active[k]]
+                slope[k] = _density_at(table, powers, index, xa)
+        active = rtsafe_steps_kernel(x, low, high, before_last, last, active, value, slope)
     return x
 
 

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..blob.initial import DATA_1D, Data1D
+from ..jit import njit
 from ..validation import ParameterTypeError, finite_values, instance, one_of, positive
 
 #: Newton steps (each safeguarded by bisection) allowed to reach rounding; bisection alone needs 64.
@@ -32,6 +33,48 @@ def limited(name: str, values: np.ndarray) -> np.ndarray:
     if values.size > MAX_POINTS:
         raise ValueError(f"{name} has {values.size} values, more than MAX_POINTS = {MAX_POINTS} in one call")
     return values
+
+
+@njit
+def rtsafe_start_kernel(low, high):
+    """The start of :func:`monotone_root`'s iteration on the brackets [low, high]: (x, the size of the step before the
+    last one, the last step's size), rtsafe's x, "dxold" and "dx". Halves are taken before the sum: the sum of two
+    large brackets overflows. It trusts its caller's checks."""
+    x, before_last, last = np.empty(low.size), np.empty(low.size), np.empty(low.size)
+    for i in range(low.size):
+        x[i] = 0.5 * low[i] + 0.5 * high[i]
+        before_last[i] = 0.5 * high[i] - 0.5 * low[i]
+        last[i] = high[i] - low[i]
+    return x, before_last, last
+
+
+@njit
+def rtsafe_steps_kernel(x, low, high, before_last, last, active, value, slope):
+    """One step of :func:`monotone_root`'s iteration at the points ``active``, given function(x) - target (``value``)
+    and the derivative (``slope``) there, one entry per active point; x, low, high, before_last and last are updated
+    in place. Returns the points still moving (a step of more than two ulps). The one home of the step, which the
+    hull's compiled roots (:mod:`particle_methods.cross.hull`) take too; it trusts its caller's checks."""
+    moving = np.empty(active.size, dtype=np.int64)
+    kept = 0
+    for k in range(active.size):
+        i, xa = active[k], x[active[k]]
+        lo = xa if value[k] < 0.0 else low[i]
+        hi = xa if value[k] > 0.0 else high[i]
+        newton = False
+        if slope[k] > 0.0:  # else a Newton step leaves the bracket
+            step = xa - value[k] / slope[k]
+            newton = step >= lo and step <= hi and abs(step - xa) <= 0.5 * before_last[i]
+        if not newton:
+            step = 0.5 * lo + 0.5 * hi
+        if value[k] == 0.0:
+            step = xa
+        before_last[i] = last[i]
+        last[i] = abs(step - xa)
+        x[i], low[i], high[i] = step, lo, hi
+        if abs(step - xa) > 2.0 * np.spacing(max(abs(step), 1e-300)):
+            moving[kept] = i
+            kept += 1
+    return moving[:kept]
 
 
 def monotone_root(function: Callable, derivative: Callable, target, low, high):
@@ -61,33 +104,31 @@ def monotone_root(function: Callable, derivative: Callable, target, low, high):
         except ValueError:
             raise ValueError(f"{name} must be a number or of the shape {shape} of target, got {end.shape}") from None
     low, high = ends
-    x = 0.5 * low + 0.5 * high  # not 0.5 (low + high): the sum of two large brackets overflows
-    before_last = 0.5 * high - 0.5 * low  # rtsafe's "dxold": the size of the step before the last one
-    last = high - low
+    x, before_last, last = rtsafe_start_kernel(low, high)
     active = np.arange(x.size)  # the points still moving: converged ones leave the iteration
     for _ in range(MAX_ITERATIONS):
         if active.size == 0:
             break
-        xa, lo, hi = x[active], low[active], high[active]
-        value = function(xa) - target[active]
+        xa = x[active]
+        value = _real("function", function(xa), xa.shape) - target[active]
+        slope = _real("derivative", derivative(xa), xa.shape)
         if not np.all(np.isfinite(value)):
             raise ValueError("function returned NaN or infinite values inside the bracket [low, high]")
-        lo = np.where(value < 0.0, xa, lo)
-        hi = np.where(value > 0.0, xa, hi)
-        slope = derivative(xa)
         if np.any(np.isnan(slope)):
             raise ValueError("derivative returned NaN inside the bracket [low, high]")
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # such steps leave the bracket
-            step = np.where(slope > 0.0, xa - value / slope, np.nan)
-        newton = (step >= lo) & (step <= hi) & (np.abs(step - xa) <= 0.5 * before_last[active])
-        step = np.where(newton, step, 0.5 * lo + 0.5 * hi)
-        step = np.where(value == 0.0, xa, step)
-        moving = np.abs(step - xa) > 2.0 * np.spacing(np.maximum(np.abs(step), 1e-300))
-        before_last[active] = last[active]
-        last[active] = np.abs(step - xa)
-        x[active], low[active], high[active] = step, lo, hi
-        active = active[moving]
+        active = rtsafe_steps_kernel(x, low, high, before_last, last, active, value, slope)
     return x.reshape(shape)
+
+
+def _real(name: str, values, shape) -> np.ndarray:
+    """What ``name`` returned at the points of ``shape``, as contiguous float64; refused unless real numbers."""
+    values = np.asarray(values)
+    if values.dtype.kind not in "biuf":
+        raise ParameterTypeError(f"{name} must return real numbers, got {values.dtype} values")
+    try:
+        return np.ascontiguousarray(np.broadcast_to(values, shape), dtype=float)
+    except ValueError:
+        raise ValueError(f"{name} returned values of shape {values.shape} at {shape} points") from None
 
 
 @dataclass(frozen=True)
