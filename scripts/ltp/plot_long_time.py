@@ -37,7 +37,8 @@ def run(inputs, p, output):
     axes[0, 1].legend(fontsize="small")
     label_panel(axes[0, 1], "(b) Figures 6-7: concentration widths")
     axes[1, 0].set(xlabel="t", ylabel=f"mass within {q['radius']:g}\nof the two peaks", ylim=(0, 1.05))
-    axes[1, 0].legend(fontsize="small")
+    # the series and colours of (b): a legend here would cover the rising curves
+    axes[1, 0].text(0.98, 0.3, "lines as in (b)", transform=axes[1, 0].transAxes, ha="right", fontsize="small")
     label_panel(axes[1, 0], "(c) Figures 6-7: mass near the peaks")
     ax = axes[1, 1]
     spread = ax.twinx()
