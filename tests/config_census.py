@@ -31,9 +31,9 @@ from fnmatch import fnmatchcase
 from pathlib import Path
 
 import jsonschema
-import yaml
 
 from particle_replication.configuration import SCHEMA, check_configuration, repository_configuration
+from particle_replication.paths import read_yaml
 from particle_replication.work_limits import LIMITS, held, walk
 
 #: The outcomes: the first is what every bad value must get.
@@ -53,7 +53,7 @@ NAME = "no-such-name"
 @functools.cache
 def validator() -> jsonschema.protocols.Validator:
     """The schema's validator, built once (``snakemake.utils.validate`` builds it at every call)."""
-    schema = yaml.safe_load(Path(SCHEMA).read_text())
+    schema = read_yaml(Path(SCHEMA))
     return jsonschema.validators.validator_for(schema)(schema)
 
 

@@ -5,12 +5,12 @@ import re
 from pathlib import Path
 
 import pytest
-import yaml
 
 from particle_replication.configuration import check_configuration, overlay
+from particle_replication.paths import read_yaml
 
 ROOT = Path(__file__).resolve().parents[1]
-FULL = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+FULL = read_yaml(ROOT / "config" / "config.yaml")
 
 
 def test_the_full_configuration_passes():
@@ -19,7 +19,7 @@ def test_the_full_configuration_passes():
 
 @pytest.mark.parametrize("name", ["quick.yaml", "fig5-extended.yaml"])
 def test_the_committed_overlays_pass_over_the_full_configuration(name):
-    check_configuration(overlay(FULL, yaml.safe_load((ROOT / "config" / name).read_text())))
+    check_configuration(overlay(FULL, read_yaml(ROOT / "config" / name)))
 
 
 def leaves(node, path=()):
@@ -32,7 +32,7 @@ def leaves(node, path=()):
 
 def test_the_quick_overlay_holds_only_what_differs():
     """At most 10 of its values repeat the full configuration's (issue 26)."""
-    quick = yaml.safe_load((ROOT / "config" / "quick.yaml").read_text())
+    quick = read_yaml(ROOT / "config" / "quick.yaml")
     full = dict(leaves(FULL))
     repeated = [".".join(path) for path, value in leaves(quick) if full.get(path, object()) == value]
     assert len(repeated) <= 10, repeated

@@ -15,6 +15,7 @@ import yaml
 
 from particle_replication import registry
 from particle_replication.claims import COLUMNS, KINDS, STATUSES, read_verdicts
+from particle_replication.paths import read_yaml
 from particle_replication.workflow import damaged as workflow_damaged
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -24,7 +25,7 @@ EXPECTED_FIGURES = registry.figure_outputs()
 # Every claim of the quick run, with its expected verdict (`snakemake verify` checks them).
 EXPECTED_VERDICTS = read_verdicts(ROOT / "config" / "verdicts.yaml", "quick")
 # The smallest margin that is not fragile, also the factor of a value's spread that its pin allows.
-CONFIG_MARGIN = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["robustness"]["margin_min"]
+CONFIG_MARGIN = read_yaml(ROOT / "config" / "config.yaml")["robustness"]["margin_min"]
 
 # One xdist worker runs this module (its quick run is a module fixture); the unit tests share the other cores.
 pytestmark = [pytest.mark.pipeline, pytest.mark.xdist_group("pipeline")]
@@ -188,7 +189,7 @@ def test_another_machine_gives_the_same_verdicts(repository, workdir, tmp_path):
     from particle_replication.claims import read_claims, read_spreads, read_values, value_differences
     from particle_replication.robustness import compare, probe, variant_configuration, variant_environment
 
-    variant = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["robustness"]["variants"]["combined"]
+    variant = read_yaml(ROOT / "config" / "config.yaml")["robustness"]["variants"]["combined"]
     environment = variant_environment(variant, checkout_environment(repository))
     effective = probe(environment)
     assert effective["numba_threads"] == 1 and effective["numba_cpu"] == "haswell", effective
@@ -487,7 +488,7 @@ def test_bad_configuration_stops_at_start_naming_the_key(tmp_path, override, key
 def test_a_configuration_file_is_laid_over_the_full_one(tmp_path):
     """A file given with --configfile holds only what differs: a section it leaves out is the full run's
     (here every sticky job is planned from config/config.yaml's sticky section)."""
-    quick = yaml.safe_load(QUICK.read_text())
+    quick = read_yaml(QUICK)
     del quick["sticky"]
     path = tmp_path / "overlay.yaml"
     path.write_text(yaml.safe_dump(quick))

@@ -8,14 +8,14 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_replication import registry
+from particle_replication.paths import read_yaml
 from particle_replication.report import further_figures, placed_figures
 from particle_replication.workflow import code_inputs, load_results, module_dependencies, save_results
 
 ROOT = Path(__file__).resolve().parents[1]
-CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+CONFIG = read_yaml(ROOT / "config" / "config.yaml")
 
 
 def test_readme_figure_map_is_the_generated_one():

@@ -18,9 +18,10 @@ from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_replication import claims as c
 from particle_replication import robustness
 from particle_replication.configuration import compared_run, overlay, repository_configuration
+from particle_replication.paths import read_yaml
 
 ROOT = Path(__file__).resolve().parents[1]
-CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+CONFIG = read_yaml(ROOT / "config" / "config.yaml")
 
 
 # The nudge

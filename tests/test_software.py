@@ -13,7 +13,7 @@ import sys
 import tomllib
 from pathlib import Path
 
-import yaml
+from particle_replication.paths import read_yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 ENVIRONMENT = ROOT / "envs" / "particle-methods.yaml"
@@ -33,7 +33,7 @@ def test_environment_lists_the_runtime_dependencies_of_pyproject():
     wanted = dict(map(requirement, project["dependencies"] + project["optional-dependencies"]["pipeline"]))
     for name in NOT_NEEDED_BY_RULES:
         wanted.pop(name)
-    listed = dict(map(requirement, yaml.safe_load(ENVIRONMENT.read_text())["dependencies"]))
+    listed = dict(map(requirement, read_yaml(ENVIRONMENT)["dependencies"]))
     assert listed.pop("python") == "=3.11"
     assert listed.pop("pip") == ""
     assert listed == wanted

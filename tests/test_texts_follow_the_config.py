@@ -17,6 +17,7 @@ import yaml
 from particle_methods.ltp import potential
 from particle_replication import registry
 from particle_replication.configuration import check_configuration, overlay
+from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import blob as blob_verdicts
 from particle_replication.verdicts import cross as cross_verdicts
@@ -24,7 +25,7 @@ from particle_replication.verdicts import ltp as ltp_verdicts
 from particle_replication.verdicts import sticky as sticky_verdicts
 
 ROOT = Path(__file__).resolve().parents[1]
-CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())
+CONFIG = read_yaml(ROOT / "config" / "config.yaml")
 
 #: The scratch overlay: for each paper, the changed parameters, and the old values no text may still show
 #: (as regular expressions: a value not followed or preceded by a digit).
@@ -217,7 +218,7 @@ def test_expected_verdict_reasons_type_no_run_value():
     """The reasons of config/verdicts.yaml (the README shows the full run's) name no parameter's or measure's value:
     a value that follows the run is in the claim's text. The blow-up time t = 1 of the blob paper's data (4.3),
     the mathematics of the data, stays."""
-    verdicts = yaml.safe_load((ROOT / "config" / "verdicts.yaml").read_text())
+    verdicts = read_yaml(ROOT / "config" / "verdicts.yaml")
     typed = re.compile(r"(?<![\w.])(t|h|n|1/h|t_max|x0|dt|eps|m q|a|b|q) ?(=|<=|>=|<|>) ?\d|about \d"
                        r"|\d+ (cells|particles|ms|s|widths|runs)\b|\d+\.\d+(?!\))")
     found = [(match.group(0), reason) for reason in _reasons(verdicts)

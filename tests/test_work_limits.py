@@ -6,9 +6,9 @@ import re
 from fnmatch import fnmatchcase
 
 import pytest
-import yaml
 
 from particle_replication.configuration import check_configuration, overlay, repository_configuration
+from particle_replication.paths import read_yaml
 from particle_replication.work_limits import (
     CASE_FLUXES,
     LIMITS,
@@ -218,6 +218,5 @@ def test_solver_limit_refuses_what_is_no_constant():
 
 
 def test_quick_overlay_file_is_laid_over_the_full_configuration():
-    quick = yaml.safe_load((importlib.import_module("particle_replication.paths").REPOSITORY / "config" /
-                            "quick.yaml").read_text())
+    quick = read_yaml(importlib.import_module("particle_replication.paths").REPOSITORY / "config" / "quick.yaml")
     check_work_limits(overlay(FULL, quick))

@@ -106,7 +106,8 @@ wait_for 10 bash -c 'munge -n | unmunge'
 chown mysql:mysql /run/mysqld
 if ! running mariadbd && ! running mysqld; then
     log "starting mariadbd"
-    (cd / && setsid nohup mariadbd --user=mysql </dev/null >/var/log/mysql-local.log 2>&1 &)
+    # the subshell too lets go of this script's output, which a caller may be reading until it closes
+    (cd / && setsid nohup mariadbd --user=mysql &) </dev/null >/var/log/mysql-local.log 2>&1
 fi
 wait_for 30 mariadb -e 'SELECT 1'
 mariadb -e "CREATE DATABASE IF NOT EXISTS slurm_acct_db;

@@ -12,7 +12,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -46,6 +45,8 @@ from particle_methods.blob.kernels import POWER
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from fuzzing import FUZZ, bad_array, bad_scalar, extreme, safe_call
+
+from particle_replication.paths import read_yaml
 
 ROOT = Path(__file__).resolve().parents[2]
 PSI1, PSI2 = mollifier(4, 1), mollifier(4, 2)
@@ -213,8 +214,8 @@ def test_particle_counts_beyond_the_limit_are_refused(make, limit):
 def test_the_limits_cover_the_repository_runs():
     """Figure 5 extended to h = 1/160 (80,369 particles, within MAX_FMM_PARTICLES: its kernel is the Newtonian
     one) and the longest runs (Figure 8, t = 400)."""
-    config = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["blob"]
-    extended = yaml.safe_load((ROOT / "config" / "fig5-extended.yaml").read_text())["blob"]["fig5"]
+    config = read_yaml(ROOT / "config" / "config.yaml")["blob"]
+    extended = read_yaml(ROOT / "config" / "fig5-extended.yaml")["blob"]["fig5"]
     finest = max(extended["inverse_h"] + config["fig5"]["inverse_h"])
     for case in config["fig5"]["cases"]:
         assert len(grid_2d(1.0 / finest, case["data"])) <= checks.MAX_FMM_PARTICLES

@@ -8,15 +8,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_methods.blob.aliasing import quadrature_prediction, quadrature_prediction_terms, saddle_ratio
 from particle_methods.blob.initial import data_1d, data_2d, grid_2d
 from particle_methods.blob.rings import uniform_ring_radius
+from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import blob as v
 
-CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["blob"]
+CONFIG = read_yaml(Path(__file__).parents[2] / "config" / "config.yaml")["blob"]
 RULES = CONFIG["claims"]  # every tolerance, threshold and cut-off of the claims, as the claims script passes them
 Q = 0.9
 

@@ -14,17 +14,17 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_methods.cross.exact import AggregationSolution
 from particle_methods.cross.methods import SHAPE
 from particle_methods.ltp.shapes import shape_named
+from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import cross as v
 from particle_replication.workflow import LoadGuard, load_results, save_results
 
 ROOT = Path(__file__).parents[2]
-CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["cross"]
+CONFIG = read_yaml(ROOT / "config" / "config.yaml")["cross"]
 RULES = CONFIG["claims"]
 BLOB = [f"blob, m = {m}" for m in CONFIG["blob"]["orders"]]
 METHODS = ["SPD, equal masses", "SPD, grid weights", "particle method", "Godunov for F", *BLOB, "LTP", "SP"]

@@ -7,18 +7,18 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_methods.ltp import potential, simulate
 from particle_methods.ltp.measures import concentration_series, profile_changes
 from particle_methods.ltp.potentials import Potential
 from particle_methods.ltp.theorems import theorem1_time_error, theorem3_atomic, theorem4_differences
+from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import ltp as v
 
 ROOT = Path(__file__).parents[2]
-CONFIG = yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["ltp"]
-QUICK = yaml.safe_load((ROOT / "config" / "quick.yaml").read_text())["ltp"]
+CONFIG = read_yaml(ROOT / "config" / "config.yaml")["ltp"]
+QUICK = read_yaml(ROOT / "config" / "quick.yaml")["ltp"]
 NONAFFINE, RULES, CONCENTRATION = CONFIG["nonaffine"], CONFIG["claims"], CONFIG["concentration"]
 
 

@@ -8,14 +8,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_methods.ltp.measures import excess_variation, peak_count
+from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
 from particle_replication.steady import first_steady_time
 from particle_replication.verdicts import ltp as v
 
-CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["ltp"]
+CONFIG = read_yaml(Path(__file__).parents[2] / "config" / "config.yaml")["ltp"]
 QUADRATIC, NONAFFINE = CONFIG["quadratic"], CONFIG["nonaffine"]
 FIG5, FIG8, CONCENTRATION = CONFIG["fig5"], CONFIG["fig8"], CONFIG["concentration"]
 RULES = CONFIG["claims"]  # the tolerances no figure's section holds, as the claims script passes them

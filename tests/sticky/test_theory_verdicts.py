@@ -6,16 +6,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_methods.norms import w1_to_measure
 from particle_methods.sticky.spd import spd_positions, velocities_from_flux
 from particle_methods.sticky.theory import CubicDiracSolution, cubic_flux
 from particle_replication.claims import ROUNDING
+from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import sticky_theory as v
 
-CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["sticky"]["theory"]
+CONFIG = read_yaml(Path(__file__).parents[2] / "config" / "config.yaml")["sticky"]["theory"]
 L_C, L_USH, L_LC = 3.0354, 2.2546, 2.5  # the p-system of the config (nu = 0.5, kappa = 5)
 
 

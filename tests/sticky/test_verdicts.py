@@ -8,7 +8,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_methods.finite_volume.fluxes import burgers_flux, concave_flux
 from particle_methods.sticky import admissibility_violation, spd_state
@@ -17,10 +16,11 @@ from particle_methods.sticky.hopf import hopf_gap
 from particle_methods.sticky.spd import spd_positions
 from particle_methods.systems import MINUS, PLUS, PSystem
 from particle_replication.claims import ROUNDING
+from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
 from particle_replication.verdicts import sticky as v
 
-CONFIG = yaml.safe_load((Path(__file__).parents[2] / "config" / "config.yaml").read_text())["sticky"]
+CONFIG = read_yaml(Path(__file__).parents[2] / "config" / "config.yaml")["sticky"]
 RULES = CONFIG["claims"]  # the tolerances no figure's section holds, as the claims script passes them
 N = 2.0 ** np.arange(1, 10)
 BAND = (0.25, 1.0)
