@@ -12,10 +12,9 @@ from unittest import mock
 
 import numpy as np
 import pytest
-import yaml
 
 from particle_methods.ltp import potential
-from particle_replication import registry
+from particle_replication import paths, registry
 from particle_replication.configuration import check_configuration, overlay
 from particle_replication.paths import read_yaml
 from particle_replication.rates import Recorder
@@ -130,7 +129,7 @@ def _test_module(path: str, config: dict | None = None):
     if config is None:
         spec.loader.exec_module(module)
     else:
-        with mock.patch.object(yaml, "safe_load", lambda *_: config):
+        with mock.patch.object(paths, "read_yaml", lambda *_: config):  # the module reads its config through it
             spec.loader.exec_module(module)
     return module
 
