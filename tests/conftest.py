@@ -24,6 +24,14 @@ def pytest_runtest_setup(item):
         _LOWERED.append(True)
 
 
+def pytest_report_header(config):
+    """A warning in the header where the machine's SLURM would slow every Snakemake start (tests/ci_tools.py)."""
+    import ci_tools
+
+    warning = ci_tools.slurm_wait_warning()
+    return [f"warning: {warning}"] if warning else []
+
+
 @pytest.fixture
 def rng():
     return np.random.default_rng(20261122)
