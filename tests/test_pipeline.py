@@ -24,8 +24,9 @@ QUICK = ROOT / "config" / "quick.yaml"
 EXPECTED_FIGURES = registry.figure_outputs()
 # Every claim of the quick run, with its expected verdict (`snakemake verify` checks them).
 EXPECTED_VERDICTS = read_verdicts(ROOT / "config" / "verdicts.yaml", "quick")
+CONFIG = read_yaml(ROOT / "config" / "config.yaml")
 # The smallest margin that is not fragile, also the factor of a value's spread that its pin allows.
-CONFIG_MARGIN = read_yaml(ROOT / "config" / "config.yaml")["robustness"]["margin_min"]
+CONFIG_MARGIN = CONFIG["robustness"]["margin_min"]
 
 # One xdist worker runs this module (its quick run is a module fixture); the unit tests share the other cores.
 pytestmark = [pytest.mark.pipeline, pytest.mark.xdist_group("pipeline")]
@@ -189,7 +190,7 @@ def test_another_machine_gives_the_same_verdicts(repository, workdir, tmp_path):
     from particle_replication.claims import read_claims, read_spreads, read_values, value_differences
     from particle_replication.robustness import compare, probe, variant_configuration, variant_environment
 
-    variant = read_yaml(ROOT / "config" / "config.yaml")["robustness"]["variants"]["combined"]
+    variant = CONFIG["robustness"]["variants"]["combined"]
     environment = variant_environment(variant, checkout_environment(repository))
     effective = probe(environment)
     assert effective["numba_threads"] == 1 and effective["numba_cpu"] == "haswell", effective
