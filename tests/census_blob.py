@@ -30,7 +30,6 @@ A = np.array
 # Good values: a few particles, one short time step.
 PSI1, PSI2 = mollifiers.mollifier(4, 1), mollifiers.mollifier(4, 2)
 CUBIC = kernels.kernel_1d("cubic", PSI1, 0.3)
-NEWTON_2D = kernels.kernel_2d("newtonian", PSI2, 0.5)
 DATA1 = initial.data_1d("smooth20")
 DATA2 = initial.data_2d("regular")
 TIMES = A([0.0, 0.05])
@@ -40,7 +39,6 @@ MASSES3 = A([0.25, 0.5, 0.25])
 PLANE = A([[0.0, 0.0], [0.5, 0.0], [0.0, 0.5]])
 SMALL_RUN = solver.run_1d("smooth20", "cubic", 0.5, TIMES)
 CUBIC_ARRAYS = dict(zip(("kinds", "coefficients", "parameters", "tables", "steps"), CUBIC.arrays()))
-TABLE = radial.tabulate(lambda r: 4.0 * r**2, PSI2, 0.5, 2.0, 21)
 
 
 def QUARTIC_LAPLACIAN(r):

@@ -18,7 +18,6 @@ BUMP = hull.Bump(2.0, -0.4, 0.3, 2)
 #: Two indicator bumps: a hull solution of these costs a few ms (two_bumps: about 50 ms), and they merge at t = 1.25.
 PAIR = hull.BumpData("pair", (hull.Bump(2.0, -0.5, 0.2, 0), hull.Bump(2.0, 0.5, 0.2, 0)))
 HULL = hull.HullSolution(PAIR, 1.0)
-RANGES = aggregates.level_ranges(HULL)
 ATOMS = A([-0.5, -0.1, 0.1, 0.5])
 ATOM_MASSES = A([0.3, 0.5, 0.5, 0.3])
 SPD_X, SPD_M = methods.spd_equal("smooth20", 4, 0.5)

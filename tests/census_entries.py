@@ -13,20 +13,9 @@ from census import Entry as E
 from census import nan_function
 
 from particle_methods import convergence, norms, perturbation, systems, threads, validation
-from particle_methods.blob import (
-    initial,
-    kernels,
-    mollifiers,
-    solver,
-)
-from particle_methods.cross import aggregates, hull, methods
-from particle_methods.cross import exact as cross_exact
 from particle_methods.finite_volume import fluxes
 from particle_methods.finite_volume import grids as fv_grids
 from particle_methods.finite_volume import scalar as fv_scalar
-from particle_methods.ltp import initial as ltp_initial
-from particle_methods.ltp import potentials, shapes
-from particle_methods.ltp import solver as ltp_solver
 from particle_methods.sticky import (
     admissibility,
     cases,
@@ -57,36 +46,16 @@ def restoring_threads(call):
     return restored
 
 
-# Shared good values.
-PSI1, PSI2 = mollifiers.mollifier(4, 1), mollifiers.mollifier(4, 2)
-CUBIC = kernels.kernel_1d("cubic", PSI1, 0.3)
-LINE = np.linspace(-1.0, 1.0, 5)[:, None]
-SMALL_RUN = solver.run_1d("smooth20", "cubic", 0.5, [0.0, 0.05])
-DATA1 = initial.data_1d("smooth20")
-DATA2 = initial.data_2d("regular")
+# Shared good values (the census's parts keep their own: tests/census_blob.py and the others).
 SYSTEM = systems.PSystem(nu=1.0, kappa=1.0)
 EDGES = np.linspace(-1.0, 1.0, 11)
-CROSS = cross_exact.AggregationSolution("smooth20", 0.5)
-HULL = hull.HullSolution("two_bumps", 1.2)
-BUMP = hull.Bump(1.0, 0.0, 1.0, 2)
-BUMPS = hull.bump_data("two_bumps")
-SPD_X, SPD_M = methods.spd_grid("smooth20", 1 / 8, 0.5)
-RANGES = aggregates.level_ranges(HULL)
 LAPLACE = measures.Laplace()
 X3 = A([-1.0, 0.0, 1.0])
 V3 = A([1.0, 0.0, -1.0])
 CONFIG = cases.psystem_initial_configuration("rarefaction", 0.0, 4)
-RHO2 = ltp_initial.density_named("rho2")
-QUADRATIC = potentials.potential("quadratic")
-POWER = potentials.potential("power", a=1.5)
-SIM = ltp_solver.simulate("rho2", POWER, 0.25, 0.05, 0.1, record_every=1)
-PARTICLES = SIM.at(0)
-B3 = shapes.B3
 BURGERS = fluxes.BURGERS
 SCALAR_CASE = cases.SCALAR_CASES["burgers_two_atoms"]
 TIMES = A([0.0, 0.05])
-KINDS_1D, COEFFICIENTS_1D, PARAMETERS_1D, TABLES_1D, STEPS_1D = CUBIC.arrays()
-KINDS_2D = kernels.kernel_2d("newtonian", PSI2, 0.5).arrays()
 
 
 def method(factory, name):

@@ -273,8 +273,7 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
 
     from particle_replication.workflow import load_results
 
-    for name in ("results/blob/fig7.npz", "results/blob/fig8.npz", *(f"figures/blob/fig{n}.{ext}" for n in (7, 8)
-                                                                     for ext in ("pdf", "png"))):
+    for name in ("results/blob/fig8.npz", "figures/blob/fig8.pdf", "figures/blob/fig8.png"):  # one solver's result
         (workdir / name).unlink()
     start = time.time()
     # Ctrl-C's default action restored in the run: pytest started in the background (`pytest &`) ignores SIGINT,
@@ -297,11 +296,11 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     assert not list(workdir.rglob("*.tmp"))
     for path in (workdir / "results").rglob("*.npz"):
         assert load_results(path)  # whatever is on disk is complete
-    # Whether a solver job was cut or had just finished depends on timing; either way the resumed
+    # Whether the solver job was cut or had just finished depends on timing; either way the resumed
     # run does only the unfinished part of the blob figures and nothing of the other studies.
     plan = planned_rules(snakemake(workdir, "--dry-run"))
     assert "plot_blob_fig8" in plan
-    assert plan <= {"data_blob_fig7", "data_blob_fig8", "plot_blob_fig7", "plot_blob_fig8", "blob_claims",
+    assert plan <= {"data_blob_fig8", "plot_blob_fig8", "blob_claims",
                     "claims_table", "report_snippets", "notebook", "manuscript", "verdicts", "report_page",
                     "notebook_page", "all"}
     assert snakemake(workdir).returncode == 0
