@@ -38,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
-from fuzzing import BAD_ARRAYS, BAD_SCALARS, all_finite
+from fuzzing import BAD_ARRAYS, BAD_SCALARS, all_finite, built
 
 import particle_methods
 
@@ -96,7 +96,7 @@ class Entry:
     def kind(self, parameter: str) -> str:
         if parameter in self.kinds:
             return self.kinds[parameter]
-        value = self.good[parameter]
+        value = built(self.good[parameter])
         if isinstance(value, (bool, np.bool_)):
             return "flag"
         if isinstance(value, (int, np.integer)):
@@ -121,7 +121,7 @@ class Entry:
         elif kind == "count":
             bad, extreme = BAD_SCALARS, COUNT_EXTREMES
         elif kind == "array":
-            bad, extreme = BAD_ARRAYS, array_extremes(self.good[parameter])
+            bad, extreme = BAD_ARRAYS, array_extremes(built(self.good[parameter]))
         elif kind == "name":
             bad, extreme = BAD_SCALARS, []
         elif kind == "function":
@@ -241,17 +241,18 @@ def census(name: str, entry: Entry, size: int | None = SAMPLE):
     CPU-time limit would otherwise interrupt, and so count as a hang, at every bad call; it must be answered."""
     faulthandler.dump_traceback_later(WALL_BACKSTOP, exit=True)
     try:
-        entry.function(**entry.good)
+        function, good = built(entry.function), built(entry.good)  # good values built on first use (Later)
+        function(**good)
     except Exception as error:  # a good call must be answered: the census reports it, never hides it
         return [("(good call)", None, "other exception", f"{type(error).__name__}: {error}"[:200])]
     finally:
         faulthandler.cancel_dump_traceback_later()
     outcomes = []
-    for parameter in entry.good:
+    for parameter in good:
         names = (parameter, *entry.names.get(parameter, ()))
         for value, must in sampled(name, parameter, entry.values(parameter), size):
-            arguments = {**entry.good, parameter: value}
-            outcome, detail = classify(entry.function, arguments, names, must, entry.documented)
+            arguments = {**good, parameter: value}
+            outcome, detail = classify(function, arguments, names, must, entry.documented)
             outcomes.append((parameter, value, outcome, detail))
     return outcomes
 

@@ -6,24 +6,27 @@ from __future__ import annotations
 
 import numpy as np
 from census import Entry as E
+from fuzzing import Later
 
 from particle_methods.cross import aggregates, distances, exact, hull, methods, profiles
 
 PM = "particle_methods."
 A = np.array
 
-# Good values: the cheapest data and the coarsest grids (h = 1/4: 7 to 9 particles, 8 to 16 cells).
-SMOOTH = exact.AggregationSolution("smooth20", 0.5)
+# Good values: the cheapest data and the coarsest grids (h = 1/4: 7 to 9 particles, 8 to 16 cells); a Later one is
+# built on first use (fuzzing.Later).
+SMOOTH = Later(lambda: exact.AggregationSolution("smooth20", 0.5))
 BUMP = hull.Bump(2.0, -0.4, 0.3, 2)
 #: Two indicator bumps: a hull solution of these costs a few ms (two_bumps: about 50 ms), and they merge at t = 1.25.
 PAIR = hull.BumpData("pair", (hull.Bump(2.0, -0.5, 0.2, 0), hull.Bump(2.0, 0.5, 0.2, 0)))
-HULL = hull.HullSolution(PAIR, 1.0)
+HULL = Later(lambda: hull.HullSolution(PAIR, 1.0))
 ATOMS = A([-0.5, -0.1, 0.1, 0.5])
 ATOM_MASSES = A([0.3, 0.5, 0.5, 0.3])
-SPD_X, SPD_M = methods.spd_equal("smooth20", 4, 0.5)
+SPD = Later(lambda: methods.spd_equal("smooth20", 4, 0.5))
+SPD_X, SPD_M = SPD[0], SPD[1]
 EDGES = np.linspace(-1.0, 1.0, 9)
 F_VALUES = np.linspace(0.02, 0.37, 8)
-PARTICLES = methods.ltp_method("smooth20", 0.25, 0.125, 0.25)
+PARTICLES = Later(lambda: methods.ltp_method("smooth20", 0.25, 0.125, 0.25))
 LEVELS = A([0.0, 0.1, 0.2])
 POLYNOMIAL = profiles.PROFILES["smooth20"]
 # The two-particle pair of spd_merger: heavy clusters at -0.5 and 0.5 that meet at t = 1.

@@ -7,13 +7,14 @@ from __future__ import annotations
 import numpy as np
 from census import Entry as E
 from census import nan_function
+from fuzzing import Later
 
 from particle_methods.ltp import checks, exact, initial, kernels, measures, potentials, shapes, solver, theorems
 
 PM = "particle_methods."
 A = np.array
 
-# Good values: a handful of particles, a few steps.
+# Good values: a handful of particles, a few steps (a Later one is built on first use: fuzzing.Later).
 X3 = A([-1.0, 0.0, 1.0])
 W3 = A([0.2, 0.3, 0.5])
 H3 = A([0.5, 0.5, 0.5])
@@ -21,7 +22,7 @@ RHO2 = initial.density_named("rho2")
 QUADRATIC = potentials.potential("quadratic")
 POWER = potentials.potential("power", a=1.5)
 B3, HAT = shapes.B3, shapes.HAT
-SIM = solver.simulate("rho2", POWER, 0.5, 0.05, 0.1, record_every=1)
+SIM = Later(lambda: solver.simulate("rho2", POWER, 0.5, 0.05, 0.1, record_every=1))
 PARTICLES = SIM.at(0)
 LATER = SIM.at(-1)
 ATOMS, MASSES = initial.golden_atoms(3, -0.9, 0.9)

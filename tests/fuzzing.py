@@ -13,6 +13,7 @@ seconds (a true hang: an endless loop, a deadlock) ends the test process with a 
 from __future__ import annotations
 
 import faulthandler
+import functools
 import os
 import time
 from contextlib import contextmanager
@@ -33,6 +34,42 @@ FUZZ = settings(
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
     derandomize=True,
 )
+
+class Later:
+    """A good value whose building runs compiled kernels (a run, a simulation, an exact solution): built on first
+    use, once. Every pytest-xdist worker imports every test module to collect the tests, and a value built at
+    import compiled its kernels in each (numba, about 20 s of CPU per worker on a fresh clone, the pipeline
+    worker's before its quick run could start); built later, only the worker that runs its tests compiles them.
+    An attribute, an item or a call of a Later value is a Later value too (``SIM.at(0)``, ``SMALL_RUN.times``);
+    :func:`built` gives the value."""
+
+    def __init__(self, build):
+        self._build = build
+
+    @functools.cached_property
+    def value(self):
+        return built(self._build())
+
+    def __getattr__(self, name: str):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return Later(lambda: getattr(self.value, name))
+
+    def __getitem__(self, key):
+        return Later(lambda: self.value[key])
+
+    def __call__(self, *args, **kwargs):
+        return Later(lambda: self.value(*map(built, args), **{key: built(v) for key, v in kwargs.items()}))
+
+
+def built(value):
+    """``value``, built if it is :class:`Later` (its entries too, for a dict of good arguments)."""
+    if isinstance(value, Later):
+        return value.value
+    if isinstance(value, dict) and any(isinstance(item, Later) for item in value.values()):
+        return {key: built(item) for key, item in value.items()}
+    return value
+
 
 # Values no public function should accept silently where a number or an array is expected.
 BAD_SCALARS = [None, "1", b"1", 1j, float("nan"), float("inf"), -float("inf"), 10**400, -(10**400), [], [1.0, 2.0],

@@ -37,14 +37,14 @@ from particle_methods.ltp.solver import MAX_PAIRS, MAX_RECORDED, MAX_STEPS
 from particle_methods.validation import ParameterTypeError
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from fuzzing import FUZZ, bad_array, bad_scalar, extreme, safe_call, watchdog
+from fuzzing import FUZZ, Later, bad_array, bad_scalar, built, extreme, safe_call, watchdog
 
 RHO1, RHO2, RHO3 = (density_named(name) for name in ("rho1", "rho2", "rho3"))
 QUADRATIC = potential("quadratic")
 POTENTIALS = [QUADRATIC, potential("power", a=1.5), potential("attractive_repulsive", a=3, b=1.1),
               Potential("repulsive x^2/2", (-1.0,), (2.0,)), potential("newtonian")]
 RUN = {"initial": "rho2", "potential": potential("power", a=1.5), "h": 0.25, "dt": 0.05, "t_final": 0.1}
-SIM = simulate(**RUN, record_every=1)
+SIM = Later(lambda: simulate(**RUN, record_every=1))  # built on first use (fuzzing.Later)
 
 short_arrays = st.lists(extreme | st.floats(-2, 2), min_size=1, max_size=3).map(np.array)
 any_value = bad_scalar | bad_array | extreme
@@ -129,6 +129,7 @@ def test_pair_and_record_limits():
 
 
 def test_wrong_types_are_named():
+    sim = built(SIM)
     with pytest.raises(ParameterTypeError, match="initial must be of type InitialDensity, got None"):
         simulate(None, QUADRATIC, 0.1, 0.1, 0.2)
     with pytest.raises(ParameterTypeError, match="initial must be of type InitialDensity"):
@@ -136,11 +137,11 @@ def test_wrong_types_are_named():
     with pytest.raises(ParameterTypeError, match="h must be a real number"):
         simulate("rho1", QUADRATIC, 0.1 + 1j, 0.1, 0.2)
     with pytest.raises(ParameterTypeError, match="x must hold real numbers, got dtype complex"):
-        SIM.at(-1).density(np.array([0.1 + 1j]))
+        sim.at(-1).density(np.array([0.1 + 1j]))
     with pytest.raises(ParameterTypeError, match="index must be an integer"):
-        SIM.at(1.0)
+        sim.at(1.0)
     with pytest.raises(ValueError, match="index must lie in"):
-        SIM.at(SIM.steps.size)
+        sim.at(sim.steps.size)
 
 
 def test_second_derivative_is_not_returned_infinite():
@@ -254,7 +255,7 @@ def test_fuzz_particles(centres, weights, widths, x, w):
 @FUZZ
 @given(st.sampled_from(["centres", "weights", "widths", "shape"]), any_value | short_arrays)
 def test_fuzz_particles_bad(name, value):
-    final = SIM.at(-1)
+    final = built(SIM).at(-1)
     valid = {"centres": final.centres, "weights": final.weights, "widths": final.widths, "shape": B3}
     assert one_bad(Particles, valid, name, value) is None
 
@@ -262,7 +263,7 @@ def test_fuzz_particles_bad(name, value):
 @FUZZ
 @given(st.integers(0, 7), st.integers(0, 5), any_value | short_arrays)
 def test_fuzz_kernels(convolution_argument, density_argument, value):
-    particles = SIM.at(-1)
+    particles = built(SIM).at(-1)
     arrays = [particles.centres, particles.weights, particles.widths]
     shape = [B3.breaks, B3.coefficients]
     convolution_arguments = [particles.centres, *arrays, *RUN["potential"].as_arrays(), *shape]
@@ -279,10 +280,11 @@ def test_fuzz_kernels(convolution_argument, density_argument, value):
                         "velocities"]), any_value | short_arrays, any_value | st.integers(-10, 10),
        bad_array | short_arrays)
 def test_fuzz_simulation(field, value, index, x):
-    safe_call(replace, SIM, **{field: value})
-    safe_call(SIM.at, index)
-    safe_call(SIM.densities, x)
-    safe_call(SIM.peak_densities)
+    sim = built(SIM)
+    safe_call(replace, sim, **{field: value})
+    safe_call(sim.at, index)
+    safe_call(sim.densities, x)
+    safe_call(sim.peak_densities)
 
 
 @FUZZ
