@@ -35,6 +35,7 @@ FUZZ = settings(
     derandomize=True,
 )
 
+
 class Later:
     """A good value whose building runs compiled kernels (a run, a simulation, an exact solution): built on first
     use, once. Every pytest-xdist worker imports every test module to collect the tests, and a value built at

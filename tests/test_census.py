@@ -5,6 +5,7 @@ another exception than ValueError/TypeError, refuse without naming the parameter
 import pytest
 from census import FAILURES, HUGE, census, public_callables
 from census_entries import ENTRIES, EXEMPT
+from fuzzing import Later, built
 
 
 def test_every_public_callable_is_in_the_census():
@@ -40,3 +41,13 @@ def test_census(name):
                 for parameter, value, outcome, detail in census(name, ENTRIES[name]) if outcome in FAILURES]
     header = f"{name}: {len(failures)} failing calls (zero-stride arrays of {HUGE} entries included)"
     assert not failures, "\n".join([header, *failures])
+
+
+def test_a_later_good_value_is_built_once_on_first_use():
+    """The census's costly good values (fuzzing.Later): nothing is built at import, and once for every use."""
+    builds = []
+    value = Later(lambda: builds.append(1) or {"x": [1.0, 2.0], "f": lambda y: 2 * y})
+    item, doubled = value["x"][1], value["f"](value["x"][0])
+    assert builds == []  # an item and a call of a Later value are Later too
+    assert built({"a": item, "b": doubled, "c": 3}) == {"a": 2.0, "b": 2.0, "c": 3}
+    assert built(value.keys)() == {"x": None, "f": None}.keys() and builds == [1]

@@ -380,8 +380,8 @@ def test_issue_46_radial_quadrature_checks_its_inputs_and_result():
 def test_issue_46_limits_of_mollifier_order_run_evaluations_and_tracer_offset():
     with pytest.raises(ValueError, match="order = 10.* twice the number of Gaussians"):
         Mollifier(10**400, 1, (4 / 3, -1 / 3), (1.0, 2.0))
+    run = built(SMALL_RUN)
     with pytest.raises(ValueError, match="evaluations must be at most"):
-        run = built(SMALL_RUN)
         BlobRun(run.kernel, 0.5, run.times, run.positions, run.densities, run.masses, 10**400)
     with pytest.raises(ValueError, match="offset = 1e\\+300 must be at most MAX_OFFSET"):
         mass_defect(LINE, np.ones(5), np.full(5, 0.2), CUBIC, 0.05, offset=1e300)
@@ -401,8 +401,8 @@ def test_issue_46_refusals_name_the_parameter():
         newtonian_exact_2d("regular", np.zeros((1, 2)), 0.5, rho0=[1e300])
     with pytest.raises(ValueError, match="weights"):
         PSI1.sums_1d(np.zeros(3), np.zeros(3), np.full(3, -1.7e308), 0.3)
+    run = built(SMALL_RUN)
     with pytest.raises(ValueError, match="masses"):
-        run = built(SMALL_RUN)
         BlobRun(run.kernel, 0.5, run.times, run.positions, None, [], 0)
     with pytest.raises(ValueError, match="points, masses"):
         integrate_particles(np.full((3, 1), 1e300), np.ones(3), np.ones(3), CUBIC, [0.0, 0.1])
