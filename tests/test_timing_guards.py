@@ -1,11 +1,15 @@
 """The guards that keep timings from deciding anything: the fuzz watchdog counts CPU time, not the wall clock,
 and a wall-time check abstains when its timing was disturbed (particle_replication.workflow.LoadGuard)."""
 
+import math
 import time
+import types
 
+import numpy as np
 import pytest
 from fuzzing import watchdog
 
+from particle_replication import workflow
 from particle_replication.workflow import CPU_SHARE_MIN, LoadGuard, disturbance, interleaved
 
 
@@ -54,3 +58,33 @@ def test_interleaved_rounds_time_every_run_and_keep_the_first_results():
 
     seconds, results = interleaved([lambda i=i: run(i) for i in range(3)], 3)
     assert calls == [0, 1, 2] * 3 and results == [0, 10, 20] and all(s >= 0 for s in seconds)
+
+
+def test_a_drift_of_the_machine_during_one_round_reaches_no_best_time_when_every_run_repeats(monkeypatch):
+    """The sticky cost study's instrument: runs of 1, 2 and 4 s (linear in their size) on a machine that is 1.45
+    times slower while the first round times the largest. Timed in one round (the default for runs over
+    REPEAT_BELOW) the drift bends the exponent out of [0.8, 1.2]; timed in every round it is gone."""
+    clock, rounds = [0.0], []
+
+    def run(seconds):
+        slow = 1.45 if len(rounds) < 3 and seconds == 4.0 else 1.0
+        rounds.append(seconds)
+        clock[0] += seconds * slow
+
+    monkeypatch.setattr(workflow, "time", types.SimpleNamespace(perf_counter=lambda: clock[0]))
+    runs = [lambda s=s: run(s) for s in (1.0, 2.0, 4.0)]
+
+    def exponent(best):
+        return float(np.polyfit(np.log([1, 2, 4]), np.log(best), 1)[0])
+
+    once, _ = interleaved(runs, 5)
+    assert rounds == [1.0, 2.0, 4.0] and exponent(once) > 1.2
+    rounds.clear()
+    every, _ = interleaved(runs, 5, repeat_below=math.inf)
+    assert len(rounds) == 15 and every == [1.0, 2.0, 4.0] and exponent(every) == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("repeat_below", [0, -1.0, math.nan, True, "1"])
+def test_interleaved_refuses_a_threshold_that_is_no_positive_number(repeat_below):
+    with pytest.raises(ValueError, match="repeat_below"):
+        interleaved([lambda: None], 2, repeat_below=repeat_below)

@@ -3,10 +3,12 @@
 Every kernel counts its operations as it makes them (the hull's tests, pops, pushes and writes, the rank
 step's examined heads and written entries, summed over the steps of the iterated TSPD): the cost claims
 are decided on those counts, which no machine changes. The same runs are also timed, for a wall-time check
-only: each size runs once untimed (compilation, and the first touch of its memory: a run over 0.2 s is
-timed in one round only, so its page faults would be timed), then the sizes are timed in turn, ``repeats``
-rounds over all of them, keeping each size's best time
-(:func:`~particle_replication.workflow.interleaved`). A :class:`~particle_replication.workflow.LoadGuard`
+only: each size runs once untimed (compilation, and the first touch of its memory), then the sizes are timed
+in turn, ``repeats`` rounds over all of them, every run in every round, keeping each size's best time
+(:func:`~particle_replication.workflow.interleaved`). The runs are kept short (one TSPD step per run at the
+largest sizes, under a second), so that each size has many rounds: on a shared virtual machine the speed
+drifts by 20 to 45 % over seconds while no other process runs here, and a size timed in one long round took
+that drift into the exponent. A :class:`~particle_replication.workflow.LoadGuard`
 records whether the timed kernels had a core to themselves, and the CPU is recorded beside the times. The
 kernels are called directly, past the input checks of the public functions, so that what is measured is the
 algorithm's.
@@ -19,6 +21,7 @@ Fixing the thresholds at the start serves every block from the heap, so that all
 
 import ctypes
 import ctypes.util
+import math
 
 import numpy as np
 
@@ -66,7 +69,8 @@ def run(p, output):
     for count in p["steps_values"]:
         add("steps", mspd_positions, x0, system, 0.001, count, True)
     with LoadGuard() as guard:
-        seconds, counted = interleaved([run for runs in series.values() for run in runs], p["repeats"], guard)
+        seconds, counted = interleaved([run for runs in series.values() for run in runs], p["repeats"], guard,
+                                      repeat_below=math.inf)
     seconds, counted = iter(seconds), iter(counted)
     times = {name: np.array([next(seconds) for _ in runs]) for name, runs in series.items()}
     operations = {name: np.array([next(counted) for _ in runs], dtype=np.int64) for name, runs in series.items()}

@@ -65,18 +65,21 @@ REPEAT_BELOW = 0.2
 MAX_REPEATS = 100
 
 
-def interleaved(runs, repeats: int, guard=None):
+def interleaved(runs, repeats: int, guard=None, repeat_below: float = REPEAT_BELOW):
     """(best seconds, results) of the callables ``runs``, timed in ``repeats`` rounds over all of them, so that a
     passing disturbance of the machine hits every size alike rather than one; a run longer than
-    :data:`REPEAT_BELOW` is timed in the first round only. ``results`` are those of the first round;
-    ``guard`` (a :class:`LoadGuard`) samples the load before every run. Compile and warm the kernels first:
-    the first round is timed too. At most :data:`MAX_REPEATS` rounds."""
+    ``repeat_below`` seconds (:data:`REPEAT_BELOW`; ``math.inf`` times every run in every round) is timed in the
+    first round only. ``results`` are those of the first round; ``guard`` (a :class:`LoadGuard`) samples the
+    load before every run. Compile and warm the kernels first: the first round is timed too. At most
+    :data:`MAX_REPEATS` rounds."""
     if isinstance(repeats, bool) or not isinstance(repeats, int) or not 1 <= repeats <= MAX_REPEATS:
         raise ValueError(f"repeats must be an integer from 1 to MAX_REPEATS = {MAX_REPEATS}, got {repeats!r}")
+    if isinstance(repeat_below, bool) or not isinstance(repeat_below, (int, float)) or not repeat_below > 0:
+        raise ValueError(f"repeat_below must be a positive number of seconds, got {repeat_below!r}")
     best, results = [math.inf] * len(runs), [None] * len(runs)
     for round_ in range(repeats):
         for i, run in enumerate(runs):
-            if round_ and best[i] >= REPEAT_BELOW:
+            if round_ and best[i] >= repeat_below:
                 continue
             if guard is not None:
                 guard.sample()
