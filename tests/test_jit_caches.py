@@ -34,3 +34,50 @@ def test_an_edit_in_another_module_clears_every_cache(tmp_path):
     (tmp_path / "a.py").write_text("x = 3\n")
     assert clear_stale_caches(tmp_path, stamp)
     assert not any(cache.exists() for cache in caches)
+
+
+#: A process that compiles the kernel of ``kernel.py`` in ``sys.argv[1]``: it says it is ready (a file), starts once
+#: ``go`` exists there, each compilation made to last half a second, and prints whether it compiled (cache misses)
+#: or loaded the other's cache (hits).
+COMPILER = """
+import os, sys, time
+from pathlib import Path
+folder = Path(sys.argv[1])
+sys.path.insert(0, str(folder))
+import kernel
+dispatcher = kernel.twice
+slow = dispatcher._compiler.compile
+def compile_slowly(*arguments):
+    time.sleep(0.5)
+    return slow(*arguments)
+dispatcher._compiler.compile = compile_slowly
+(folder / f"ready-{os.getpid()}").touch()
+while not (folder / "go").exists():
+    time.sleep(0.005)
+assert dispatcher(2.0) == 4.0
+print(sum(dispatcher.stats.cache_misses.values()), sum(dispatcher.stats.cache_hits.values()))
+"""
+
+
+def test_two_processes_asking_for_a_kernel_at_once_compile_it_once(tmp_path):
+    """Two processes start together on an empty cache: one compiles (made to take half a second), the other waits
+    for its lock and loads its cache. Without the lock (numba's own njit) both compile."""
+    import subprocess
+    import sys
+    import time
+
+    for jit, expected in (("particle_methods.jit", [(1, 0), (0, 1)]), ("numba", [(1, 0), (1, 0)])):
+        folder = tmp_path / jit
+        folder.mkdir()
+        (folder / "kernel.py").write_text(f"from {jit} import njit\n\n@njit(cache=True)\ndef twice(x):\n"
+                                          "    return 2.0 * x\n")
+        processes = [subprocess.Popen([sys.executable, "-c", COMPILER, str(folder)], stdout=subprocess.PIPE,
+                                      text=True) for _ in range(2)]
+        deadline = time.monotonic() + 120
+        while len(list(folder.glob("ready-*"))) < 2 and time.monotonic() < deadline:
+            time.sleep(0.005)
+        (folder / "go").touch()
+        counts = sorted((tuple(map(int, process.communicate(timeout=120)[0].split())) for process in processes),
+                        reverse=True)
+        assert all(process.returncode == 0 for process in processes)
+        assert counts == expected, jit
