@@ -82,7 +82,7 @@ NO_RUNTIME = {"_nrt": False}
 _HELD: set[str] = set()
 
 
-def compiled_once(dispatcher):
+def _compiled_once(dispatcher):
     """``dispatcher`` (a cached numba kernel), compiled by one process at a time: the first compilation of a
     signature holds a lock file beside the kernel's cache index (``<index>.lock``, ``fcntl.flock``), so that
     another process asking for the same kernel waits, then loads what the first one cached instead of
@@ -123,11 +123,11 @@ def compiled_once(dispatcher):
 
 def njit(function=None, **overrides):
     """``numba.njit`` with the package's options, compiled by one process at a time
-    (:func:`compiled_once`); usable bare or with overrides."""
+    (:func:`_compiled_once`); usable bare or with overrides."""
     options = {**JIT_OPTIONS, **overrides}
     if function is None:
-        return lambda f: compiled_once(numba.njit(**options)(f))
-    return compiled_once(numba.njit(**options)(function))
+        return lambda f: _compiled_once(numba.njit(**options)(f))
+    return _compiled_once(numba.njit(**options)(function))
 
 
 def njit_threaded(function):
