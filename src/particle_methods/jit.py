@@ -109,7 +109,10 @@ def _compiled_once(dispatcher):
             except OSError:  # a cache directory we cannot write to: numba caches nothing there either
                 return compile_signature(sig)
             with handle:
-                fcntl.flock(handle, fcntl.LOCK_EX)
+                try:
+                    fcntl.flock(handle, fcntl.LOCK_EX)
+                except OSError:  # a file system without locks: compile without one
+                    return compile_signature(sig)
                 _HELD.add(lock)
                 try:
                     return compile_signature(sig)
