@@ -88,9 +88,10 @@ def _compiled_once(dispatcher):
     another process asking for the same kernel waits, then loads what the first one cached instead of
     compiling it again. Pipeline jobs and test workers that start together compiled the same kernels at
     once: in a cold quick run, 14 kernels were compiled in two jobs or more, and the lock took the compile
-    time from 103 to 64 s of CPU (benchmarks/README.md). numba's own compiler lock is taken first, so threads of one process queue there
-    and never hold one file lock each while waiting for the other's. Without a cache (``NUMBA_DISABLE_JIT``)
-    or without ``fcntl`` (not POSIX), ``dispatcher`` is returned as it is."""
+    time from 103 to 64 s of CPU (benchmarks/README.md). numba's own compiler lock is taken first, so
+    threads of one process queue there and never hold one file lock each while waiting for the other's.
+    Without a cache (``NUMBA_DISABLE_JIT``) or without ``fcntl`` (not POSIX), ``dispatcher`` is returned as
+    it is."""
     index = getattr(getattr(getattr(dispatcher, "_cache", None), "_cache_file", None), "_index_path", None)
     if fcntl is None or index is None:
         return dispatcher
