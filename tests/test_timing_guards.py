@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from fuzzing import watchdog
 
-from particle_replication import workflow
+from particle_replication import cost_timing, workflow
 from particle_replication.rates import order
 from particle_replication.workflow import CPU_SHARE_MIN, LoadGuard, disturbance, interleaved
 
@@ -89,3 +89,29 @@ def test_a_drift_of_the_machine_during_one_round_reaches_no_best_time_when_every
 def test_interleaved_refuses_a_threshold_that_is_no_positive_number(repeat_below):
     with pytest.raises(ValueError, match="repeat_below"):
         interleaved([lambda: None], 2, repeat_below=repeat_below)
+
+
+#: The cost study's sections at tiny sizes: every series, three sizes each.
+TINY_COST = {"hull_n": [100, 200, 400], "rank_n": [100, 200, 400], "tspd_n": [100, 200, 400], "tspd_steps": 1,
+             "steps_values": [1, 2, 4], "steps_n": 50, "repeats": 1}
+
+
+def test_the_cost_study_times_the_same_runs_in_a_fresh_process():
+    """The second process (a fresh interpreter) runs the same nudged data: the same counted operations, a best
+    time for every size of every series, and the load guard's readings."""
+    made = cost_timing.replicated(TINY_COST, 2, ulps=4, seed=1)
+    assert len(made) == 2 and made[0]["operations"] == made[1]["operations"]
+    for process in made:
+        assert all(len(process["times"][name]) == 3 and min(process["times"][name]) > 0 for name in cost_timing.SERIES)
+        assert set(process["readings"]) == {"cpu_share", "load", "cores", "threads"}
+
+
+def test_a_timing_process_that_counts_other_operations_is_refused(monkeypatch):
+    """Two processes on the same data must count the same operations; this one's (replaced here) differ."""
+    measured = cost_timing.measure(TINY_COST)
+    measured["operations"]["hull"][0] += 1
+    monkeypatch.setattr(cost_timing, "measure", lambda *args: measured)
+    with pytest.raises(RuntimeError, match="different operations"):
+        cost_timing.replicated(TINY_COST, 2)
+    with pytest.raises(ValueError, match="processes"):
+        cost_timing.replicated(TINY_COST, 0)

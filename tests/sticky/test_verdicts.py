@@ -393,17 +393,22 @@ QUIET = {"cpu": np.array("a test CPU (AVX2, 2 cores)"), "cpu_share": np.array(0.
          "cores": np.array(2), "threads": np.array(1)}
 
 
-def cost(power, time_power=1.0, **readings):
+def cost(power, time_power=1.0, processes=3, **readings):
     """The cost study's results: every kernel counting operations linear in its size but the hull's (``power``),
-    every time linear in the operations but the hull's (``time_power``)."""
+    every time linear in the operations but the hull's (``time_power``), timed alike in ``processes``
+    processes (one row of times each)."""
     sizes = np.array([1e3, 1e4, 1e5, 1e6])
     linear = (4 * sizes).astype(np.int64)
     hull = (3 * sizes**power).astype(np.int64)
+
+    def rows(seconds):
+        return np.tile(seconds, (processes, 1))
+
     return {"hull_n": sizes, "hull_operations": hull, "hull_free_operations": linear,
-            "hull_times": 1e-9 * hull**time_power, "hull_free_times": 1e-9 * linear, "rank_n": sizes,
-            "rank_operations": linear, "rank_times": 1e-9 * linear, "tspd_n": sizes, "tspd_operations": linear,
-            "tspd_times": 1e-9 * linear, "tspd_steps": 20, "steps_values": sizes, "steps_operations": linear,
-            "steps_times": 1e-9 * linear, "steps_n": 1000, **QUIET, **readings}
+            "hull_times": rows(1e-9 * hull**time_power), "hull_free_times": rows(1e-9 * linear), "rank_n": sizes,
+            "rank_operations": linear, "rank_times": rows(1e-9 * linear), "tspd_n": sizes,
+            "tspd_operations": linear, "tspd_times": rows(1e-9 * linear), "tspd_steps": 20, "steps_values": sizes,
+            "steps_operations": linear, "steps_times": rows(1e-9 * linear), "steps_n": 1000, **QUIET, **readings}
 
 
 def test_cost_claims_fail_for_a_quadratic_kernel():
@@ -426,6 +431,27 @@ def test_wall_time_decides_only_its_check_and_abstains_on_a_loaded_machine():
     check = next(claim for claim in loaded if claim.id == "sticky.cost.wall_time")
     assert check.status == "abstain" and "0.60 of a core" in check.claim
     assert {claim.status for claim in loaded if claim.id != check.id} == {"pass"}
+
+
+def wall_time(d):
+    return next(claim for claim in v.cost_claims(d, quiet(), 3, (0.8, 1.2)) if claim.id == "sticky.cost.wall_time")
+
+
+def test_wall_time_is_decided_only_when_every_timing_process_gives_the_same_verdict():
+    """The largest TSPD run 3 times slower in one timing process of three (its memory, not the algorithm: the
+    exponent over the window's two decades moves by log10(3) / 2 = 0.24): that process alone would fail the
+    check, the three abstain and say which series split them; slower in all three, the check fails."""
+    one = cost(1.0)
+    one["tspd_times"][0, -1] *= 3.0
+    alone = wall_time({**one, "tspd_times": one["tspd_times"][:1]})
+    assert alone.status == "fail" and float(alone.measured) == pytest.approx(1.24, abs=0.01)
+    split = wall_time(one)
+    assert split.status == "abstain" and "exponent of tspd_n on both sides" in split.claim
+    assert float(split.measured) == pytest.approx(1.0)  # the median of 1.24, 1 and 1
+    every = cost(1.0)
+    every["tspd_times"][:, -1] *= 3.0
+    assert wall_time(every).status == "fail"
+    assert wall_time(cost(1.0)).status == "pass"
 
 
 PREDICTIONS = {"spd_burgers_two_atoms": (1, 0), "spd_concave_laplace": (1, 1.0),
