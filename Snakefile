@@ -14,12 +14,11 @@ config/quick.yaml does. Each configuration writes under its own `output_root`.
 
 from pathlib import Path
 
-workflow.configfile(str(Path(workflow.basedir) / "config" / "config.yaml"))
-
 
 report: "report/workflow.rst"
 
 
+# Reads config/config.yaml and lays what --configfile and --config give over it, then checks the result.
 include: "rules/common.smk"
 
 

@@ -21,8 +21,6 @@ from pathlib import Path
 
 import numpy as np
 
-from particle_methods import perturbation
-from particle_methods.threads import available, use_threads
 
 from .registry import result
 
@@ -34,6 +32,11 @@ def logged(log_path, threads: int = 1, nudge=None):
     process may use), and report the threads and the wall time. A data job passes the configuration's
     ``nudge`` ({ulps, seed}): its initial data are then moved by that many units in the last place
     (:mod:`particle_methods.perturbation`; 0 ulps: unchanged), as the robustness run's nudged variants ask."""
+    # Imported here, not with the module: they load numba, which the workflow's start (every Snakemake run parses
+    # this module) and the plot jobs do not need.
+    from particle_methods import perturbation
+    from particle_methods.threads import available, use_threads
+
     log_path = Path(log_path)
     log_path.parent.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
