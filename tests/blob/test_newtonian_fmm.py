@@ -44,13 +44,7 @@ def random_disk(rng, n):
 def near_arguments(points, masses, kernel):
     """The arguments newtonian_sums gives the compiled near field (points sorted by cell key)."""
     _, coefficients, widths, _, _ = kernel.arrays()
-    inverse = 1.0 / widths**2
-    cutoff = newtonian_fmm.GAUSS_CUTOFF * widths.max()
-    x, y = np.ascontiguousarray(points[:, 0]), np.ascontiguousarray(points[:, 1])
-    keys, columns = newtonian_fmm._cell_keys(x, y, cutoff / newtonian_fmm.CELL_SPLIT)
-    order = np.argsort(keys, kind="stable")
-    return (x[order], y[order], masses[order], keys[order], columns, coefficients / (2 * math.pi),
-            coefficients * inverse / math.pi, inverse, cutoff * cutoff)
+    return newtonian_fmm.near_field(points, masses, coefficients, widths)[2]
 
 
 @pytest.fixture(scope="module")
@@ -274,3 +268,18 @@ def test_ode_solve_is_the_same_on_either_path():
     assert np.abs(fmm.positions[-1] - fmm.positions[0]).max() > 1e-3  # the particles moved
     np.testing.assert_allclose(fmm.positions, direct.positions, rtol=0, atol=1e-12)
     np.testing.assert_allclose(fmm.densities, direct.densities, rtol=0, atol=1e-12 * np.abs(direct.densities).max())
+
+
+def test_the_narrower_gaussian_taken_as_the_square_of_the_wider_matches_its_own_exponential(disk_points):
+    """(4.2)'s widths 1 and sqrt(2): the narrower Gaussian's exponential is the wider's squared (one exponential a
+    pair), within the 1.9e-14 relative that sqrt(2)^2 = 2 + 4.4e-16 allows at the cut-off; each Gaussian's own
+    exponential (powers -1, the path of widths whose squares are no power-of-two multiples) gives the same sums."""
+    arguments = near_arguments(*disk_points, kernel_2d("newtonian", PSI, 0.02))
+    powers = arguments[8]
+    np.testing.assert_array_equal(powers, [1, 0])
+    np.testing.assert_array_equal(newtonian_fmm._squarings([1.0, 1 / 1.5**2]), [-1, 0])  # widths 1 and 1.5
+    squared = newtonian_fmm.near_sums(arguments, 1)[0]
+    own = newtonian_fmm.near_sums((*arguments[:8], np.full_like(powers, -1), arguments[9]), 1)[0]
+    for one, two in zip(squared[:3], own[:3]):
+        assert np.abs(one - two).max() <= 1e-14 * np.abs(two).max()
+    assert squared[3] == own[3]  # the closest pair

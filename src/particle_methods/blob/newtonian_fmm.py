@@ -137,11 +137,30 @@ ACCUMULATORS = 16
 _ROW_BUFFER = 4096
 
 
+#: Most squarings of the widest Gaussian's exponential that stand for a narrower one (:func:`_squarings`).
+MAX_SQUARINGS = 4
+
+
+def _squarings(inverse) -> np.ndarray:
+    """For the Gaussians' a_k = 1/s_k^2: s_k squarings when a_k = 2^{s_k} min(a) to rounding (s_k <= MAX_SQUARINGS),
+    -1 when a_k is no such multiple. e^{-a_k r^2} is then (e^{-min(a) r^2})^(2^{s_k}): one exponential per pair for
+    the widths (1, sqrt(2)) of (4.2), whose squares are 1 and 2 up to the rounding of sqrt(2)^2 (2 + 4.4e-16): the
+    narrower Gaussian, taken as the wider's square, is exp(-r^2/s^2) for an s^2 within 2.2e-16 relative of the
+    rounded width's: a relative error of r^2/s^2 x 2.2e-16, at most 1.9e-14 at the cut-off (r^2/s^2 = 84.5, where
+    the term is e^{-84.5}), beside the 8e-16 of squaring an exponential correct to 4e-16."""
+    inverse = np.asarray(inverse, dtype=np.float64)
+    ratios = inverse / inverse.min()
+    powers = np.round(np.log2(ratios))
+    exact = (powers <= MAX_SQUARINGS) & (np.abs(ratios - 2.0**powers) <= 8 * np.finfo(float).eps * ratios)
+    return np.where(exact, powers, -1).astype(np.int64)
+
+
 @njit
-def _row_terms(xi, yi, x, y, lo, hi, g_weights, l_weights, inverse, cutoff2, wx, wy, wd, r2):
+def _row_terms(xi, yi, x, y, lo, hi, g_weights, l_weights, inverse, powers, cutoff2, wx, wy, wd, r2, base, e):
     """Partners lo <= j < hi of a particle at (xi, yi): sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j) into (wx, wy)
     and sum_k l_k e^{-a_k r^2} into wd, zero beyond the cut-off; loops without branches, so that LLVM
-    vectorises them (r2 is a buffer)."""
+    vectorises them (r2, base and e are buffers). A Gaussian with powers[k] = s >= 0 (:func:`_squarings`) takes
+    the widest's exponential squared s times, one with -1 its own exponential."""
     count = hi - lo
     for j in range(count):
         dx = xi - x[lo + j]
@@ -149,12 +168,24 @@ def _row_terms(xi, yi, x, y, lo, hi, g_weights, l_weights, inverse, cutoff2, wx,
         r2[j] = dx * dx + dy * dy
         wx[j] = 0.0
         wd[j] = 0.0
+    widest = inverse.min()
+    if powers.max() >= 0:
+        for j in range(count):
+            base[j], _ = exp_minus_and_complement(r2[j] * widest)
     for k in range(inverse.size):
         a, g, lap = inverse[k], g_weights[k], l_weights[k]
+        if powers[k] < 0:
+            for j in range(count):
+                e[j], _ = exp_minus_and_complement(r2[j] * a)
+        else:
+            for j in range(count):
+                e[j] = base[j]
+            for _ in range(powers[k]):
+                for j in range(count):
+                    e[j] *= e[j]
         for j in range(count):
-            e, _ = exp_minus_and_complement(r2[j] * a)
-            wx[j] += g * e
-            wd[j] += lap * e
+            wx[j] += g * e[j]
+            wd[j] += lap * e[j]
     for j in range(count):
         inside = 1.0 if r2[j] < cutoff2 else 0.0
         g = inside * wx[j] / (r2[j] + 1e-300)
@@ -164,7 +195,8 @@ def _row_terms(xi, yi, x, y, lo, hi, g_weights, l_weights, inverse, cutoff2, wx,
 
 
 @njit
-def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, cutoff2, vx, vy, div, closest):
+def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, powers, cutoff2, vx, vy, div,
+                     closest):
     """Accumulator c: the particles i = c mod ACCUMULATORS (sorted by cell key) and their partners j > i in
     the cells of their own and the next CELL_SPLIT rows; each pair is evaluated once and added to both.
     closest[c] gets the smallest squared distance of these pairs."""
@@ -173,6 +205,8 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
     wy = np.empty(_ROW_BUFFER)
     wd = np.empty(_ROW_BUFFER)
     r2 = np.empty(_ROW_BUFFER)
+    base = np.empty(_ROW_BUFFER)
+    e = np.empty(_ROW_BUFFER)
     self_term = 0.0
     for k in range(l_weights.size):
         self_term += l_weights[k]
@@ -186,7 +220,8 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
             lo = i + 1 if r == row else np.searchsorted(keys, r * columns + max(column - reach, 0))
             for start in range(lo, stop, _ROW_BUFFER):
                 hi = min(start + _ROW_BUFFER, stop)
-                _row_terms(x[i], y[i], x, y, start, hi, g_weights, l_weights, inverse, cutoff2, wx, wy, wd, r2)
+                _row_terms(x[i], y[i], x, y, start, hi, g_weights, l_weights, inverse, powers, cutoff2, wx, wy, wd, r2,
+                           base, e)
                 tx, ty, td = row_share(start, hi, masses, wx, wy, wd)
                 for j in range(hi - start):
                     closest[c] = min(closest[c], r2[j])
@@ -270,7 +305,7 @@ def near_field(positions, masses, coefficients, widths):
     keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
     order = np.argsort(keys, kind="stable")
     arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
-                 cutoff * cutoff)
+                 _squarings(inverse), cutoff * cutoff)
     return order, _near_pair_count(keys[order], columns), arguments
 
 
