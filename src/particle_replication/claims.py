@@ -388,7 +388,8 @@ def summary_line(claims) -> str:
         line = f"Paper claims reproduced: {passed} of {total}." + (f" Also {others}." if others else "")
     else:
         line = "No claim of a paper." + (f" {others[0].upper()}{others[1:]}." if others else "")
-    return line + (f" {abstained} wall-time checks abstained (a loaded machine)." if abstained else "")
+    return line + (f" {abstained} wall-time checks abstained (a loaded machine, or timing processes that "
+                   f"disagreed)." if abstained else "")
 
 
 class Spread(NamedTuple):
@@ -614,7 +615,8 @@ def verify(claims_path, verdicts_path, run: str | None = "full", margin_min: flo
     every difference from the expected verdicts; return the exit code.
 
     Non-zero when a verdict differs from the expected one (a claim the file does not list is expected to pass)
-    or when a listed claim is missing. A check that abstained (a loaded machine) is listed, never a difference.
+    or when a listed claim is missing. A check that abstained (a loaded machine, or timing processes that
+    disagreed) is listed, never a difference.
     ``run`` None: the configuration is none of the repository's runs (``differing``: the keys in which it
     differs), so no verdict is expected of it: the summary is printed and nothing compared.
     """

@@ -21,7 +21,6 @@ from pathlib import Path
 
 import numpy as np
 
-
 from .registry import result
 
 
