@@ -44,7 +44,8 @@ from particle_methods.validation import integer_at_least
 
 from .workflow import LoadGuard, interleaved
 
-#: The timed series, in the order they run: (name, what it times).
+#: The timed series, in the order they run: the hull pass (random data, then with no collision), the rank step, the
+#: iterated TSPD against n and against its number of steps.
 SERIES = ("hull", "hull_free", "rank", "tspd", "steps")
 
 
