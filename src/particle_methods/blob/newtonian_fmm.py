@@ -13,7 +13,7 @@ sums agree with the direct ones to 2.8e-15 of their largest value on the Figure 
 ``benchmarks/bench_fmm.py``).
 The Gaussian terms are below 1e-18 of the raw term beyond ``GAUSS_CUTOFF`` widths s_max
 (e^{-6.5^2} = 4.5e-19), so they are summed exactly over the pairs closer than that, found with a
-cell list of side 6.5 s_max; so is the whole divergence, since the Laplacian of the raw kernel is a
+cell list (cells a third of that wide); so is the whole divergence, since the Laplacian of the raw kernel is a
 Dirac mass (its only share, the self term of i = j, is included). With delta = h^q the pairs within
 6.5 sqrt(2) delta of a particle number about pi (9.2 h^{q-1})^2 ~ h^{-0.2} (about 730 at h = 1/160): the
 near field grows like N^{1.1}.
@@ -52,10 +52,10 @@ CLOSE_FRACTION = 1.0e-3
 #: Below this many particles the near-field loop runs on one thread (measured, benchmarks/bench_threads.py).
 PARALLEL_MIN_PARTICLES = 2000
 #: Most candidate pairs the near field of one call examines (the pairs in each particle's cells of the cell list,
-#: counted before the sums). Measured by benchmarks/bench_fmm.py on an AMD EPYC (AVX2, 2 cores): 19 to 26 ns of
-#: CPU time per pair on one thread (two Gaussian terms), from 4.8 * 10^7 pairs (Figure 5's grid at 1/h = 160) to
-#: 7.9 * 10^8 (1/h = 560, 985,089 points, 14 s per call on 2 cores): a call at the limit takes about 25 s of one
-#: core for its near field, and the FMM (7 s at 10^6 points) beside it. N points within one width examine N^2 / 2.
+#: counted before the sums). Measured by benchmarks/bench_fmm.py on an AMD EPYC (AVX2, 2 cores): 9.4 to 10.8 ns of
+#: CPU time per examined pair on one thread, from 4.8 * 10^7 pairs (Figure 5's grid at 1/h = 160) to
+#: 7.9 * 10^8 (1/h = 560, 985,089 points, 8 s per call on 2 cores): a call at the limit takes about 10 s of one
+#: core for its near field, and the FMM (6.5 s at 10^6 points) beside it. N points within one width examine N^2 / 2.
 MAX_NEAR_PAIRS = 10**9
 
 
@@ -156,51 +156,60 @@ def _squarings(inverse) -> np.ndarray:
 
 
 @njit
-def _row_terms(xi, yi, x, y, lo, hi, g_weights, l_weights, inverse, powers, cutoff2, wx, wy, wd, r2, base, e):
-    """Partners lo <= j < hi of a particle at (xi, yi): sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j) into (wx, wy)
-    and sum_k l_k e^{-a_k r^2} into wd, zero beyond the cut-off; loops without branches, so that LLVM
-    vectorises them (r2, base and e are buffers). A Gaussian with powers[k] = s >= 0 (:func:`_squarings`) takes
-    the widest's exponential squared s times, one with -1 its own exponential."""
-    count = hi - lo
-    for j in range(count):
-        dx = xi - x[lo + j]
-        dy = yi - y[lo + j]
-        r2[j] = dx * dx + dy * dy
+def _row_terms(xi, yi, x, y, masses, lo, hi, g_weights, l_weights, inverse, powers, cutoff2, partners, mj, wx, wy, wd,
+               r2, base, e):
+    """Partners lo <= j < hi of a particle at (xi, yi): those closer than the cut-off go, in order, to the first
+    m places of the buffers (their indices to ``partners``, masses to ``mj``, r^2 to ``r2``), then
+    sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j) into (wx, wy) and sum_k l_k e^{-a_k r^2} into wd; returns m. Only the
+    partners within the cut-off (about 56 % of the examined ones) take exponentials; the loops after the first
+    have no branches, so that LLVM vectorises them (base and e are buffers). A Gaussian with powers[k] = s >= 0
+    (:func:`_squarings`) takes the widest's exponential squared s times, one with -1 its own exponential."""
+    m = 0
+    for j in range(lo, hi):
+        dx = xi - x[j]
+        dy = yi - y[j]
+        distance2 = dx * dx + dy * dy
+        partners[m] = j
+        r2[m] = distance2
+        m += 1 if distance2 < cutoff2 else 0
+    for j in range(m):
+        mj[j] = masses[partners[j]]
         wx[j] = 0.0
         wd[j] = 0.0
     widest = inverse.min()
     if powers.max() >= 0:
-        for j in range(count):
+        for j in range(m):
             base[j], _ = exp_minus_and_complement(r2[j] * widest)
     for k in range(inverse.size):
         a, g, lap = inverse[k], g_weights[k], l_weights[k]
         if powers[k] < 0:
-            for j in range(count):
+            for j in range(m):
                 e[j], _ = exp_minus_and_complement(r2[j] * a)
         else:
-            for j in range(count):
+            for j in range(m):
                 e[j] = base[j]
             for _ in range(powers[k]):
-                for j in range(count):
+                for j in range(m):
                     e[j] *= e[j]
-        for j in range(count):
+        for j in range(m):
             wx[j] += g * e[j]
             wd[j] += lap * e[j]
-    for j in range(count):
-        inside = 1.0 if r2[j] < cutoff2 else 0.0
-        g = inside * wx[j] / (r2[j] + 1e-300)
-        wx[j] = g * (xi - x[lo + j])
-        wy[j] = g * (yi - y[lo + j])
-        wd[j] *= inside
+    for j in range(m):
+        g = wx[j] / r2[j]
+        wx[j] = g * (xi - x[partners[j]])
+        wy[j] = g * (yi - y[partners[j]])
+    return m
 
 
 @njit
-def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, powers, cutoff2, vx, vy, div,
-                     closest):
+def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inverse, powers, cutoff2, sums, closest):
     """Accumulator c: the particles i = c mod ACCUMULATORS (sorted by cell key) and their partners j > i in
-    the cells of their own and the next CELL_SPLIT rows; each pair is evaluated once and added to both.
+    the cells of their own and the next CELL_SPLIT rows; each pair within the cut-off is evaluated once and
+    added to both, into sums[c, :, :] (v_x, v_y, div of a particle side by side: one cache line a partner).
     closest[c] gets the smallest squared distance of these pairs."""
     n = x.size
+    partners = np.empty(_ROW_BUFFER, dtype=np.int64)
+    mj = np.empty(_ROW_BUFFER)
     wx = np.empty(_ROW_BUFFER)
     wy = np.empty(_ROW_BUFFER)
     wd = np.empty(_ROW_BUFFER)
@@ -219,22 +228,22 @@ def _near_accumulate(c, x, y, masses, keys, columns, g_weights, l_weights, inver
             stop = np.searchsorted(keys, r * columns + min(column + reach, columns - 1), side="right")
             lo = i + 1 if r == row else np.searchsorted(keys, r * columns + max(column - reach, 0))
             for start in range(lo, stop, _ROW_BUFFER):
-                hi = min(start + _ROW_BUFFER, stop)
-                _row_terms(x[i], y[i], x, y, start, hi, g_weights, l_weights, inverse, powers, cutoff2, wx, wy, wd, r2,
-                           base, e)
-                tx, ty, td = row_share(start, hi, masses, wx, wy, wd)
-                for j in range(hi - start):
+                m = _row_terms(x[i], y[i], x, y, masses, start, min(start + _ROW_BUFFER, stop), g_weights, l_weights,
+                               inverse, powers, cutoff2, partners, mj, wx, wy, wd, r2, base, e)
+                tx, ty, td = row_share(0, m, mj, wx, wy, wd)
+                for j in range(m):
                     closest[c] = min(closest[c], r2[j])
                 sx += tx
                 sy += ty
                 sd += td
-                for j in range(hi - start):
-                    vx[c, start + j] -= mi * wx[j]
-                    vy[c, start + j] -= mi * wy[j]
-                    div[c, start + j] -= mi * wd[j]
-        vx[c, i] += sx
-        vy[c, i] += sy
-        div[c, i] -= sd + mi * self_term
+                for j in range(m):
+                    partner = partners[j]
+                    sums[c, partner, 0] -= mi * wx[j]
+                    sums[c, partner, 1] -= mi * wy[j]
+                    sums[c, partner, 2] -= mi * wd[j]
+        sums[c, i, 0] += sx
+        sums[c, i, 1] += sy
+        sums[c, i, 2] -= sd + mi * self_term
 
 
 def near_sums(arguments, threads, beside=lambda: None):
@@ -247,8 +256,7 @@ def near_sums(arguments, threads, beside=lambda: None):
     the pool runs ``beside`` (the FMM) first, so that no core waits for the other half of the work. Each
     accumulator is summed by one thread in a fixed order: the same sums on any number of threads.
     Returns ((v_x, v_y, div, closest), beside's result). It trusts its caller's checks."""
-    n = arguments[0].size
-    vx, vy, div = np.zeros((ACCUMULATORS, n)), np.zeros((ACCUMULATORS, n)), np.zeros((ACCUMULATORS, n))
+    sums = np.zeros((ACCUMULATORS, arguments[0].size, 3))
     closest = np.full(ACCUMULATORS, np.inf)
     claimed = itertools.count()  # next() on it is atomic: each accumulator goes to one thread
 
@@ -256,7 +264,7 @@ def near_sums(arguments, threads, beside=lambda: None):
         result = task()
         c = next(claimed)
         while c < ACCUMULATORS:
-            _near_accumulate(c, *arguments, vx, vy, div, closest)  # compiled: releases the interpreter's lock
+            _near_accumulate(c, *arguments, sums, closest)  # compiled: releases the interpreter's lock
             c = next(claimed)
         return result
 
@@ -266,12 +274,10 @@ def near_sums(arguments, threads, beside=lambda: None):
         helpers = [_pool(threads - 1).submit(work, beside if k == 0 else (lambda: None)) for k in range(threads - 1)]
         work(lambda: None)
         result = [helper.result() for helper in helpers][0]
-    sx, sy, sd = np.zeros(n), np.zeros(n), np.zeros(n)
-    for c in range(ACCUMULATORS):
-        sx += vx[c]
-        sy += vy[c]
-        sd += div[c]
-    return (sx, sy, sd, closest.min()), result
+    total = sums[0].copy()
+    for c in range(1, ACCUMULATORS):
+        total += sums[c]
+    return (total[:, 0], total[:, 1], total[:, 2], closest.min()), result
 
 
 def _near_pair_count(keys, columns) -> int:
@@ -318,7 +324,7 @@ def newtonian_sums(positions, masses, coefficients, widths):
 
     With two threads or more (and :data:`PARALLEL_MIN_PARTICLES` particles), the FMM runs on one thread
     while the near field's accumulators go to the others, and to the FMM's thread once it is done (the near
-    field takes 1.6 to 2.6 times the FMM's time from 2 * 10^4 to 10^6 points).
+    field took 0.9 to 1.2 times the FMM's CPU time from 2 * 10^4 to 10^6 points on Figure 5's grids).
 
     Returns None when two particles are closer than :data:`CLOSE_FRACTION` times the narrowest width: the
     raw field of the pair, m/(2 pi r), and its Gaussian correction then cancel to a few digits, and the
