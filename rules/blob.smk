@@ -88,5 +88,8 @@ rule blob_fig5_orders:
     threads: 1
     params:
         extended=source(ROOT / "runs" / "fig5-extended" / "results" / "blob" / "fig5.npz"),
+        extended_finest=max(
+            read_yaml(ROOT / "config" / "fig5-extended.yaml")["blob"]["fig5"]["inverse_h"]
+        ),
     script:
         "../scripts/blob/fig5_orders.py"

@@ -152,6 +152,14 @@ def test_every_figure_is_built(workdir):
     assert (workdir / "figures/sticky/fig2.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+def test_figure5_orders_name_the_finest_grid_of_the_overlay_not_run(repository, workdir):
+    """Without the overlay's results, the report's table of Figure 5's orders says so, naming the finest h that
+    config/fig5-extended.yaml would reach (a rule parameter read from that file, not a number in the script)."""
+    finest = max(read_yaml(repository / "config" / "fig5-extended.yaml")["blob"]["fig5"]["inverse_h"])
+    text = (workdir / "results" / "blob" / "fig5_orders.tex").read_text()
+    assert f"(to $h = 1/{finest}$) has not been run in this clone" in text
+
+
 def test_every_notebook_runs_on_the_quick_results(workdir):
     import json
 

@@ -1,5 +1,5 @@
 """Figure 5's pairwise orders as a LaTeX table for the report: the run's own, and those of the opt-in
-overlay config/fig5-extended.yaml (h down to 1/160) when its results exist."""
+overlay config/fig5-extended.yaml (finer grids, down to the h its rule's parameters name) when its results exist."""
 
 from pathlib import Path
 
@@ -30,18 +30,19 @@ def table(d, title) -> str:
             f" & {steps} & {k} finest \\\\ \\midrule\n" + "".join(rows) + "\\bottomrule\\end{tabular}}\\par\\medskip\n")
 
 
-def run(data, extended, output):
+def run(data, extended, extended_finest, output):
     text = table(load_results(data), "This run:")
     if Path(extended).exists() and not Path(extended).samefile(data):
         progress(f"overlay results found: {extended}")
         text += table(load_results(extended), "The overlay \\texttt{config/fig5-extended.yaml}:")
     else:
-        text += ("\\noindent The overlay \\texttt{config/fig5-extended.yaml} (to $h = 1/160$) has not been run "
-                 "in this clone.\\par\n")
+        text += ("\\noindent The overlay \\texttt{config/fig5-extended.yaml} "
+                 f"(to $h = 1/{extended_finest}$) has not been run in this clone.\\par\n")
     temporary = Path(output).with_name(Path(output).name + ".tmp")
     temporary.write_text(text)
     temporary.replace(output)
 
 
 with logged(snakemake.log[0], snakemake.threads):  # noqa: F821
-    run(snakemake.input.data, snakemake.params.extended, snakemake.output[0])  # noqa: F821
+    params = snakemake.params  # noqa: F821
+    run(snakemake.input.data, params.extended, params.extended_finest, snakemake.output[0])  # noqa: F821

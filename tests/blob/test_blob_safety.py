@@ -212,8 +212,8 @@ def test_particle_counts_beyond_the_limit_are_refused(make, limit):
 
 
 def test_the_limits_cover_the_repository_runs():
-    """Figure 5 extended to h = 1/160 (80,369 particles, within MAX_FMM_PARTICLES: its kernel is the Newtonian
-    one) and the longest runs (Figure 8, t = 400)."""
+    """Figure 5 extended (config/fig5-extended.yaml: its finest grid within MAX_FMM_PARTICLES, its kernel the
+    Newtonian one) and the longest runs (Figure 8, t = 400)."""
     config = read_yaml(ROOT / "config" / "config.yaml")["blob"]
     extended = read_yaml(ROOT / "config" / "fig5-extended.yaml")["blob"]["fig5"]
     finest = max(extended["inverse_h"] + config["fig5"]["inverse_h"])

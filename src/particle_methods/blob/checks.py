@@ -17,8 +17,8 @@ from ..validation import real_array
 #: evaluation; the 1D runs have at most 2,561.
 MAX_PARTICLES = 25_000
 #: Particles of one ODE solve with the 2D Newtonian kernel, raw or mollified by (4.2), whose sums take
-#: the fast multipole method, about O(N) per right-hand side: Figure 5 extended to h = 1/160 has 80,369
-#: particles and takes about 0.5 s per evaluation on 2 cores.
+#: the fast multipole method, about O(N) per right-hand side: Figure 5 extended to h = 1/320 has 321,645
+#: particles and takes 2 to 5 s per evaluation on one core (benchmarks/README.md).
 MAX_FMM_PARTICLES = 400_000
 #: Largest final time of a run. The paper's runs end by t = 400 (Figure 8, our choice); the
 #: solver's step count grows with t (about one step per time unit for the repulsive 1D kernel).
