@@ -86,8 +86,10 @@ def main():
 #: Floating-point operations per unordered pair of the vectorised 2D Newtonian path (m = 4, (4.2)),
 #: counting an FMA as two: differences and r^2 (5); per Gaussian, the reduction z = k ln 2 - r and
 #: the branch-free clamp (about 11), Horner's rule of degree 14 (28) and the two results (5), so 44,
-#: twice; the gradient and Laplacian (10); the partners' and the row's shares (12).
-NEWTONIAN_FLOPS = 5 + 2 * 44 + 10 + 12
+#: once: the narrower Gaussian's exponential and complement are the wider's squared and times 1 + e (3);
+#: the gradient and Laplacian (10); the partners' and the row's shares (12). (Two exponentials, 44 twice,
+#: until the direct path took one.)
+NEWTONIAN_FLOPS = 5 + 44 + 3 + 10 + 12
 #: Peak double-precision rate assumed for the machine: 2 cores, each with two 256-bit FMA pipes
 #: (AVX-512 instructions are executed as two halves on AMD Zen 4), 16 flops per cycle, at the
 #: nominal clock read from /proc/cpuinfo (boost clocks would lower the fraction).

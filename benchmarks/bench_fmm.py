@@ -25,7 +25,6 @@ value over the targets).
 """
 
 import argparse
-import math
 import os
 import resource
 import time
@@ -37,7 +36,7 @@ from timing import best_time, print_cpu
 from particle_methods.blob import newtonian_fmm
 from particle_methods.blob.kernels import kernel_2d
 from particle_methods.blob.mollifiers import mollifier
-from particle_methods.blob.pair_sums import FMM_MIN_PARTICLES, newtonian_2d_forces, pair_sums
+from particle_methods.blob.pair_sums import FMM_MIN_PARTICLES, newtonian_2d_constants, newtonian_2d_forces, pair_sums
 from particle_methods.blob.solver import integrate_particles, setup_2d
 from particle_methods.blob.tile_sums import row_share
 
@@ -176,9 +175,8 @@ def million(inverse_h=560, targets=2000):
               f"({cpu:.2f} s of CPU; {load()})", flush=True)
     print(f"peak memory of the process: {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**20:.2f} GiB")
     _, coefficients, widths, _, _ = arrays
-    inverse = 1.0 / widths**2
-    constants = (1.0, coefficients[0] / (2 * math.pi), coefficients[1] / (2 * math.pi), inverse[0], inverse[1],
-                 coefficients[0] * inverse[0] / math.pi, coefficients[1] * inverse[1] / math.pi)
+    # the formula with each Gaussian's own exponential (flag 1), independent of the squaring both paths use
+    constants = (1.0, *newtonian_2d_constants(coefficients, widths)[1:])
     chosen = np.random.default_rng(inverse_h).choice(points.shape[0], targets, replace=False)
     start = time.perf_counter()
     direct = direct_targets(chosen, np.ascontiguousarray(points[:, 0]), np.ascontiguousarray(points[:, 1]),

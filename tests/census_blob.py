@@ -149,7 +149,7 @@ ENTRIES = {
 #: CONTRIBUTING, "Names"); their callers (pair_sums, the array wrappers, BlobRun.energies) are in the census.
 TRUSTING = ("kernels.is_newtonian_2d", "kernels.radial_power", "pair_sums.checked_pair_sums", "pair_sums.pair_energy",
             "pair_sums.tiled_2d_supported", "pair_sums.newtonian_2d_forces", "newtonian_fmm.near_field",
-            "newtonian_fmm.near_sums",
+            "newtonian_fmm.near_sums", "newtonian_fmm.squarings", "pair_sums.newtonian_2d_constants",
             "special.dawson", "special.dawson_and_slope", "special.exp1", "sums_1d.far_coefficients",
             "sums_1d.log_series", "sums_1d.log_supported", "sums_1d.sorted_log_sums", "sums_1d.sorted_sums",
             "sums_1d.supported", "tile_sums.row_share", "vector_erfc.erfc_and_gauss",

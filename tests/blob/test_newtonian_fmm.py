@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from particle_methods.blob import newtonian_fmm
+from particle_methods.blob import pair_sums as pair_sums_module
 from particle_methods.blob.checks import MAX_FMM_PARTICLES, MAX_PARTICLES
 from particle_methods.blob.kernels import GAUSS_LOG_2D, LOG, kernel_1d, kernel_2d
 from particle_methods.blob.mollifiers import mollifier
@@ -277,9 +278,30 @@ def test_the_narrower_gaussian_taken_as_the_square_of_the_wider_matches_its_own_
     arguments = near_arguments(*disk_points, kernel_2d("newtonian", PSI, 0.02))
     powers = arguments[8]
     np.testing.assert_array_equal(powers, [1, 0])
-    np.testing.assert_array_equal(newtonian_fmm._squarings([1.0, 1 / 1.5**2]), [-1, 0])  # widths 1 and 1.5
+    np.testing.assert_array_equal(newtonian_fmm.squarings([1.0, 1 / 1.5**2]), [-1, 0])  # widths 1 and 1.5
     squared = newtonian_fmm.near_sums(arguments, 1)[0]
     own = newtonian_fmm.near_sums((*arguments[:8], np.full_like(powers, -1), arguments[9]), 1)[0]
     for one, two in zip(squared[:3], own[:3]):
         assert np.abs(one - two).max() <= 1e-14 * np.abs(two).max()
     assert squared[3] == own[3]  # the closest pair
+
+
+def test_the_direct_sums_take_the_narrower_gaussian_as_the_square_of_the_wider(disk_points):
+    """The direct path too: (4.2)'s constants carry flag 2 (one exponential a pair, the narrower Gaussian first
+    whichever order the widths come in), and its rows match each Gaussian's own exponential (flag 1) to rounding,
+    the complement 1 - e^2 taken as (1 - e)(1 + e) without cancellation, also for pairs far closer than a width."""
+    coefficients, widths = kernel_2d("newtonian", PSI, 0.02).arrays()[1:3]
+    squared = pair_sums_module.newtonian_2d_constants(coefficients, widths)
+    assert squared[0] == 2.0 and squared[3] > squared[4]
+    assert pair_sums_module.newtonian_2d_constants(coefficients[::-1], widths[::-1]) == squared
+    assert pair_sums_module.newtonian_2d_constants(coefficients, np.array([1.0, 1.5]))[0] == 1.0
+    own = (1.0, *squared[1:])
+    x, y = np.ascontiguousarray(disk_points[0][:, 0]), np.ascontiguousarray(disk_points[0][:, 1])
+    x[1], y[1] = x[0] + 1e-9, y[0]   # a pair 2e-8 widths apart: the complement is about 2.5e-15
+    rows = {}
+    for name, constants in (("squared", squared), ("own", own)):
+        buffers = [np.empty(x.size - 1) for _ in range(3)]
+        pair_sums_module.newtonian_2d_forces(x[0], y[0], x, y, 1, x.size, constants, *buffers)
+        rows[name] = buffers
+    for one, two in zip(rows["squared"], rows["own"]):
+        np.testing.assert_allclose(one, two, rtol=1e-14, atol=1e-15 * np.abs(two).max())

@@ -137,17 +137,18 @@ ACCUMULATORS = 16
 _ROW_BUFFER = 4096
 
 
-#: Most squarings of the widest Gaussian's exponential that stand for a narrower one (:func:`_squarings`).
+#: Most squarings of the widest Gaussian's exponential that stand for a narrower one (:func:`squarings`).
 MAX_SQUARINGS = 4
 
 
-def _squarings(inverse) -> np.ndarray:
+def squarings(inverse) -> np.ndarray:
     """For the Gaussians' a_k = 1/s_k^2: s_k squarings when a_k = 2^{s_k} min(a) to rounding (s_k <= MAX_SQUARINGS),
     -1 when a_k is no such multiple. e^{-a_k r^2} is then (e^{-min(a) r^2})^(2^{s_k}): one exponential per pair for
     the widths (1, sqrt(2)) of (4.2), whose squares are 1 and 2 up to the rounding of sqrt(2)^2 (2 + 4.4e-16): the
     narrower Gaussian, taken as the wider's square, is exp(-r^2/s^2) for an s^2 within 2.2e-16 relative of the
     rounded width's: a relative error of r^2/s^2 x 2.2e-16, at most 1.9e-14 at the cut-off (r^2/s^2 = 84.5, where
-    the term is e^{-84.5}), beside the 8e-16 of squaring an exponential correct to 4e-16."""
+    the term is e^{-84.5}), beside the 8e-16 of squaring an exponential correct to 4e-16. Also used by the direct
+    sums (:func:`.pair_sums.newtonian_2d_forces`). It trusts its caller's checks (positive finite a_k)."""
     inverse = np.asarray(inverse, dtype=np.float64)
     ratios = inverse / inverse.min()
     powers = np.round(np.log2(ratios))
@@ -163,7 +164,7 @@ def _row_terms(xi, yi, x, y, masses, lo, hi, g_weights, l_weights, inverse, powe
     sum_k g_k e^{-a_k r^2}/r^2 (X_i - X_j) into (wx, wy) and sum_k l_k e^{-a_k r^2} into wd; returns m. Only the
     partners within the cut-off (about 56 % of the examined ones) take exponentials; the loops after the first
     have no branches, so that LLVM vectorises them (base and e are buffers). A Gaussian with powers[k] = s >= 0
-    (:func:`_squarings`) takes the widest's exponential squared s times, one with -1 its own exponential."""
+    (:func:`squarings`) takes the widest's exponential squared s times, one with -1 its own exponential."""
     m = 0
     for j in range(lo, hi):
         dx = xi - x[j]
@@ -311,7 +312,7 @@ def near_field(positions, masses, coefficients, widths):
     keys, columns = _cell_keys(x, y, cutoff / CELL_SPLIT)
     order = np.argsort(keys, kind="stable")
     arguments = (x[order], y[order], masses[order], keys[order], columns, g_weights, l_weights, inverse,
-                 _squarings(inverse), cutoff * cutoff)
+                 squarings(inverse), cutoff * cutoff)
     return order, _near_pair_count(keys[order], columns), arguments
 
 

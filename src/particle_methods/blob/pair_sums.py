@@ -105,12 +105,27 @@ _TILE = 256
 def newtonian_2d_forces(xi, yi, x, y, start, stop, constants, wx, wy, lap):
     """Row i of the 2D Newtonian kernel: grad K(X_i - X_j) (as wx, wy) and Delta K(X_i - X_j) for
     start <= j < stop, into the tile buffers. Mollified (m = 4, two Gaussians (4.2)) when the first
-    constant is 1, raw log|x|/(2 pi) (the particle method, Delta K = 0 away from 0) otherwise. No
-    branch inside the loops, so LLVM vectorises them; at r = 0 (coincident particles) the gradient
-    is finite and irrelevant (it multiplies X_i - X_j = 0), so grad K(0) := 0 holds. It trusts its caller's
-    checks."""
+    constant is 1 or 2, raw log|x|/(2 pi) (the particle method, Delta K = 0 away from 0) when it is 0. With 2,
+    a0 = 2 a1 to rounding (:func:`.newtonian_fmm.squarings`; (4.2)'s widths 1 and sqrt(2)): the narrower
+    Gaussian's e^{-a0 r^2} is the square e^2 of the wider's, and its complement 1 - e^2 = (1 - e)(1 + e), one
+    exponential per pair and no cancellation (the absolute error of either, r^2 a0 x 2.2e-16 x e^{-a0 r^2}, stays
+    below 1e-16). No branch inside the loops, so LLVM vectorises them; at r = 0 (coincident particles) the
+    gradient is finite and irrelevant (it multiplies X_i - X_j = 0), so grad K(0) := 0 holds. It trusts its
+    caller's checks."""
     mollified, c0, c1, a0, a1, l0, l1 = constants
-    if mollified == 1.0:
+    if mollified == 2.0:
+        for j in range(start, stop):
+            dx = xi - x[j]
+            dy = yi - y[j]
+            r2 = dx * dx + dy * dy
+            e1, f1 = exp_minus_and_complement(r2 * a1)
+            e0 = e1 * e1
+            f0 = f1 * (1.0 + e1)
+            g = (c0 * f0 + c1 * f1) / (r2 + 1e-300)
+            wx[j - start] = g * dx
+            wy[j - start] = g * dy
+            lap[j - start] = l0 * e0 + l1 * e1
+    elif mollified == 1.0:
         for j in range(start, stop):
             dx = xi - x[j]
             dy = yi - y[j]
@@ -129,6 +144,18 @@ def newtonian_2d_forces(xi, yi, x, y, start, stop, constants, wx, wy, lap):
             wx[j - start] = g * dx
             wy[j - start] = g * dy
             lap[j - start] = 0.0
+
+
+def newtonian_2d_constants(coefficients, widths) -> tuple:
+    """The constants (flag, c0, c1, a0, a1, l0, l1) of :func:`newtonian_2d_forces` for the mollified Newtonian
+    kernel's two Gaussian terms (coefficients C_k, widths s_k, (4.2)): c_k = C_k/(2 pi), a_k = 1/s_k^2,
+    l_k = C_k a_k/pi, the narrower Gaussian first (each sum of the two terms is the same either way round), the
+    flag 2 when a0 = 2 a1 to rounding (one exponential a pair), else 1. It trusts its caller's checks."""
+    inverse = 1.0 / widths**2
+    order = [0, 1] if inverse[0] >= inverse[1] else [1, 0]
+    c, a = coefficients[order], inverse[order]
+    flag = 2.0 if list(newtonian_fmm.squarings(a)) == [1, 0] else 1.0
+    return (flag, *(c / (2 * math.pi)), *a, *(c * a / math.pi))
 
 
 @njit
@@ -315,9 +342,7 @@ def _newtonian_2d_sums(positions, masses, kinds, coefficients, widths, method):
         constants = (0.0, coefficients[0] / (2 * math.pi), 0.0, 0.0, 0.0, 0.0, 0.0)
         self_lap = 0.0
     else:
-        inverse = 1.0 / widths**2
-        constants = (1.0, coefficients[0] / (2 * math.pi), coefficients[1] / (2 * math.pi), inverse[0],
-                     inverse[1], coefficients[0] * inverse[0] / math.pi, coefficients[1] * inverse[1] / math.pi)
+        constants = newtonian_2d_constants(coefficients, widths)
         self_lap = constants[5] + constants[6]
     return _tiled_2d_sums(positions, masses, constants, _NO_TERMS, self_lap)
 
