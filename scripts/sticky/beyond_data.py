@@ -86,18 +86,22 @@ def scalar_study(name, p, timing):
 
 
 def reference(limits, exact, name, domain):
-    """The case's reference: of the exact MSPD (``exact``, from beyond_reference.py) and the upwind scheme for
-    (1.7) on upwind_reference_cells (from ``limits``), which approximate the same MSPD limit, the one with the
-    smaller distance to its own half resolution (its error). Returns (index in REFERENCES, its size, that
-    error, distance to a configuration, distance to a cell function)."""
-    errors = (float(exact["reference_gap"]), float(limits[f"{name}_upwind_gap"]))
-    mspd, w = exact["reference_mspd"], limits[f"{name}_upwind_w"]
+    """The case's reference: of the exact MSPD (``exact``: its full and half runs from beyond_reference.py) and the
+    upwind scheme for (1.7) on upwind_reference_cells (from ``limits``), which approximate the same MSPD limit, the
+    one with the smaller distance to its own half resolution (its error). Returns (index in REFERENCES, its size,
+    that error, distance to a configuration, distance to a cell function)."""
+    full, half = exact
+    if int(full["n"]) != 2 * int(half["n"]):
+        raise ValueError(f"{name}: the reference's half run has n = {int(half['n'])}, not half of {int(full['n'])}: "
+                         "rerun its rule")
+    mspd, w = full["mspd"], limits[f"{name}_upwind_w"]
+    errors = (configuration_distance(mspd, half["mspd"]), float(limits[f"{name}_upwind_gap"]))
     cells = int(limits["upwind_reference_cells"])
     fine = np.linspace(*domain, cells + 1)
     if errors[1] < errors[0]:
         return (1, f"{cells} cells", errors[1], lambda x: distance_to_cells(x, w, fine),
                 lambda v, edges: cells_distance(v, edges, w, fine))
-    return (0, f"n = {int(exact['reference_n'])}", errors[0], lambda x: configuration_distance(x, mspd),
+    return (0, f"n = {int(full['n'])}", errors[0], lambda x: configuration_distance(x, mspd),
             lambda v, edges: distance_to_cells(mspd, v, edges))
 
 
@@ -135,7 +139,8 @@ def psystem_study(system, name, x0, p, limits, exact, timing):
 def run(system_params, cases, p, limits, references, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
     limits = load_results(limits)
-    exact = {name: load_results(path) for name, path in references.items()}
+    exact = {name: tuple(load_results(references[f"{name}_{part}"], expect={"case": name, "part": part})
+                         for part in ("full", "half")) for name in PSYSTEM_CASES}
     timing = Timed()
     studies = {name: psystem_study(system, name, cases[name]["x0"], p, limits, exact[name], timing)
                for name in PSYSTEM_CASES}
@@ -172,5 +177,5 @@ def run(system_params, cases, p, limits, references, output):
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, snakemake.input.limits,  # noqa: F821
-        {name: snakemake.input[name] for name in PSYSTEM_CASES},  # noqa: F821
+        {name: snakemake.input[name] for name in snakemake.input.keys() if name != "limits"},  # noqa: F821
         snakemake.output[0])  # noqa: F821

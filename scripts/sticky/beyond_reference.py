@@ -1,29 +1,33 @@
-"""Beyond the paper (section 5.2): the exact MSPD reference of the cost study for one p-system case.
+"""Beyond the paper (section 5.2): one exact MSPD run of the cost study's reference for one p-system case.
 
-The exact MSPD with ``reference_n`` particles per type at the study's time, and its W1^(d) distance to
-the run with half as many, its own error. The cost study (``beyond_data.py``) measures its errors
-against it or against the upwind scheme on its reference grid, whichever is more accurate. One job per
-case, so that the two run side by side with the rest of the pipeline.
+The exact MSPD at the study's time with ``reference_n`` particles per type (part ``full``) or half as many (part
+``half``), one job each, so that the two run side by side with the rest of the pipeline and the longest job is the
+full run alone (issue 47). The cost study (``beyond_data.py``) takes the full run's W1^(d) distance to the half run
+as its own error, and measures its errors against it or against the upwind scheme on its reference grid, whichever is
+more accurate.
 """
 
 import numpy as np
 
-from particle_methods.sticky.cases import configuration_distance, psystem_initial_configuration
+from particle_methods.sticky.cases import psystem_initial_configuration
 from particle_methods.sticky.multitype_events import mspd_exact
 from particle_methods.systems import PSystem
 from particle_replication.workflow import logged, progress, save_results
 
+#: The particles per type of each part, from reference_n.
+PARTS = {"full": lambda n: n, "half": lambda n: n // 2}
 
-def run(system_params, x0, case, p, output):
+
+def run(system_params, x0, case, part, p, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
-    n = int(p["reference_n"])
-    reference, half = (mspd_exact(psystem_initial_configuration(case, x0, size), system, [p["t"]])[0]
-                       for size in (n, n // 2))
-    gap = configuration_distance(reference, half)
-    progress(f"{case}: exact MSPD with n = {n} per type, distance to n = {n // 2}: {gap:.3g}")
-    save_results(output, case=np.array(case), reference_n=n, reference_mspd=reference, reference_gap=gap)
+    if part not in PARTS:
+        raise ValueError(f"part must be one of {sorted(PARTS)}, got {part!r}")
+    n = PARTS[part](int(p["reference_n"]))
+    mspd = mspd_exact(psystem_initial_configuration(case, x0, n), system, [p["t"]])[0]
+    progress(f"{case}: exact MSPD with n = {n} per type at t = {p['t']} ({part} part of the reference)")
+    save_results(output, case=np.array(case), part=np.array(part), n=n, mspd=mspd)
 
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
-    run(snakemake.params.system, snakemake.params.x0, snakemake.params.case, snakemake.params.cfg,  # noqa: F821
-        snakemake.output[0])  # noqa: F821
+    run(snakemake.params.system, snakemake.params.x0, snakemake.params.case, snakemake.params.part,  # noqa: F821
+        snakemake.params.cfg, snakemake.output[0])  # noqa: F821

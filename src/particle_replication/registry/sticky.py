@@ -94,6 +94,15 @@ COST_SETTINGS = ("t", "domain", "cfl", "repeats", "tspd_n", "exact_n", "upwind_c
 
 #: The p-system's two cases of section 5.2.2 (config ``sticky.psystem``), each with jobs of its own.
 PSYSTEM_CASES = ("rarefaction", "shocks")
+#: The two exact MSPD runs of the cost study's reference (scripts/sticky/beyond_reference.py), one job each: the
+#: reference and the run whose distance to it is its own error.
+REFERENCE_PARTS = {"full": "reference_n particles per type", "half": "half as many"}
+
+
+def reference_path(case: str, part: str) -> str:
+    """The result of one part of the cost study's exact MSPD reference for one p-system case."""
+    return f"results/sticky/beyond_reference_{case}.npz" if part == "full" else \
+        f"results/sticky/beyond_reference_{case}_{part}.npz"
 
 
 def _beyond(s, keys):
@@ -269,15 +278,15 @@ RESULTS = (
         ),
     ) for case in PSYSTEM_CASES),
     *(Result(
-        f"results/sticky/beyond_reference_{case}.npz",
+        reference_path(case, part),
         "beyond_reference.py",
-        ("case", "reference_n", "reference_mspd", "reference_gap"),
+        ("case", "part", "n", "mspd"),
         Job(
-            f"beyond the paper: the cost study's exact MSPD reference, {case} case (untimed)",
-            lambda s, case=case: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
-                                  "cfg": _beyond(s, ("t", "reference_n"))},
+            f"beyond the paper: the cost study's exact MSPD reference, {case} case, {about} (untimed)",
+            lambda s, case=case, part=part: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
+                                             "part": part, "cfg": _beyond(s, ("t", "reference_n"))},
         ),
-    ) for case in PSYSTEM_CASES),
+    ) for case in PSYSTEM_CASES for part, about in REFERENCE_PARTS.items()),
     Result(
         "results/sticky/beyond.npz",
         "beyond_data.py",
@@ -306,7 +315,8 @@ RESULTS = (
             "beyond the paper: the cost study (timed runs, alone on the cores), merged with the limits",
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, COST_SETTINGS)},
             inputs={"limits": "results/sticky/beyond_limits.npz",
-                    **{case: f"results/sticky/beyond_reference_{case}.npz" for case in PSYSTEM_CASES}},
+                    **{f"{case}_{part}": reference_path(case, part) for case in PSYSTEM_CASES
+                       for part in REFERENCE_PARTS}},
             threads="all",
         ),
     ),
