@@ -196,7 +196,7 @@ def _row_terms(xi, yi, x, y, masses, lo, hi, g_weights, l_weights, inverse, powe
             wx[j] += g * e[j]
             wd[j] += lap * e[j]
     for j in range(m):
-        g = wx[j] / r2[j]
+        g = wx[j] / (r2[j] + 1e-300)  # finite for coincident points (which send the sums to the direct path)
         wx[j] = g * (xi - x[partners[j]])
         wy[j] = g * (yi - y[partners[j]])
     return m
