@@ -9,6 +9,7 @@ from particle_replication.plotting import (
     PRINTED_WIDTH,
     SCRIPT_SCALE,
     apply_style,
+    label_h_axis,
     legible,
     mathtext,
     new_figure,
@@ -108,3 +109,29 @@ def test_text_above_the_floor_keeps_its_size():
 def test_the_style_refuses_a_width_that_is_not_a_positive_number(width):
     with pytest.raises(ValueError, match="width"):
         apply_style(width)
+
+
+def h_labels(h, **options):
+    fig, ax = plt.subplots()
+    ax.loglog(h, h)
+    label_h_axis(ax, h, **options)
+    fig.canvas.draw()
+    texts = [tick.get_text() for tick in ax.get_xticklabels()]
+    plt.close(fig)
+    return texts
+
+
+def test_every_tick_is_labelled_unless_more_than_most():
+    h = [1 / n for n in (5, 10, 20, 40, 80)]
+    assert h_labels(h) == h_labels(h, most=5) == ["1/5", "1/10", "1/20", "1/40", "1/80"]
+
+
+def test_seven_sizes_keep_every_other_label_counted_from_the_finest():
+    """Figure 5's overlay (7 grids on a narrow panel): the finest h keeps its label, every tick stays."""
+    h = [1 / n for n in (5, 10, 20, 40, 80, 160, 320)]
+    assert h_labels(h, most=5) == ["1/5", "", "1/20", "", "1/80", "", "1/320"]
+
+
+def test_a_bad_most_is_refused_naming_it():
+    with pytest.raises(ValueError, match="most"):
+        h_labels([0.1, 0.05], most=0)

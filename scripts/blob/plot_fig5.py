@@ -6,8 +6,10 @@ from particle_methods.convergence import fit_order, pairwise_orders
 from particle_replication.plotting import label_h_axis, label_panel, new_figure, save_figure, suptitle
 from particle_replication.workflow import load_results, logged
 
-TITLES = {"regular, blob": "A. regular data, blob $m = 4$", "regular, particle": "B. regular data, particle",
-          "disk, blob": "C. disk indicator, blob $m = 4$"}
+TITLES = {"regular, blob": "A. regular, blob $m = 4$", "regular, particle": "B. regular, particle",
+          "disk, blob": "C. disk, blob $m = 4$"}
+#: Labelled ticks of h per panel at most: more (the overlay config/fig5-extended.yaml has 7) run into each other.
+MOST_H_LABELS = 5
 
 
 def run(d, t, output):
@@ -27,7 +29,7 @@ def run(d, t, output):
                 ax.annotate(f"{value:.2f}", (np.sqrt(h0 * h1), np.sqrt(e0 * e1)), xytext=(0, offset),
                             textcoords="offset points", ha="center", fontsize="small", color=line.get_color())
         ax.set(xlabel="$h$")
-        label_h_axis(ax, h)
+        label_h_axis(ax, h, most=MOST_H_LABELS)
         ax.tick_params(axis="x", labelsize="small")
         ax.legend(loc="upper left", handlelength=1.8, labelspacing=0.25, borderaxespad=0.3)
         label_panel(ax, TITLES.get(label, label))

@@ -300,11 +300,15 @@ def mathtext(text: str) -> str:
     return result
 
 
-def label_h_axis(ax, h_values, axis: str = "x") -> None:
+def label_h_axis(ax, h_values, axis: str = "x", most: int | None = None) -> None:
     """Ticks of a log axis at the grid sizes ``h_values``, labelled 1/N when 1/h is an integer
-    (decimal otherwise), without minor ticks."""
+    (decimal otherwise), without minor ticks. With ``most``, at most that many ticks are labelled: every k-th,
+    counted from the last h given (the others keep an unlabelled tick), so that a narrow panel's labels do not
+    run into each other."""
     import numpy as np
     from matplotlib.ticker import FixedFormatter, FixedLocator, NullLocator
+
+    from particle_methods.validation import integer_at_least
 
     h_values = np.asarray(h_values, dtype=float)
     inverse = 1.0 / h_values
@@ -312,6 +316,9 @@ def label_h_axis(ax, h_values, axis: str = "x") -> None:
         labels = [f"1/{int(round(n))}" for n in inverse]
     else:
         labels = [f"{h:.3g}" for h in h_values]
+    if most is not None:
+        step = -(-len(labels) // integer_at_least("most", most, 1))
+        labels = [label if (len(labels) - 1 - index) % step == 0 else "" for index, label in enumerate(labels)]
     target = ax.xaxis if axis == "x" else ax.yaxis
     target.set_major_locator(FixedLocator(h_values))
     target.set_major_formatter(FixedFormatter(labels))
