@@ -141,8 +141,8 @@ def test_one_paper_at_a_time(workdir, paper):
     others = {"sticky", "ltp", "blob"} - {paper}
     assert f"{paper}_claims" in planned and "notebook" in planned
     foreign = tuple(f"{prefix}{other}_" for other in others for prefix in ("", "plot_"))
-    assert not any(rule.startswith(foreign) for rule in planned), planned
-    assert f"plot_{paper}_fig1" in planned
+    assert not any(rule.startswith(foreign) or rule in {f"plot_{other}" for other in others} for rule in planned)
+    assert f"plot_{paper}" in planned
 
 
 def test_every_figure_is_built(workdir):
@@ -307,8 +307,8 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     # Whether the solver job was cut or had just finished depends on timing; either way the resumed
     # run does only the unfinished part of the blob figures and nothing of the other studies.
     plan = planned_rules(snakemake(workdir, "--dry-run"))
-    assert "plot_blob_fig8" in plan
-    assert plan <= {"data_blob_fig8", "plot_blob_fig8", "blob_claims",
+    assert "plot_blob" in plan  # the batch of the paper's figures, Figure 8's among them
+    assert plan <= {"data_blob_fig8", "plot_blob", "blob_claims",
                     "claims_table", "report_snippets", "notebook", "manuscript", "verdicts", "report_page",
                     "notebook_page", "all"}
     assert snakemake(workdir).returncode == 0
@@ -600,10 +600,19 @@ def report(workdir, tmp_path_factory):
 
 
 def test_browsable_report_has_every_figure_with_its_caption(report):
+    """Every figure is in the report with its own caption, led by its label: a plot batch draws several figures in one
+    job, whose captions are all its params (rules/registry.smk, caption_template)."""
     html = (report[1] / "report" / "report.html").read_text()
     shown = {name for name in EXPECTED_FIGURES if name.endswith(".png") and name in html}
     assert shown == {name for name in EXPECTED_FIGURES if name.endswith(".png")}
-    assert "Morse kernels" in html and "Brenier-Grenier hull" in html
+    captions = dict(re.findall(r'"(figures/\w+/\w+\.png)": \{[^{}]*?"caption": "((?:[^"\\]|\\.)*)"', html))
+    for paper in registry.PAPERS.values():
+        for figure in paper.figures:
+            caption = captions.get(f"figures/{paper.id}/{figure.name}.png", "")
+            lead = f"<p>{paper.label(figure.name)}" + (" (our own study" if figure.ours else ". ")
+            assert caption.startswith(lead), (figure.name, caption[:200])
+    assert "Morse kernels" in captions["figures/blob/fig8.png"] and "Brenier-Grenier hull" in captions[
+        "figures/sticky/fig1.png"]
 
 
 # Clicks through the browsable report as its reader does: a menu entry by its label, a result's eye button.

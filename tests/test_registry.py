@@ -137,8 +137,11 @@ def test_scripts_captions_and_titles_exist_for_every_figure():
         assert set(inputs.values()) == {entry.path for entry in paper.results if "*" not in entry.path}
         assert len(inputs) == len({entry.path for entry in paper.results if "*" not in entry.path})
     rules = [entry.rule for entry in registry.RESULTS if entry.job] + [
-        plot.rule(paper.id) for paper in registry.PAPERS.values() for plot in paper.plots]
+        batch for paper in registry.PAPERS.values() for batch in paper.plot_batches]
     assert len(rules) == len(set(rules))
+    for paper in registry.PAPERS.values():  # each plot job in one batch, named apart from the others of its paper
+        batched = [plot.key for plots in paper.plot_batches.values() for plot in plots]
+        assert sorted(batched) == sorted(plot.key for plot in paper.plots) and len(set(batched)) == len(batched)
 
 
 def test_the_registry_is_not_a_code_input_of_the_jobs():

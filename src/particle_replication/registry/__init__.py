@@ -11,8 +11,8 @@ keys are checked against it when they are written and read
 
 The registry holds names, texts and the functions that pick a job's parameters out of the config;
 what it gives a job reaches it as the rule's params, input files and script, which Snakemake tracks.
-So the registry's modules are not among the rules' code inputs: editing a caption reruns that
-figure's plot job, not the computations.
+So the registry's modules are not among the rules' code inputs: editing a caption reruns the plot
+jobs of that figure's batch (:attr:`~.records.Paper.plot_batches`), not the computations.
 
 Adding a figure: a :class:`~.records.Result` with its :class:`~.records.Job` and a
 :class:`~.records.Plot` in the paper's module, the data and plot scripts, and the values they read

@@ -47,13 +47,29 @@ class Plot:
     data: Mapping[str, str] = field(default_factory=dict)
     params: Callable[[Section], dict] = _nothing
 
+    def __post_init__(self):
+        if len({figure.ours for figure in self.figures}) != 1:
+            raise ValueError(f"{self.script}: a plot job draws figures of the paper or ours, not both: {self.names}")
+
     @property
     def names(self) -> tuple[str, ...]:
         return tuple(figure.name for figure in self.figures)
 
+    @property
+    def key(self) -> str:
+        """The plot job's name within its paper (its figures' names joined): its log, and the prefix of its inputs
+        in its batch's rule."""
+        return "_".join(self.names)
+
+    @property
+    def ours(self) -> bool:
+        """Whether its figures are of our own studies."""
+        return self.figures[0].ours
+
     def rule(self, paper: str) -> str:
-        """Name of the generated Snakemake rule."""
-        return "_".join(["plot", paper, *self.names])
+        """Name of the generated Snakemake rule that runs it: one per paper for the paper's figures, ``plot_<paper>``,
+        and one for ours, ``plot_<paper>_ours`` (:attr:`Paper.plot_batches`)."""
+        return f"plot_{paper}_ours" if self.ours else f"plot_{paper}"
 
 
 @dataclass(frozen=True)
@@ -122,6 +138,17 @@ class Paper:
     @property
     def figures(self) -> tuple[Figure, ...]:
         return tuple(figure for plot in self.plots for figure in plot.figures)
+
+    @property
+    def plot_batches(self) -> dict[str, tuple[Plot, ...]]:
+        """The plot jobs by the rule that runs them, in registry order: the paper's figures in one process, ours in
+        another (a figure of ours may read the slowest results, which the paper's figures need not wait for). A
+        process per plot job spent about 2.6 s starting Python, importing matplotlib and warming its fonts and
+        formula parser, half of a quick run's plotting (benchmarks/README.md)."""
+        batches: dict[str, tuple[Plot, ...]] = {}
+        for plot in self.plots:
+            batches[plot.rule(self.id)] = (*batches.get(plot.rule(self.id), ()), plot)
+        return batches
 
     @property
     def numbers(self) -> dict[str, str]:
