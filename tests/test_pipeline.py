@@ -281,7 +281,9 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
 
     from particle_replication.workflow import load_results
 
-    for name in ("results/blob/fig8.npz", "figures/blob/fig8.pdf", "figures/blob/fig8.png"):  # one solver's result
+    # one solver's result and its figure, in the smaller of the blob paper's two plot batches (plot_blob_ours: the
+    # resumed run redraws the whole batch)
+    for name in ("results/blob/repulsive.npz", "figures/blob/repulsive.pdf", "figures/blob/repulsive.png"):
         (workdir / name).unlink()
     start = time.time()
     # Ctrl-C's default action restored in the run: pytest started in the background (`pytest &`) ignores SIGINT,
@@ -289,7 +291,7 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     process = subprocess.Popen(snakemake_command(workdir), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                start_new_session=True, env=checkout_environment(workdir.parents[1]),
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    log = workdir / "logs" / "blob" / "fig8_data.log"
+    log = workdir / "logs" / "blob" / "repulsive_data.log"
     while not (log.exists() and log.stat().st_mtime >= start and log.read_text()):
         assert process.poll() is None and time.time() - start < 300, "the solver never started"
         time.sleep(0.1)
@@ -307,8 +309,8 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     # Whether the solver job was cut or had just finished depends on timing; either way the resumed
     # run does only the unfinished part of the blob figures and nothing of the other studies.
     plan = planned_rules(snakemake(workdir, "--dry-run"))
-    assert "plot_blob" in plan  # the batch of the paper's figures, Figure 8's among them
-    assert plan <= {"data_blob_fig8", "plot_blob", "blob_claims",
+    assert "plot_blob_ours" in plan
+    assert plan <= {"data_blob_repulsive", "plot_blob_ours", "blob_claims",
                     "claims_table", "report_snippets", "notebook", "manuscript", "verdicts", "report_page",
                     "notebook_page", "all"}
     assert snakemake(workdir).returncode == 0

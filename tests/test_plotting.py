@@ -97,6 +97,18 @@ def test_text_below_the_printed_floor_is_raised_on_saving(tmp_path):
     assert ax.get_legend().get_texts()[0].get_fontsize() == pytest.approx(2 * MIN_PRINTED_SIZE)
 
 
+def test_a_figure_within_its_bounding_box_is_laid_out_once(monkeypatch):
+    """Its width is the printed scale's, so the texts below their floors are raised before the one layout."""
+    fig, ax = new_figure(1, 1, width=PRINTED_WIDTH, height=3.0)
+    ax.set_title("a title in points", fontsize=4)
+    draws = []
+    layout = fig.draw_without_rendering
+    monkeypatch.setattr(fig, "draw_without_rendering", lambda: draws.append(layout()))
+    assert legible(fig) == ["a title in points"]
+    assert len(draws) == 1 and ax.title.get_fontsize() == pytest.approx(MIN_PRINTED_SIZE)
+    plt.close(fig)
+
+
 def test_text_above_the_floor_keeps_its_size():
     fig, ax = new_figure(1, 1, width=PRINTED_WIDTH, height=3.0)
     ax.set_xlabel("plain", fontsize=12)
