@@ -5,7 +5,7 @@ import numpy as np
 
 from particle_methods.sticky.cases import empirical_cdf
 from particle_methods.systems import MINUS, PLUS
-from particle_replication.plotting import label_panel, new_figure, save_figure, suptitle
+from particle_replication.plotting import hide_minor_log_labels, label_panel, new_figure, save_figure, suptitle
 from particle_replication.verdicts.sticky import SCALAR_NAMES, exponent_window
 from particle_replication.workflow import load_results, logged
 
@@ -35,8 +35,8 @@ def limits(d, p, output):
             ax.plot(centres, d[f"{case}_hll_w"][gamma], style, color="C3", lw=1.0, label=f"{name} HLL (conservative)")
             ax.plot(centres_up, d[f"{case}_upwind_w"][gamma], style, color="C2", lw=0.8,
                     label=f"{name} upwind for (1.7)")
-        ax.set(xlim=(-12, 12), xlabel="x", ylabel="Riemann invariant")
-        label_panel(ax, f"({'ab'[j]}) {case} case, t = {float(d['t']):g}")
+        ax.set(xlim=(-12, 12), xlabel="x", ylabel="Riemann invariant" if j == 0 else "")  # (b) shares (a)'s
+        label_panel(ax, f"({'ab'[j]}) {case}, t = {float(d['t']):g}")
     ax = axes[0, 2]
     n = d["limit_n"]
     for j, case in enumerate(map(str, d["cases"])):
@@ -49,11 +49,15 @@ def limits(d, p, output):
     ax.plot([], [], color="0.4", lw=0.7, ls=":", label="HLL to its half resolution")
     ax.plot([], [], color="0.4", lw=0.7, ls="-.", label="upwind to its half resolution")
     ax.set(xscale="log", yscale="log", xlabel="n per type", ylabel=r"$W_1^{(d)}$ distance")
-    label_panel(ax, "(c) exact MSPD against the schemes")
-    # One legend under the three panels: the curves of (a, b), then the distances of (c).
+    # Ticks at the particle counts run, without the log axis's minor labels (which ran into each other).
+    ax.set_xticks(n, [f"{int(count)}" for count in n])
+    hide_minor_log_labels(ax)
+    label_panel(ax, "(c) exact MSPD to the schemes")
+    # One legend under the three panels: the curves of (a, b), then the distances of (c); three columns, so that it
+    # is no wider than the panels (four made the figure a third wider, and printed it that much smaller).
     handles, labels = axes[0, 0].get_legend_handles_labels()
     more = ax.get_legend_handles_labels()
-    fig.legend(handles + more[0], labels + more[1], loc="outside lower center", ncol=4, fontsize="small")
+    fig.legend(handles + more[0], labels + more[1], loc="outside lower center", ncol=3, fontsize="small")
     suptitle(fig, "Which limit? Exact MSPD, conservative HLL and nonconservative upwind on the p-system")
     save_figure(fig, output.pdf, output.png)
 
