@@ -261,6 +261,8 @@ ENTRIES = {
     PM + "sticky.spd.spd_positions": E(spd.spd_positions, {"x": X3, "v": V3, "t": 0.5, "masses": None}),
     PM + "sticky.multitype_events.mspd_exact": E(multitype_events.mspd_exact, {"x0": CONFIG, "system": SYSTEM,
                                                                               "times": TIMES}),
+    PM + "sticky.multitype_events.mspd_exact_at": E(multitype_events.mspd_exact_at, {"x0": CONFIG, "system": SYSTEM,
+                                                                                "t": 0.05, "return_method": False}),
 }
 
 EXEMPT = {

@@ -12,7 +12,8 @@ Public entry points:
 - :func:`mspd_trajectory`, :func:`mspd_positions`, :func:`rank_velocities`: the
   iterated typewise SPD for diagonal systems (sections 4.1, 5.2.1), :class:`ScalarLaw` a scalar
   law as a system with d = 1; :func:`mspd_exact`: the
-  MSPD itself, event by event (section 5.2);
+  MSPD itself, event by event (section 5.2); :func:`mspd_exact_at`: the same at one time, over the grid of
+  crossings where particles of one type never meet;
 - :class:`PSystem`: the p-system of section 5.2.2 in Riemann invariants;
 - :func:`spd_state`, :func:`admissibility_violation`: the SPD's positions and velocities at time t, and
   the Rankine-Hugoniot speeds and Oleinik's condition at every jump; :func:`hopf_gap`: the exact test of
@@ -37,7 +38,7 @@ from .measures import (
     median_quantiles,
 )
 from .mspd import ScalarLaw, mspd_positions, mspd_trajectory, rank_velocities
-from .multitype_events import EventCounts, mspd_exact
+from .multitype_events import EventCounts, mspd_exact, mspd_exact_at
 from .spd import cluster_sizes, spd_positions, spd_trajectories, velocities_from_flux, velocities_from_levels
 
 __all__ = [
@@ -63,6 +64,7 @@ __all__ = [
     "hopf_gap",
     "median_quantiles",
     "mspd_exact",
+    "mspd_exact_at",
     "mspd_positions",
     "mspd_trajectory",
     "rank_velocities",

@@ -50,6 +50,9 @@ d(d-1)n^2/2 crossings (section 5.2). A crossing of clusters a and b makes |a| |b
 costs O(|a| + |b|) <= O(|a| |b| + 1) member updates and blocks, and a merge undoes one block: every
 count of :class:`EventCounts` is O(d^2 n^2). A call is refused when the crossing bound
 d(d-1)n^2/2 + d n exceeds :data:`MAX_EVENTS`.
+
+At one time and for two types, :func:`mspd_exact_at` computes the same configuration over the grid of
+crossings where particles of one type never meet (the section below :func:`mspd_exact`).
 """
 
 from __future__ import annotations
@@ -60,7 +63,7 @@ import numpy as np
 
 from ..jit import NO_RUNTIME, njit
 from ..systems import PSystem, checked_primitive, speed_primitive_formula
-from ..validation import finite_array, finite_result, instance, integer_at_least
+from ..validation import finite_array, finite_number, finite_result, instance, integer_at_least
 from .mspd import checked_configuration, ranks_kernel
 from .spd import MAX_POSITIONS, check_reach
 
@@ -640,3 +643,221 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     if return_events:
         return out, EventCounts(*(int(s) for s in stats))
     return out
+
+# --------------------------------------------------------------------------------------------------------------
+# The exact MSPD of two types at one time over the grid of its crossings (sections 1.2.2, 5.2).
+#
+# Where no two particles of one type ever meet (the p-system's rarefaction case of section 5.2.2, for one),
+# every cluster of :func:`mspd_exact` is one particle, and a
+# particle's velocity (1.8) changes only when it crosses a particle of the other type. Number the particles
+# of type 0 (the faster, by (USH)) k = 0..n-1 and those of type 1 i = 0..n-1 along the line. Type-0 particle
+# k passes the type-1 particles ahead of it in the order i = c_k, c_k + 1, ..., and type-1 particle i is
+# passed by the type-0 particles behind it in the order k = e_i - 1, e_i - 2, ... (c_k, e_i: the counts of
+# the other type behind them at the start). So the crossing E(k, i) needs only two earlier ones: E(k, i - 1),
+# after which particle k moves straight at its velocity with i particles of type 1 behind it, and
+# E(k + 1, i), after which particle i moves straight at its velocity with k + 1 particles of type 0 behind it.
+# Its time and place follow from theirs. The crossings that happen before t are computed row by row over
+# this grid, at O(1) work each and with O(n) memory, with no event queue: at n = 25,600 per type a run of
+# the rarefaction case (about 3e8 crossings) takes about 20 s instead of 220 to 312 s (benchmarks/bench_mspd_grid.py).
+#
+# Every crossing is computed with the floating-point operations of the event loop (its meeting time from the
+# later of the two particles' last events, its place the mean of their positions, the velocities (1.8) by
+# the same compiled primitive), so the two agree to rounding. They need not agree bit for bit, as the event
+# loop may file a meeting from a later event of a neighbour; on the p-system's rarefaction case they did at every
+# n measured, 1 to 25,600 per type (tests/sticky/test_mspd_grid.py, benchmarks/README.md).
+#
+# Whether particles of one type meet is decided on the run itself: the rows walk each particle's trajectory
+# beside that of its neighbour of the same type (a pass over the type-0 particles checks the type-0
+# neighbours at every breakpoint of either trajectory, where their gap, piecewise linear in time, takes its
+# smallest values; a second pass over the grid column by column does the same for type 1 and must give the
+# same configuration). Where a gap closes, where particles of one type start at one place, where a velocity
+# breaks (USH), or for any other system than a two-type :class:`~particle_methods.systems.PSystem`,
+# :func:`mspd_exact_at` runs :func:`mspd_exact` instead.
+
+
+@njit(inline="always")
+def _meeting(ta, xa, va, tb, xb, vb):
+    """Time at which a type-0 particle, at xa at time ta with velocity va, meets the type-1 particle ahead of it,
+    at xb at time tb with velocity vb < va: from the later of the two times, as the event loop's meeting time."""
+    start = max(ta, tb)
+    gap = max((xb + vb * (start - tb)) - (xa + va * (start - ta)), 0.0)
+    return start + gap / (va - vb)
+
+
+@njit(inline="always")
+def _primitive(i, j, n, table, constants):
+    """The p-system's primitive P (5.7) at the w^+ level i/n and the w^- level j/n: of the spread fl(i/n) - fl(j/n)
+    as the event loop rounds it, through its table (:func:`_primitive_of_spread`). The velocities (1.8) are
+    n (P(c, k + 1) - P(c, k)) for type-0 particle k with c of type 1 behind it and n (P(i + 1, c) - P(i, c)) for
+    type-1 particle i with c of type 0 behind it, as :func:`_psystem_speeds` computes them for one member."""
+    return _primitive_of_spread(i / n - j / n, i - j + n, table, constants[0], constants[1])
+
+
+@njit
+def _rows(x0, start_speeds, behind, t, constants, table, lam, out, extremes):
+    """Pass over the grid row by row: type-0 particles from the right (k = n-1 .. 0), each through the type-1
+    particles it passes before t. Writes the positions at t to ``out`` and the lowest type-0 and highest type-1
+    velocity computed to ``extremes``; returns the crossings made, or -1 if two type-0 particles meet (their
+    gap is checked at every breakpoint of either trajectory) or a meeting pair's velocities break (USH)."""
+    n = x0.shape[1]
+    lam[:] = start_speeds
+    # Type-1 particles: time, place and count of type-0 particles behind them, at their last crossing.
+    t1, x1, count1 = np.zeros(n), x0[1].copy(), behind[1].copy()
+    # The trajectory of the type-0 particle ahead (k + 1), as breakpoints in time order, and the current row's.
+    trail = np.empty((2, 3, n))
+    ends = np.zeros(2, dtype=np.int64)
+    crossings = 0
+    for k in range(n - 1, -1, -1):
+        mine, ahead = trail[k % 2], trail[(k + 1) % 2]
+        ta, xa, va, i = 0.0, x0[0, k], lam[0, k], behind[0, k]
+        extremes[0] = min(extremes[0], va)
+        filled, walked, st, sx, sv, front = 0, 0, 0.0, 0.0, 0.0, 0.0
+        if k + 1 < n:
+            sx, sv = x0[0, k + 1], start_speeds[0, k + 1]
+        while True:
+            t_new, vb = np.inf, 0.0
+            if i < n and count1[i] == k + 1:  # i is the next of type 1 ahead of k, and k the next behind i
+                vb = lam[1, i]
+                if not va > vb:
+                    return -1
+                t_new = _meeting(ta, xa, va, t1[i], x1[i], vb)
+            stop = min(t_new, t)
+            if k + 1 < n:
+                while walked < ends[(k + 1) % 2] and ahead[0, walked] < stop:
+                    if not xa + va * (ahead[0, walked] - ta) < ahead[1, walked]:
+                        return -1
+                    st, sx, sv = ahead[0, walked], ahead[1, walked], ahead[2, walked]
+                    walked += 1
+                front = sx + sv * (stop - st)
+            if not t_new < t:  # a crossing at t itself comes after the configuration at t, as in the event loop
+                out[0, k] = xa + va * (t - ta)
+                if k + 1 < n and not out[0, k] <= front:
+                    return -1
+                break
+            place = 0.5 * ((xa + va * (t_new - ta)) + (x1[i] + vb * (t_new - t1[i])))
+            if k + 1 < n and not place < front:
+                return -1
+            # the velocities (1.8) after the crossing: k with i + 1 of type 1 behind it, i with k of type 0
+            here = _primitive(i + 1, k, n, table, constants)
+            va = n * (_primitive(i + 1, k + 1, n, table, constants) - here)
+            lam[1, i] = n * (here - _primitive(i, k, n, table, constants))
+            ta, xa, lam[0, k] = t_new, place, va
+            extremes[0], extremes[1] = min(extremes[0], va), max(extremes[1], lam[1, i])
+            mine[0, filled], mine[1, filled], mine[2, filled] = ta, xa, va
+            filled += 1
+            t1[i], x1[i], count1[i] = t_new, place, k
+            crossings += 1
+            i += 1
+        ends[k % 2] = filled
+    for i in range(n):
+        extremes[1] = max(extremes[1], start_speeds[1, i])
+        out[1, i] = x1[i] + lam[1, i] * (t - t1[i])
+    return crossings
+
+
+@njit
+def _columns(x0, start_speeds, behind, t, constants, table, lam, out):
+    """The same crossings column by column: type-1 particles from the left (i = 0 .. n-1), each passed by the
+    type-0 particles behind it before t, with the gap of each type-1 particle to the one behind it checked at
+    every breakpoint of either trajectory. Each crossing is computed from the same two earlier ones, by the same
+    operations, as in :func:`_rows`. Returns the crossings made, or -1 if two type-1 particles meet."""
+    n = x0.shape[1]
+    lam[:] = start_speeds
+    t0, x0_, count0 = np.zeros(n), x0[0].copy(), behind[0].copy()
+    trail = np.empty((2, 3, n))
+    ends = np.zeros(2, dtype=np.int64)
+    crossings = 0
+    for i in range(n):
+        mine, back = trail[i % 2], trail[(i + 1) % 2]
+        tb, xb, vb, k = 0.0, x0[1, i], lam[1, i], behind[1, i] - 1
+        filled, walked, st, sx, sv, rear, va = 0, 0, 0.0, 0.0, 0.0, 0.0, 0.0
+        if i > 0:
+            sx, sv = x0[1, i - 1], start_speeds[1, i - 1]
+        while True:
+            t_new = np.inf
+            if k >= 0 and count0[k] == i:  # k is the next of type 0 behind i, and i the next ahead of k
+                va = lam[0, k]
+                if not va > vb:
+                    return -1
+                t_new = _meeting(t0[k], x0_[k], va, tb, xb, vb)
+            stop = min(t_new, t)
+            if i > 0:
+                while walked < ends[(i + 1) % 2] and back[0, walked] < stop:
+                    if not back[1, walked] < xb + vb * (back[0, walked] - tb):
+                        return -1
+                    st, sx, sv = back[0, walked], back[1, walked], back[2, walked]
+                    walked += 1
+                rear = sx + sv * (stop - st)
+            if not t_new < t:
+                out[1, i] = xb + vb * (t - tb)
+                if i > 0 and not rear <= out[1, i]:
+                    return -1
+                break
+            place = 0.5 * ((x0_[k] + va * (t_new - t0[k])) + (xb + vb * (t_new - tb)))
+            if i > 0 and not rear < place:
+                return -1
+            here = _primitive(i + 1, k, n, table, constants)
+            lam[0, k] = n * (_primitive(i + 1, k + 1, n, table, constants) - here)
+            vb = n * (here - _primitive(i, k, n, table, constants))
+            t0[k], x0_[k], count0[k] = t_new, place, i + 1
+            tb, xb, lam[1, i] = t_new, place, vb
+            mine[0, filled], mine[1, filled], mine[2, filled] = tb, xb, vb
+            filled += 1
+            crossings += 1
+            k -= 1
+        ends[i % 2] = filled
+    for k in range(n):
+        out[0, k] = x0_[k] + lam[0, k] * (t - t0[k])
+    return crossings
+
+
+def mspd_exact_at(x0, system, t, return_method: bool = False):
+    """Exact MSPD (section 1.2.2) from the configuration ``x0`` at the one time ``t``: the configuration
+    :func:`mspd_exact` gives at [t], to rounding.
+
+    For a :class:`~particle_methods.systems.PSystem` (d = 2) whose particles of one type never meet up to t,
+    it is computed over the grid of crossings (module docstring); otherwise, or if that is found not to hold on
+    the run, by the event loop of :func:`mspd_exact`, which also
+    raises its errors (a velocity breaking (USH), a particle carried beyond the double range).
+
+    Parameters
+    ----------
+    x0 : array (d, n), row gamma the sorted positions of the particles of type gamma (mass 1/n).
+    system : a diagonal system, as for :func:`mspd_exact`.
+    t : non-negative time.
+    return_method : also return "grid" or "events", the algorithm that computed it.
+
+    Returns
+    -------
+    Array (d, n): the configuration at t (and the method, if asked).
+    """
+    x0 = np.ascontiguousarray(checked_configuration("x0", x0, system))
+    t = finite_number("t", t)
+    if t < 0:
+        raise ValueError(f"t must be non-negative, got {t!r}")
+    instance("return_method", return_method, (bool, np.bool_))
+    result, method = _by_grid(x0, system, t), "grid"
+    if result is None:
+        result, method = mspd_exact(x0, system, [t])[0], "events"
+    return (result, method) if return_method else result
+
+
+def _by_grid(x0: np.ndarray, system, t: float):
+    """The configuration at t over the grid of crossings, or None where that does not apply (module docstring)."""
+    if not _compiled_system(system) or np.any(np.diff(x0, axis=1) <= 0):
+        return None  # another system, or particles of one type at one place: clusters from the start
+    d, n = x0.shape
+    ranks = ranks_kernel(x0)[0]
+    behind = np.ascontiguousarray(ranks[[0, 1], :, [1, 0]])  # counts of the other type behind each particle
+    start_speeds = _initial_speeds(system, ranks)
+    # As in mspd_exact: every velocity (1.8) of the p-system is at most 2 A in magnitude.
+    check_reach(x0, 2.0 * system.speed_scale, t, "t", "velocities", position_name="x0")
+    constants = np.array([system.a, system.primitive_coefficient])
+    table = np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan)
+    lam, out, extremes = np.empty((d, n)), np.empty((d, n)), np.array([np.inf, -np.inf])
+    if _rows(x0, start_speeds, behind, t, constants, table, lam, out, extremes) < 0 or not extremes[0] > extremes[1]:
+        return None
+    again = np.empty((d, n))
+    if _columns(x0, start_speeds, behind, t, constants, table, lam, again) < 0 or not np.array_equal(out, again):
+        return None
+    return np.maximum.accumulate(out, axis=1)  # the event loop's guard keeping each type sorted
