@@ -4,10 +4,13 @@ meeting of its own type."""
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from particle_methods.sticky import mspd_exact, mspd_exact_at
-from particle_methods.sticky.cases import psystem_initial_configuration
+from particle_methods.sticky.cases import psystem_initial_configuration, psystem_initial_measures
 from particle_methods.sticky.multitype_events import PRIMITIVE_WAYS, _columns, _rows
+from particle_methods.sticky.theory import sampled_configuration
 from particle_methods.systems import PSystem
 
 SYSTEM = PSystem(nu=0.5, kappa=5.0)  # the pipeline's p-system (config sticky.psystem)
@@ -101,3 +104,18 @@ def test_bad_time_is_refused(t, error, message):
 def test_return_method_must_be_a_bool():
     with pytest.raises(TypeError, match="return_method"):
         mspd_exact_at(psystem_initial_configuration("rarefaction", 0.1, 4), SYSTEM, 1.0, return_method="yes")
+
+
+@settings(max_examples=60, deadline=None)
+@given(case=st.sampled_from(["rarefaction", "shocks"]), x0=st.floats(-5.0, 5.0), n=st.integers(1, 40),
+       seed=st.integers(0, 2**32 - 1), t=st.floats(0.0, 6.0))
+def test_random_configurations_give_the_event_loops_configuration(case, x0, n, seed, t):
+    """Random draws of either case's measures (sticky.theory.sampled_configuration), at any time: whichever way
+    mspd_exact_at takes, its configuration is the event loop's (to rounding): a meeting of one type that the
+    passes missed would show here as a configuration of particles passing each other."""
+    x = sampled_configuration(psystem_initial_measures(case, x0), n, np.random.default_rng(seed))
+    at, method = mspd_exact_at(x, SYSTEM, t, return_method=True)
+    events = mspd_exact(x, SYSTEM, [t])[0]
+    np.testing.assert_allclose(at, events, rtol=0, atol=1e-12 * max(1.0, np.abs(events).max()))
+    if method == "grid":
+        np.testing.assert_array_equal(np.diff(at, axis=1) >= 0, True)
