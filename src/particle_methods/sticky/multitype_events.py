@@ -644,35 +644,34 @@ def mspd_exact(x0, system, times, return_events: bool = False):
         return out, EventCounts(*(int(s) for s in stats))
     return out
 
+
 # --------------------------------------------------------------------------------------------------------------
 # The exact MSPD of two types at one time over the grid of its crossings (sections 1.2.2, 5.2).
 #
-# Where no two particles of one type ever meet (the p-system's rarefaction case of section 5.2.2, for one),
-# every cluster of :func:`mspd_exact` is one particle, and a
-# particle's velocity (1.8) changes only when it crosses a particle of the other type. Number the particles
-# of type 0 (the faster, by (USH)) k = 0..n-1 and those of type 1 i = 0..n-1 along the line. Type-0 particle
-# k passes the type-1 particles ahead of it in the order i = c_k, c_k + 1, ..., and type-1 particle i is
-# passed by the type-0 particles behind it in the order k = e_i - 1, e_i - 2, ... (c_k, e_i: the counts of
-# the other type behind them at the start). So the crossing E(k, i) needs only two earlier ones: E(k, i - 1),
-# after which particle k moves straight at its velocity with i particles of type 1 behind it, and
-# E(k + 1, i), after which particle i moves straight at its velocity with k + 1 particles of type 0 behind it.
-# Its time and place follow from theirs. The crossings that happen before t are computed row by row over
-# this grid, at O(1) work each and with O(n) memory, with no event queue: at n = 25,600 per type a run of
-# the rarefaction case (about 3e8 crossings) takes about 20 s instead of 220 to 312 s (benchmarks/bench_mspd_grid.py).
+# Where no two particles of one type ever meet (the p-system's rarefaction case of section 5.2.2, for one), every
+# cluster of :func:`mspd_exact` is one particle, and a particle's velocity (1.8) changes only when it crosses a
+# particle of the other type. Number the particles of type 0 (the faster, by (USH)) k = 0..n-1 and those of type 1
+# i = 0..n-1 along the line. Type-0 particle k passes the type-1 particles ahead of it in the order i = c_k,
+# c_k + 1, ..., and type-1 particle i is passed by the type-0 particles behind it in the order k = e_i - 1,
+# e_i - 2, ... (c_k, e_i: the counts of the other type behind them at the start). So the crossing E(k, i) needs
+# only two earlier ones: E(k, i - 1), after which particle k moves straight at its velocity with i particles of
+# type 1 behind it, and E(k + 1, i), after which particle i moves straight at its velocity with k + 1 particles of
+# type 0 behind it. Its time and place follow from theirs. The crossings that happen before t are computed row by
+# row over this grid, at O(1) work each and with O(n) memory, with no event queue: at n = 25,600 per type the
+# rarefaction case (about 3e8 crossings) takes about 20 s instead of 220 to 312 s (benchmarks/bench_mspd_grid.py).
 #
-# Every crossing is computed with the floating-point operations of the event loop (its meeting time from the
-# later of the two particles' last events, its place the mean of their positions, the velocities (1.8) by
-# the same compiled primitive), so the two agree to rounding. They need not agree bit for bit, as the event
-# loop may file a meeting from a later event of a neighbour; on the p-system's rarefaction case they did at every
-# n measured, 1 to 25,600 per type (tests/sticky/test_mspd_grid.py, benchmarks/README.md).
+# Every crossing is computed with the floating-point operations of the event loop (its meeting time from the later
+# of the two particles' last events, its place the mean of their positions, the velocities (1.8) by the same
+# compiled primitive), so the two agree to rounding. They need not agree bit for bit, as the event loop may file a
+# meeting from a later event of a neighbour; they did at every n measured on the rarefaction case, 1 to 25,600 per
+# type, and on every random draw the grid took (tests/sticky/test_mspd_grid.py, benchmarks/README.md).
 #
-# Whether particles of one type meet is decided on the run itself: the rows walk each particle's trajectory
-# beside that of its neighbour of the same type (a pass over the type-0 particles checks the type-0
-# neighbours at every breakpoint of either trajectory, where their gap, piecewise linear in time, takes its
-# smallest values; a second pass over the grid column by column does the same for type 1 and must give the
-# same configuration). Where a gap closes, where particles of one type start at one place, where a velocity
-# breaks (USH), or for any other system than a two-type :class:`~particle_methods.systems.PSystem`,
-# :func:`mspd_exact_at` runs :func:`mspd_exact` instead.
+# Whether particles of one type meet is decided on the run itself. The pass by rows walks each type-0 particle's
+# trajectory beside that of the type-0 particle ahead of it and checks their gap at every breakpoint of either
+# trajectory, where the gap, piecewise linear in time, takes its smallest values; a second pass, column by column,
+# does the same for type 1 and must give the same configuration. Where a gap closes, where particles of one type
+# start at one place, where a velocity breaks (USH), or for any other system than a two-type
+# :class:`~particle_methods.systems.PSystem`, :func:`mspd_exact_at` runs :func:`mspd_exact` instead.
 
 
 @njit(inline="always")
