@@ -2,8 +2,8 @@
 
 For both p-system cases the exact MSPD with n particles per type is compared, at one time t, with a
 conservative HLL solution of the p-system on ``reference_cells`` cells (mapped to Riemann invariants)
-and with the upwind scheme for (1.7) on ``upwind_reference_cells`` (computed by ``beyond_upwind.py``,
-one job per case, with its distance to half its resolution); the HLL solution is also compared with
+and with the upwind scheme for (1.7) on ``upwind_reference_cells`` (computed by ``beyond_upwind.py``, with
+half as many cells in a job of its own: their distance is its own error); the HLL solution is also compared with
 itself at half its resolution. The upwind run on its reference grid is one of the cost study's
 two candidate references (``beyond_data.py``); the other is the exact MSPD of ``beyond_reference.py``.
 Nothing here is timed, so this job holds one core while the timed runs hold them all.
@@ -32,11 +32,15 @@ def hll_invariants(system, case, x0, edges, t, cfl):
     return np.array(invariants_from_conservative(system, *hll_psystem(system, u0, v0, edges, t, cfl)))
 
 
-def upwind_reference(path, case, cells):
-    """The upwind run of ``beyond_upwind.py`` for ``case``: (invariants (2, cells), distance to half the cells),
-    checked to be that case's on ``cells`` cells."""
-    upwind = load_results(path, expect={"case": case, "upwind_reference_cells": cells})
-    return upwind["upwind_w"], upwind["upwind_gap"]
+def upwind_reference(paths, case, cells, domain):
+    """The upwind runs of ``beyond_upwind.py`` for ``case`` (``paths``: part -> file): (invariants (2, cells),
+    their distance to the run on half the cells), each checked to be that case's part of the reference on
+    ``cells`` cells."""
+    runs = {part: load_results(path, expect={"case": case, "part": part, "upwind_reference_cells": cells})
+            for part, path in paths.items()}
+    full, half = runs["full"], runs["half"]
+    edges = {part: np.linspace(*domain, int(run["cells"]) + 1) for part, run in runs.items()}
+    return full["upwind_w"], cells_distance(full["upwind_w"], edges["full"], half["upwind_w"], edges["half"])
 
 
 def run(system_params, cases, p, upwind, output):
@@ -51,7 +55,7 @@ def run(system_params, cases, p, upwind, output):
         hll, hll_half = (hll_invariants(system, name, x0, edges, t, cfl) for edges in (fine, coarse))
         cells = p["upwind_reference_cells"]
         fine_up = np.linspace(*p["domain"], cells + 1)
-        up, upwind_gap = upwind_reference(upwind[name], name, cells)
+        up, upwind_gap = upwind_reference(upwind[name], name, cells, p["domain"])
         progress(f"{name}: HLL on {p['reference_cells']} cells done (upwind on {cells} from {upwind[name]})")
         exact = {n: mspd_exact(psystem_initial_configuration(name, x0, int(n)), system, [t])[0] for n in limit_n}
         to_hll = [distance_to_cells(exact[n], hll, fine) for n in limit_n]
@@ -69,5 +73,7 @@ def run(system_params, cases, p, upwind, output):
 
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
-    run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg,  # noqa: F821
-        {name: snakemake.input[name] for name in PSYSTEM_CASES}, snakemake.output[0])  # noqa: F821
+    upwind_runs = {name: {part: snakemake.input[f"{name}_{part}"] for part in ("full", "half")}  # noqa: F821
+                   for name in PSYSTEM_CASES}
+    run(snakemake.params.system, snakemake.params.cases, snakemake.params.cfg, upwind_runs,  # noqa: F821
+        snakemake.output[0])  # noqa: F821

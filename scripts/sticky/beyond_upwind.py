@@ -1,33 +1,38 @@
-"""Beyond the paper (section 5.2): the upwind reference of the limits study for one p-system case.
+"""Beyond the paper (section 5.2): one run of the upwind reference of the limits study for one p-system case.
 
-The upwind scheme for (1.7) on ``upwind_reference_cells`` cells at the study's time, and its distance to
-the same scheme on half as many cells, its own error. ``beyond_limits.py`` measures the exact MSPD against
-it (and against the conservative HLL scheme); the cost study (``beyond_data.py``) takes it as one of its two
-candidate references. On a machine without AVX-512 NumPy evaluates the primitive of (5.7) by libm's sinh and
-arctan (20 to 25 ns a value on these data, three values per face and step: about 90 % of a step on an AMD EPYC
-with AVX2), so the two runs take 30 to 45 s of a core per case: one job per case, so that the two run side by
-side with the rest of the pipeline (issue 47). Untimed.
+The upwind scheme for (1.7) at the study's time on ``upwind_reference_cells`` cells (part ``full``) or half as
+many (part ``half``), one job each, so that they run side by side with the rest of the pipeline and no job holds
+both (issue 47: the two took 56 to 71 s in one job). ``beyond_limits.py`` takes the full run's distance to the half
+run as its own error and measures the exact MSPD against it (and against the conservative HLL scheme); the cost
+study (``beyond_data.py``) takes it as one of its two candidate references. On a machine without AVX-512 NumPy
+evaluates the primitive of (5.7) by libm's sinh and arctan (20 to 25 ns a value on these data, three values per
+face and step: about 90 % of a step on an AMD EPYC with AVX2). Untimed.
 """
 
 import numpy as np
 
 from particle_methods.finite_volume.psystem import upwind_diagonal
-from particle_methods.sticky.cases import cells_distance, psystem_initial_cells
+from particle_methods.sticky.cases import psystem_initial_cells
 from particle_methods.systems import PSystem
 from particle_replication.workflow import logged, progress, save_results
 
+#: The cells of each part, from upwind_reference_cells.
+PARTS = {"full": lambda cells: cells, "half": lambda cells: cells // 2}
 
-def run(system_params, x0, case, p, output):
+
+def run(system_params, x0, case, part, p, output):
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
-    cells = int(p["upwind_reference_cells"])
-    fine, coarse = (np.linspace(*p["domain"], count + 1) for count in (cells, cells // 2))
-    up, up_half = (upwind_diagonal(system, psystem_initial_cells(case, x0, edges), edges, p["t"], p["cfl"])
-                   for edges in (fine, coarse))
-    gap = cells_distance(up, fine, up_half, coarse)
-    progress(f"{case}: upwind on {cells} cells, distance to {cells // 2}: {gap:.3g}")
-    save_results(output, case=np.array(case), upwind_reference_cells=cells, upwind_w=up, upwind_gap=gap)
+    if part not in PARTS:
+        raise ValueError(f"part must be one of {sorted(PARTS)}, got {part!r}")
+    reference_cells = int(p["upwind_reference_cells"])
+    cells = PARTS[part](reference_cells)
+    edges = np.linspace(*p["domain"], cells + 1)
+    up = upwind_diagonal(system, psystem_initial_cells(case, x0, edges), edges, p["t"], p["cfl"])
+    progress(f"{case}: upwind on {cells} cells ({part} part of the reference on {reference_cells})")
+    save_results(output, case=np.array(case), part=np.array(part), upwind_reference_cells=reference_cells,
+                 cells=cells, upwind_w=up)
 
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
-    run(snakemake.params.system, snakemake.params.x0, snakemake.params.case, snakemake.params.cfg,  # noqa: F821
-        snakemake.output[0])  # noqa: F821
+    run(snakemake.params.system, snakemake.params.x0, snakemake.params.case, snakemake.params.part,  # noqa: F821
+        snakemake.params.cfg, snakemake.output[0])  # noqa: F821

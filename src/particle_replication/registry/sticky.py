@@ -94,15 +94,19 @@ COST_SETTINGS = ("t", "domain", "cfl", "repeats", "tspd_n", "exact_n", "upwind_c
 
 #: The p-system's two cases of section 5.2.2 (config ``sticky.psystem``), each with jobs of its own.
 PSYSTEM_CASES = ("rarefaction", "shocks")
-#: The two exact MSPD runs of the cost study's reference (scripts/sticky/beyond_reference.py), one job each: the
-#: reference and the run whose distance to it is its own error.
-REFERENCE_PARTS = {"full": "reference_n particles per type", "half": "half as many"}
+#: The two runs of each reference of the beyond studies, one job each: the reference and the run at half its
+#: resolution, whose distance to it is its own error. The exact MSPD (scripts/sticky/beyond_reference.py, the cost
+#: study's) and the upwind scheme for (1.7) (beyond_upwind.py, the limits study's and the cost study's other
+#: candidate), each with what its parts hold.
+REFERENCE_PARTS = {"reference": {"full": "reference_n particles per type", "half": "half as many"},
+                   "upwind": {"full": "upwind_reference_cells cells", "half": "half as many"}}
 
 
-def reference_path(case: str, part: str) -> str:
-    """The result of one part of the cost study's exact MSPD reference for one p-system case."""
-    return f"results/sticky/beyond_reference_{case}.npz" if part == "full" else \
-        f"results/sticky/beyond_reference_{case}_{part}.npz"
+def reference_path(study: str, case: str, part: str) -> str:
+    """The result of one part of a reference (``study``: "reference", the exact MSPD, or "upwind") for one p-system
+    case."""
+    return f"results/sticky/beyond_{study}_{case}.npz" if part == "full" else \
+        f"results/sticky/beyond_{study}_{case}_{part}.npz"
 
 
 def _beyond(s, keys):
@@ -264,21 +268,23 @@ RESULTS = (
         Job(
             "beyond the paper: the exact MSPD against conservative and upwind finite volumes (untimed)",
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, LIMIT_SETTINGS)},
-            inputs={case: f"results/sticky/beyond_upwind_{case}.npz" for case in PSYSTEM_CASES},
+            inputs={f"{case}_{part}": reference_path("upwind", case, part) for case in PSYSTEM_CASES
+                    for part in REFERENCE_PARTS["upwind"]},
         ),
     ),
     *(Result(
-        f"results/sticky/beyond_upwind_{case}.npz",
+        reference_path("upwind", case, part),
         "beyond_upwind.py",
-        ("case", "upwind_reference_cells", "upwind_w", "upwind_gap"),
+        ("case", "part", "upwind_reference_cells", "cells", "upwind_w"),
         Job(
-            f"beyond the paper: the upwind reference of the limits study and its half grid, {case} case (untimed)",
-            lambda s, case=case: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
-                                  "cfg": _beyond(s, ("t", "domain", "cfl", "upwind_reference_cells"))},
+            f"beyond the paper: the upwind reference of the limits study, {case} case, {about} (untimed)",
+            lambda s, case=case, part=part: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
+                                             "part": part,
+                                             "cfg": _beyond(s, ("t", "domain", "cfl", "upwind_reference_cells"))},
         ),
-    ) for case in PSYSTEM_CASES),
+    ) for case in PSYSTEM_CASES for part, about in REFERENCE_PARTS["upwind"].items()),
     *(Result(
-        reference_path(case, part),
+        reference_path("reference", case, part),
         "beyond_reference.py",
         ("case", "part", "n", "mspd"),
         Job(
@@ -286,7 +292,7 @@ RESULTS = (
             lambda s, case=case, part=part: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
                                              "part": part, "cfg": _beyond(s, ("t", "reference_n"))},
         ),
-    ) for case in PSYSTEM_CASES for part, about in REFERENCE_PARTS.items()),
+    ) for case in PSYSTEM_CASES for part, about in REFERENCE_PARTS["reference"].items()),
     Result(
         "results/sticky/beyond.npz",
         "beyond_data.py",
@@ -315,8 +321,8 @@ RESULTS = (
             "beyond the paper: the cost study (timed runs, alone on the cores), merged with the limits",
             lambda s: {"system": _system(s), "cases": _cases(s), "cfg": _beyond(s, COST_SETTINGS)},
             inputs={"limits": "results/sticky/beyond_limits.npz",
-                    **{f"{case}_{part}": reference_path(case, part) for case in PSYSTEM_CASES
-                       for part in REFERENCE_PARTS}},
+                    **{f"{case}_{part}": reference_path("reference", case, part) for case in PSYSTEM_CASES
+                       for part in REFERENCE_PARTS["reference"]}},
             threads="all",
         ),
     ),
