@@ -132,23 +132,27 @@ def _primitive_of_spread(spread, difference, table, a, coefficient):
 
 
 @njit(inline="always")
+def _primitive(i, j, n, table, a, coefficient):
+    """The p-system's primitive P (5.7) at the w^+ level i/n and the w^- level j/n, of the spread w^+ - w^- as
+    the loops round it, fl(i/n) - fl(j/n), through ``table`` (:func:`_primitive_of_spread`, row i - j + n)."""
+    return _primitive_of_spread(i / n - j / n, i - j + n, table, a, coefficient)
+
+
+@njit(inline="always")
 def _psystem_speeds(a, coefficient, gamma, lo, hi, row, lam, table):
     """Velocities (1.8) lam[gamma, lo:hi] of the p-system's particles gamma:lo .. gamma:hi-1 with ``row[g]``
     particles of type g behind them, from the m + 1 = hi - lo + 1 values of the primitive of (5.7) in its own
     variable, P = coefficient * atan(sinh(a (w^+ - w^-))), at the own levels lo/n .. hi/n: particle k moves
-    at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+: the
-    spread w^+ - w^- is (count - k)/n, resp. (k - count)/n, each value kept in ``table``
-    (:func:`_primitive_of_spread`)."""
+    at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+
+    (:func:`_primitive`)."""
     n = lam.shape[1]
     count = row[1 - gamma]
-    other = count / n
     below = 0.0
     for k in range(lo, hi + 1):
-        level = k / n
         if gamma == 0:
-            above = _primitive_of_spread(other - level, count - k + n, table, a, coefficient)
+            above = _primitive(count, k, n, table, a, coefficient)
         else:
-            above = _primitive_of_spread(level - other, k - count + n, table, a, coefficient)
+            above = _primitive(k, count, n, table, a, coefficient)
         if k > lo:
             lam[gamma, k - 1] = n * (above - below)
         below = above
@@ -683,15 +687,6 @@ def _meeting(ta, xa, va, tb, xb, vb):
     return start + gap / (va - vb)
 
 
-@njit(inline="always")
-def _primitive(i, j, n, table, constants):
-    """The p-system's primitive P (5.7) at the w^+ level i/n and the w^- level j/n: of the spread fl(i/n) - fl(j/n)
-    as the event loop rounds it, through its table (:func:`_primitive_of_spread`). The velocities (1.8) are
-    n (P(c, k + 1) - P(c, k)) for type-0 particle k with c of type 1 behind it and n (P(i + 1, c) - P(i, c)) for
-    type-1 particle i with c of type 0 behind it, as :func:`_psystem_speeds` computes them for one member."""
-    return _primitive_of_spread(i / n - j / n, i - j + n, table, constants[0], constants[1])
-
-
 @njit
 def _rows(x0, start_speeds, behind, t, constants, table, lam, out, extremes):
     """Pass over the grid row by row: type-0 particles from the right (k = n-1 .. 0), each through the type-1
@@ -737,9 +732,9 @@ def _rows(x0, start_speeds, behind, t, constants, table, lam, out, extremes):
             if k + 1 < n and not place < front:
                 return -1
             # the velocities (1.8) after the crossing: k with i + 1 of type 1 behind it, i with k of type 0
-            here = _primitive(i + 1, k, n, table, constants)
-            va = n * (_primitive(i + 1, k + 1, n, table, constants) - here)
-            lam[1, i] = n * (here - _primitive(i, k, n, table, constants))
+            here = _primitive(i + 1, k, n, table, constants[0], constants[1])
+            va = n * (_primitive(i + 1, k + 1, n, table, constants[0], constants[1]) - here)
+            lam[1, i] = n * (here - _primitive(i, k, n, table, constants[0], constants[1]))
             ta, xa, lam[0, k] = t_new, place, va
             extremes[0], extremes[1] = min(extremes[0], va), max(extremes[1], lam[1, i])
             mine[0, filled], mine[1, filled], mine[2, filled] = ta, xa, va
@@ -795,9 +790,9 @@ def _columns(x0, start_speeds, behind, t, constants, table, lam, out):
             place = 0.5 * ((x0_[k] + va * (t_new - t0[k])) + (xb + vb * (t_new - tb)))
             if i > 0 and not rear < place:
                 return -1
-            here = _primitive(i + 1, k, n, table, constants)
-            lam[0, k] = n * (_primitive(i + 1, k + 1, n, table, constants) - here)
-            vb = n * (here - _primitive(i, k, n, table, constants))
+            here = _primitive(i + 1, k, n, table, constants[0], constants[1])
+            lam[0, k] = n * (_primitive(i + 1, k + 1, n, table, constants[0], constants[1]) - here)
+            vb = n * (here - _primitive(i, k, n, table, constants[0], constants[1]))
             t0[k], x0_[k], count0[k] = t_new, place, i + 1
             tb, xb, lam[1, i] = t_new, place, vb
             mine[0, filled], mine[1, filled], mine[2, filled] = tb, xb, vb
