@@ -20,6 +20,7 @@ from particle_methods.sticky.multitype_events import (
     PRIMITIVE_WAYS,
     _primitive_formula,
     _primitive_of_spread,
+    _primitive_table,
     _Run,
 )
 from particle_methods.sticky.spd import cluster_sizes, spd_positions, velocities_from_flux
@@ -238,7 +239,7 @@ def test_compiled_primitive_gives_the_python_primitives_dynamics(case):
 
 
 def test_primitive_table_gives_the_formulas_values_bit_for_bit():
-    # The compiled loop keeps the primitive's values per difference of counts, for the last PRIMITIVE_WAYS
+    # The compiled loops keep the primitive's values per difference of counts, for the last PRIMITIVE_WAYS
     # doubles the spread rounds to: every value it returns is the formula's at that very double, also on a
     # difference with more doubles than a row keeps (the oldest evicted), in any order, asked again.
     n = 6400
@@ -251,7 +252,7 @@ def test_primitive_table_gives_the_formulas_values_bit_for_bit():
     rng = np.random.default_rng(3)
     random = [tuple(pair) for pair in rng.integers(0, n + 1, size=(2000, 2))]
     asked = [pairs[i] for i in rng.integers(0, len(pairs), size=2000)] + random + random[::-1]
-    table = np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan)
+    table = _primitive_table(n)
     a, coefficient = SYSTEM.a, SYSTEM.primitive_coefficient
     for c, k in asked:
         spread = levels[c] - levels[k]

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from particle_methods.sticky import mspd_exact, mspd_exact_at
 from particle_methods.sticky.cases import psystem_initial_configuration, psystem_initial_measures
-from particle_methods.sticky.multitype_events import PRIMITIVE_WAYS, _columns, _rows
+from particle_methods.sticky.multitype_events import _columns, _primitive_table, _rows
 from particle_methods.sticky.theory import sampled_configuration
 from particle_methods.systems import PSystem
 
@@ -45,7 +45,7 @@ def _pass(kernel, x0, system, t, start_speeds=None):
     ranks = ranks_kernel(x0)[0]
     behind = np.ascontiguousarray(ranks[[0, 1], :, [1, 0]])
     speeds = _initial_speeds(system, ranks) if start_speeds is None else np.asarray(start_speeds, dtype=float)
-    table = np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan)
+    table = _primitive_table(n)
     constants = np.array([system.a, system.primitive_coefficient])
     lam, out = np.empty((2, n)), np.empty((2, n))
     if kernel is _rows:

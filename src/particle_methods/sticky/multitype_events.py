@@ -29,14 +29,15 @@ an event needs them, at the ranks of that event only: at the start for every par
 crossing for the members of its two clusters, m + 1 values of the primitive for a cluster of m
 members. No velocity is kept for ranks that no particle occupies (a table over every rank held
 d (n+1)^d of them), so a run holds O(d^2 n) words: d n clusters with their d counts each, as many
-as the ranks of :func:`~particle_methods.sticky.mspd.ranks_kernel`; for d = 2, 128 bytes per
-particle. For a :class:`~particle_methods.systems.PSystem` the primitive is evaluated inside the
-compiled event loop (:func:`~particle_methods.systems.speed_primitive_formula`, with libm's sinh
-and atan where NumPy has its own: the results agree to rounding). Its variable is the spread
+as the ranks of :func:`~particle_methods.sticky.mspd.ranks_kernel`; for d = 2, 86 bytes per
+particle (the ids and counts in 32 bits: :data:`MAX_EVENTS` keeps d n far below 2^31). For a
+:class:`~particle_methods.systems.PSystem` the primitive is evaluated inside the compiled event loop
+(:func:`~particle_methods.systems.speed_primitive_formula`, with libm's sinh and atan where NumPy has its own:
+the results agree to rounding). Its variable is the spread
 w^+ - w^- = (i - j)/n of two counts, as the loop rounds it, fl(i/n) - fl(j/n): a few doubles for
 each of the 2 n + 1 differences i - j. A table of 2 n + 1 rows keeps the values computed for the
-last :data:`PRIMITIVE_WAYS` doubles of each difference (128 more bytes per particle), so the loop
-evaluates each double about once (at n = 3200, 1.1e4 and 2.2e4 evaluations in the rarefaction and shock
+last :data:`PRIMITIVE_WAYS` doubles of each difference (64 more bytes per particle), so the loop
+evaluates each double about once (at n = 3200, 8.9e4 and 2.3e4 evaluations in the rarefaction and shock
 cases for 1.8e7 and 1.9e7 without it), and a kept value is the one it would compute anew: the table
 changes no bit. Any other system's
 ``speed_primitive`` is a Python method: the loop leaves the compiled kernel at each crossing for
@@ -72,9 +73,11 @@ from .spd import MAX_POSITIONS, check_reach
 #: p-system cases with n = 6400 per type took 4.8 s (rarefaction, 1.8e7 crossings, 0.26 us each) and 2.8 s
 #: (shocks, 1.3e7 crossings, 0.22 us) up to t = 2 (benchmarks/bench_mspd_exact.py). A crossing costs more
 #: at larger n, as the heap and the clusters leave the caches (before the heap and table of issue 47: 0.40 us
-#: at n = 6400, 0.65 us in the pipeline's jobs at n = 25,600 and 12,800), so the n^2 count of crossings
-#: gives a lower bound: over 75 s for the rarefaction case at n = 25,600, over 3 minutes for a run reaching
-#: the bound. Memory is no limit: 256 bytes per particle.
+#: at n = 6400, 0.65 us in the pipeline's jobs at n = 25,600 and 12,800; with 64-bit ids and a table of 8
+#: values a difference, 0.54 to 0.58 us for the shock case at 25,600 alone, 0.35 to 0.47 us with the 32-bit
+#: ids and 4 values kept), so the n^2 count of crossings gives a lower bound: over 75 s for the rarefaction
+#: case's event loop at n = 25,600, over 3 minutes for a run reaching the bound. Memory is no limit: 150 bytes
+#: per particle.
 MAX_EVENTS = 7 * 10**8
 
 #: Largest crossing bound d(d-1) n^2 / 2 for a system whose ``speed_primitive`` is Python (any but a
@@ -110,17 +113,28 @@ class EventCounts(_Counts):
 _primitive_formula = njit(speed_primitive_formula)
 
 
-#: Values of the primitive the compiled loop keeps per difference of counts (:func:`_primitive_of_spread`).
-PRIMITIVE_WAYS = 8
+#: Values of the primitive the compiled loops keep per difference of counts (:func:`_primitive_of_spread`): a row
+#: of 4 (spread, value) pairs is one 64-byte cache line, the table 128 n bytes. With 8 (128 bytes a row) the loops
+#: evaluated the primitive least (at n = 3200, 1.1e4 times in the rarefaction case and 2.2e4 in the shock case;
+#: 8.9e4 and 2.3e4 with 4, 2.7e6 and 9.6e5 with 2), but at n = 25,600 its 6.5 MB table left the caches. Measured
+#: there on an AMD EPYC (AVX2, 2 cores; benchmarks/README.md): the shock case's event loop took 113 to 120 s with
+#: 8 values, 74 to 97 s with 4 and 72 to 86 s with 2; the rarefaction case's grid 15.7 to 17.1 s, 13.5 to 16.8 s
+#: and 19.2 to 19.9 s.
+PRIMITIVE_WAYS = 4
+
+
+def _primitive_table(n: int) -> np.ndarray:
+    """The table of :func:`_primitive_of_spread` for n particles per type: 2 n + 1 rows (the differences of counts
+    -n..n) of :data:`PRIMITIVE_WAYS` (spread, value) pairs, empty (NaN equals no spread)."""
+    return np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan)
 
 
 @njit(inline="always")
 def _primitive_of_spread(spread, difference, table, a, coefficient):
     """coefficient * atan(sinh(a spread)) for spread = (i - j)/n as the loop rounds it, fl(i/n) - fl(j/n): the
     value kept in row ``difference`` = i - j + n of ``table`` (pairs spread, value, most recent first) for the
-    same double, else computed and kept. Rounding makes a few doubles of one difference (up to 16 at n = 6400),
-    each a row keeps (:data:`PRIMITIVE_WAYS`) is evaluated once: the same value as evaluated anew.
-    A spread is never -0.0 (x - x is +0.0), so == compares the bits."""
+    same double, else computed and kept. Rounding makes a few doubles of one difference (up to 16 at n = 6400);
+    a kept value is the one evaluated anew. A spread is never -0.0 (x - x is +0.0), so == compares the bits."""
     for way in range(PRIMITIVE_WAYS):
         if table[difference, 2 * way] == spread:
             return table[difference, 2 * way + 1]
@@ -515,21 +529,24 @@ class _Run(NamedTuple):
     @classmethod
     def allocate(cls, lam: np.ndarray, compiled: bool) -> _Run:
         """The arrays for the velocities ``lam`` (d, n); with ``compiled`` (a p-system) the table of the primitive's
-        values (:func:`_primitive_of_spread`), 2 n + 1 rows of 2 :data:`PRIMITIVE_WAYS` doubles."""
+        values (:func:`_primitive_of_spread`), 2 n + 1 rows of 2 :data:`PRIMITIVE_WAYS` doubles. Ids, members and
+        counts are 32-bit (below d n <= :data:`MAX_EVENTS`): with 64-bit ones and a table of 8 values a difference,
+        the shock case at n = 25,600 per type ran 1.2 to 1.5 times as long as now, its arrays out of the caches."""
         d, n = lam.shape
         capacity = d * n  # at most one cluster per particle
-        ints = [np.empty(capacity, dtype=np.int64) for _ in range(6)]  # kind, low, high, prv, nxt, heap
-        where = np.full(capacity, -1, dtype=np.int64)
-        free = np.arange(capacity - 1, -1, -1)
+        ints = [np.empty(capacity, dtype=np.int32) for _ in range(6)]  # kind, low, high, prv, nxt, heap
+        where = np.full(capacity, -1, dtype=np.int32)
+        free = np.arange(capacity - 1, -1, -1, dtype=np.int32)
         state = np.zeros(5, dtype=np.int64)
         state[_STAGE], state[_FREE] = _RUNNING, capacity
         extremes = np.empty((2, d))
         extremes[0], extremes[1] = np.inf, -np.inf
         motion = (*(np.empty(capacity) for _ in range(3)), np.full(capacity + 1, np.inf))  # xref, tref, vel, hkey
         return cls(lam, (*ints, where, free), motion,
-                   np.empty((capacity, d), dtype=np.int64), np.empty(n, dtype=np.int64), np.empty(n),
+                   np.empty((capacity, d), dtype=np.int32), np.empty(n, dtype=np.int32), np.empty(n),
                    np.empty((2, d), dtype=np.int64), np.empty(d), state, np.empty(6, dtype=np.int64), extremes,
-                   np.empty(3), np.full((2 * n + 1 if compiled else 0, 2 * PRIMITIVE_WAYS), np.nan))
+                   np.empty(3),
+                   _primitive_table(n) if compiled else np.empty((0, 2 * PRIMITIVE_WAYS)))
 
     def nbytes(self) -> int:
         """Bytes held by the run's arrays (the velocities included)."""
@@ -847,7 +864,7 @@ def _by_grid(x0: np.ndarray, system, t: float):
     # As in mspd_exact: every velocity (1.8) of the p-system is at most 2 A in magnitude.
     check_reach(x0, 2.0 * system.speed_scale, t, "t", "velocities", position_name="x0")
     constants = np.array([system.a, system.primitive_coefficient])
-    table = np.full((2 * n + 1, 2 * PRIMITIVE_WAYS), np.nan)
+    table = _primitive_table(n)
     lam, out, extremes = np.empty((d, n)), np.empty((d, n)), np.array([np.inf, -np.inf])
     if _rows(x0, start_speeds, behind, t, constants, table, lam, out, extremes) < 0 or not extremes[0] > extremes[1]:
         return None
