@@ -74,14 +74,11 @@ def sound_speed_formula(u, nu, kappa):
 
 
 def speed_primitive_formula(spread, a, coefficient):
-    """The p-system's primitive coefficient * gd(a spread) of :meth:`PSystem.speed_primitive` (coefficient = -A/a,
-    spread = w^+ - w^-; gd(y) = atan(sinh y) the Gudermannian), without checks (as above): the compiled MSPD
-    (:mod:`particle_methods.sticky.multitype_events`) evaluates the same expression. It is evaluated as
-    2 atan(tanh(y/2)): on the p-system's spreads (|y| <= a) both forms are within 2 ulps of the exact value (mean
-    0.25 and 0.28 ulp on 5000 random spreads against 120-bit arithmetic; 1 ulp and 2 on small ones), and NumPy's
-    tanh is vectorised on CPUs without AVX-512, where its sinh is libm's: 30 ns a value against 52 on an AMD EPYC
-    with AVX2 (the upwind scheme for (1.7) evaluates three a face and step). It trusts its caller's checks."""
-    return 2.0 * coefficient * np.arctan(np.tanh(0.5 * a * spread))
+    """The p-system's primitive coefficient * atan(sinh(a spread)) of :meth:`PSystem.speed_primitive`
+    (coefficient = -A/a, spread = w^+ - w^-), without checks (as above): the compiled MSPD
+    (:mod:`particle_methods.sticky.multitype_events`) evaluates the same expression.
+    It trusts its caller's checks."""
+    return coefficient * np.arctan(np.sinh(a * spread))
 
 
 #: Elements of the p-system's primitive evaluated by one NumPy call in :func:`speed_primitives_into`: each of the
@@ -93,10 +90,10 @@ PRIMITIVE_CHUNK = 8192
 
 
 def speed_primitives_into(spreads, a, coefficient, primitives):
-    """primitives = coefficient gd(a spreads), the p-system's primitive of (5.7), by
+    """primitives = coefficient atan(sinh(a spreads)), the p-system's primitive of (5.7), by
     :func:`speed_primitive_formula` on NumPy arrays as :meth:`PSystem.speed_primitive`
     evaluates it on the Python path, in chunks of :data:`PRIMITIVE_CHUNK` elements: the same values to the last
-    bit (NumPy's vectorised tanh and arctan give an element the same result at any place in any array). The
+    bit (NumPy's vectorised sinh and arctan give an element the same result at any place in any array). The
     compiled loops of the upwind scheme and of the iterated TSPD call it in object mode once per step.
     It trusts its caller's checks."""
     spreads, primitives = spreads.reshape(-1), primitives.reshape(-1)
@@ -143,7 +140,7 @@ class PSystem:
 
     @property
     def primitive_coefficient(self) -> float:
-        """-A/a: the factor of gd(a (w^+ - w^-)) in :meth:`speed_primitive`."""
+        """-A/a: the factor of atan(sinh(a (w^+ - w^-))) in :meth:`speed_primitive`."""
         return -(self.speed_scale / self.a)
 
     @property
@@ -196,7 +193,7 @@ class PSystem:
         """Antiderivative of lambda^gamma in its own variable, at ``levels[..., :] = (w^-, w^+)``.
 
         Both speeds are +-A / cosh(a (w^+ - w^-)) with A the speed scale, whose
-        antiderivative is the Gudermannian gd(y) = atan(sinh y): -(A/a) gd(a (w^+ - w^-)) serves
+        antiderivative is the Gudermannian: -(A/a) atan(sinh(a (w^+ - w^-))) serves
         for lambda^- in w^- and for lambda^+ in w^+ alike.
         """
         integer_at_least("gamma", gamma, 0)

@@ -491,15 +491,15 @@ def upwind_diagonal(system, w0, x_edges, t, cfl: float = 0.9, return_steps: bool
     primitives or speeds are refused. With ``return_steps`` the number of time steps taken is
     returned too (d cells steps is the work).
 
-    For a :class:`~particle_methods.systems.PSystem` (the class itself, d = 2) the time loop runs compiled
-    (:func:`_upwind_psystem_kernel`), with the same steps, checks and errors: the primitive of (5.7),
-    :func:`~particle_methods.systems.speed_primitive_formula`, is evaluated by NumPy at each step as
-    :meth:`PSystem.speed_primitive` does, the rest of the step compiled, and the result is that of the Python path
-    to the last bit. The primitive is not evaluated in compiled code: libm's sinh and atan there (the form atan(sinh
-    y) of the time) cost 26 ns a value against NumPy's 2.4 (AVX-512), and differ from NumPy's in the last bit for
-    one value in six, which the time step amplifies: s_max is set by averaged speeds in the tails of the data, where
-    the fluctuations are near :data:`SPEED_RESOLUTION` and carry relative errors up to about 1e-5, so the steps and
-    the results moved by up to 8e-6 and 5e-8 (4000 cells, t = 2).
+    For a :class:`~particle_methods.systems.PSystem` (the class itself, d = 2) the time loop runs
+    compiled (:func:`_upwind_psystem_kernel`), with the same steps, checks and errors: the primitive
+    of (5.7), :func:`~particle_methods.systems.speed_primitive_formula`, is evaluated by NumPy at each
+    step as :meth:`PSystem.speed_primitive` does, the rest of the step compiled, and the result is that
+    of the Python path to the last bit. The primitive is not evaluated in compiled code: libm's sinh and
+    atan there cost 26 ns a value against NumPy's 2.4 (AVX-512), and differ from NumPy's in the last bit
+    for one value in six, which the time step amplifies: s_max is set by averaged speeds in the tails of
+    the data, where the fluctuations are near :data:`SPEED_RESOLUTION` and carry relative errors up to
+    about 1e-5, so the steps and the results moved by up to 8e-6 and 5e-8 (4000 cells, t = 2).
     """
     d = checked_system(system)
     return_steps = instance("return_steps", return_steps, (bool, np.bool_))

@@ -32,7 +32,7 @@ d (n+1)^d of them), so a run holds O(d^2 n) words: d n clusters with their d cou
 as the ranks of :func:`~particle_methods.sticky.mspd.ranks_kernel`; for d = 2, 86 bytes per
 particle (the ids and counts in 32 bits: :data:`MAX_EVENTS` keeps d n far below 2^31). For a
 :class:`~particle_methods.systems.PSystem` the primitive is evaluated inside the compiled event loop
-(:func:`~particle_methods.systems.speed_primitive_formula`, with libm's tanh and atan where NumPy has its own:
+(:func:`~particle_methods.systems.speed_primitive_formula`, with libm's sinh and atan where NumPy has its own:
 the results agree to rounding). Its variable is the spread
 w^+ - w^- = (i - j)/n of two counts, as the loop rounds it, fl(i/n) - fl(j/n): a few doubles for
 each of the 2 n + 1 differences i - j. A table of 2 n + 1 rows keeps the values computed for the
@@ -131,7 +131,7 @@ def _primitive_table(n: int) -> np.ndarray:
 
 @njit(inline="always")
 def _primitive_of_spread(spread, difference, table, a, coefficient):
-    """coefficient * gd(a spread) for spread = (i - j)/n as the loop rounds it, fl(i/n) - fl(j/n): the
+    """coefficient * atan(sinh(a spread)) for spread = (i - j)/n as the loop rounds it, fl(i/n) - fl(j/n): the
     value kept in row ``difference`` = i - j + n of ``table`` (pairs spread, value, most recent first) for the
     same double, else computed and kept. Rounding makes a few doubles of one difference (up to 16 at n = 6400);
     a kept value is the one evaluated anew. A spread is never -0.0 (x - x is +0.0), so == compares the bits."""
@@ -156,7 +156,7 @@ def _primitive(i, j, n, table, a, coefficient):
 def _psystem_speeds(a, coefficient, gamma, lo, hi, row, lam, table):
     """Velocities (1.8) lam[gamma, lo:hi] of the p-system's particles gamma:lo .. gamma:hi-1 with ``row[g]``
     particles of type g behind them, from the m + 1 = hi - lo + 1 values of the primitive of (5.7) in its own
-    variable, P = coefficient * gd(a (w^+ - w^-)), at the own levels lo/n .. hi/n: particle k moves
+    variable, P = coefficient * atan(sinh(a (w^+ - w^-))), at the own levels lo/n .. hi/n: particle k moves
     at n (P((k+1)/n) - P(k/n)), the other level being (its count)/n. Type 0 is w^-, type 1 is w^+
     (:func:`_primitive`)."""
     n = lam.shape[1]
@@ -636,7 +636,7 @@ def mspd_exact(x0, system, times, return_events: bool = False):
     lam = _initial_speeds(system, ranks)
     # Every velocity (1.8) of the p-system is an average of lambda^gamma, at most A = speed_scale in
     # magnitude; the rounding of n (P((k+1)/n) - P(k/n)) adds about 8 n eps |P| with |P| <= A
-    # (|gd(y)| <= |y|), below A for any n accepted: 2 A bounds every velocity the run computes.
+    # (|atan(sinh(y))| <= |y|), below A for any n accepted: 2 A bounds every velocity the run computes.
     check_reach(x0, 2.0 * system.speed_scale if compiled else float(np.abs(lam).max()), last, "times", "velocities",
                 position_name="x0")
     run = _Run.allocate(lam, compiled)
