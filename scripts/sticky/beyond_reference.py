@@ -16,15 +16,11 @@ from particle_methods.sticky.multitype_events import mspd_exact_at
 from particle_methods.systems import PSystem
 from particle_replication.workflow import logged, progress, save_results
 
-#: The particles per type of each part, from reference_n.
-PARTS = {"full": lambda n: n, "half": lambda n: n // 2}
 
-
-def run(system_params, x0, case, part, p, output):
+def run(system_params, x0, case, part, n, p, output):
+    """One part of the reference: ``n`` particles per type (the registry's PART_DIVISORS of reference_n)."""
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
-    if part not in PARTS:
-        raise ValueError(f"part must be one of {sorted(PARTS)}, got {part!r}")
-    n = PARTS[part](int(p["reference_n"]))
+    n = int(n)
     mspd, method = mspd_exact_at(psystem_initial_configuration(case, x0, n), system, p["t"], return_method=True)
     progress(f"{case}: exact MSPD with n = {n} per type at t = {p['t']} ({part} part of the reference), by the "
              f"{'grid of crossings' if method == 'grid' else 'event loop'}")
@@ -33,4 +29,4 @@ def run(system_params, x0, case, part, p, output):
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.system, snakemake.params.x0, snakemake.params.case, snakemake.params.part,  # noqa: F821
-        snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+        snakemake.params.size, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

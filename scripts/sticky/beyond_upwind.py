@@ -16,16 +16,11 @@ from particle_methods.sticky.cases import psystem_initial_cells
 from particle_methods.systems import PSystem
 from particle_replication.workflow import logged, progress, save_results
 
-#: The cells of each part, from upwind_reference_cells.
-PARTS = {"full": lambda cells: cells, "half": lambda cells: cells // 2}
 
-
-def run(system_params, x0, case, part, p, output):
+def run(system_params, x0, case, part, cells, p, output):
+    """One part of the reference: ``cells`` cells (the registry's PART_DIVISORS of upwind_reference_cells)."""
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
-    if part not in PARTS:
-        raise ValueError(f"part must be one of {sorted(PARTS)}, got {part!r}")
-    reference_cells = int(p["upwind_reference_cells"])
-    cells = PARTS[part](reference_cells)
+    reference_cells, cells = int(p["upwind_reference_cells"]), int(cells)
     edges = np.linspace(*p["domain"], cells + 1)
     up = upwind_diagonal(system, psystem_initial_cells(case, x0, edges), edges, p["t"], p["cfl"])
     progress(f"{case}: upwind on {cells} cells ({part} part of the reference on {reference_cells})")
@@ -35,4 +30,4 @@ def run(system_params, x0, case, part, p, output):
 
 with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
     run(snakemake.params.system, snakemake.params.x0, snakemake.params.case, snakemake.params.part,  # noqa: F821
-        snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+        snakemake.params.size, snakemake.params.cfg, snakemake.output[0])  # noqa: F821

@@ -100,6 +100,8 @@ PSYSTEM_CASES = ("rarefaction", "shocks")
 #: candidate), each with what its parts hold.
 REFERENCE_PARTS = {"reference": {"full": "reference_n particles per type", "half": "half as many"},
                    "upwind": {"full": "upwind_reference_cells cells", "half": "half as many"}}
+#: Each part's resolution: the reference's (reference_n, upwind_reference_cells) over its divisor.
+PART_DIVISORS = {"full": 1, "half": 2}
 
 
 def reference_path(study: str, case: str, part: str) -> str:
@@ -280,6 +282,7 @@ RESULTS = (
             f"beyond the paper: the upwind reference of the limits study, {case} case, {about} (untimed)",
             lambda s, case=case, part=part: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
                                              "part": part,
+                                             "size": s["beyond"]["upwind_reference_cells"] // PART_DIVISORS[part],
                                              "cfg": _beyond(s, ("t", "domain", "cfl", "upwind_reference_cells"))},
         ),
     ) for case in PSYSTEM_CASES for part, about in REFERENCE_PARTS["upwind"].items()),
@@ -290,7 +293,8 @@ RESULTS = (
         Job(
             f"beyond the paper: the cost study's exact MSPD reference, {case} case, {about} (untimed)",
             lambda s, case=case, part=part: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
-                                             "part": part, "cfg": _beyond(s, ("t", "reference_n"))},
+                                             "part": part, "size": s["beyond"]["reference_n"] // PART_DIVISORS[part],
+                                             "cfg": _beyond(s, ("t", "reference_n"))},
         ),
     ) for case in PSYSTEM_CASES for part, about in REFERENCE_PARTS["reference"].items()),
     Result(
