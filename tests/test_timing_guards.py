@@ -57,8 +57,9 @@ def test_interleaved_rounds_time_every_run_and_keep_the_first_results():
         calls.append(i)
         return i * 10
 
-    seconds, results = interleaved([lambda i=i: run(i) for i in range(3)], 3)
-    assert calls == [0, 1, 2] * 3 and results == [0, 10, 20] and all(s >= 0 for s in seconds)
+    timed = interleaved([lambda i=i: run(i) for i in range(3)], 3)
+    assert calls == [0, 1, 2] * 3 and timed.results == [0, 10, 20] and timed.count == [3, 3, 3]
+    assert all(0 <= best <= slowest for best, slowest in zip(timed.best, timed.slowest))
 
 
 def test_a_drift_of_the_machine_during_one_round_reaches_no_best_time_when_every_run_repeats(monkeypatch):
@@ -78,11 +79,13 @@ def test_a_drift_of_the_machine_during_one_round_reaches_no_best_time_when_every
     def exponent(best):  # as the check fits it (verdicts.sticky.cost_claims)
         return -order("test.wall_time", "n", 1.0 / np.array([1.0, 2.0, 4.0]), best, 3).slope
 
-    once, _ = interleaved(runs, 5)
+    once = interleaved(runs, 5).best
     assert rounds == [1.0, 2.0, 4.0] and exponent(once) > 1.2
     rounds.clear()
-    every, _ = interleaved(runs, 5, repeat_below=math.inf)
-    assert len(rounds) == 15 and every == [1.0, 2.0, 4.0] and exponent(every) == pytest.approx(1.0)
+    every = interleaved(runs, 5, repeat_below=math.inf)
+    assert len(rounds) == 15 and every.best == [1.0, 2.0, 4.0] and exponent(every.best) == pytest.approx(1.0)
+    # the drift is recorded: the largest run's slowest round, of its five, was 1.45 times its best
+    assert every.count == [5, 5, 5] and every.slowest == [1.0, 2.0, pytest.approx(4.0 * 1.45)]
 
 
 @pytest.mark.parametrize("repeat_below", [0, -1.0, math.nan, True, "1"])

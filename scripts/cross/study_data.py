@@ -142,7 +142,7 @@ def times(p, errors_path, output, threads):
     if len(timed) != results["size"].size:
         raise RuntimeError(f"{len(timed)} timed runs for {results['size'].size} measured ones: the errors are stale")
     with LoadGuard(threads) as guard:
-        seconds, _ = interleaved(timed, p["repeats"], guard)
+        seconds = interleaved(timed, p["repeats"], guard).best
     for label, best in zip(labels, seconds):
         progress(f"  {label}: {best:.4g} s")
     progress(f"CPU {cpu()}; {guard.load:.2g} other processes runnable on average")

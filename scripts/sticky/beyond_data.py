@@ -11,8 +11,9 @@ Operations: the hull's tests, pops, pushes and writes (SPD; :func:`particle_meth
 rank entries and hull operations over the steps (TSPD), events and velocity updates (exact MSPD),
 cell updates times components (finite volumes, the steps counted by the scheme). Every kernel runs
 once untimed before its timings, so that no compilation is timed; the runs are then timed together,
-interleaved, with the CPU and a load guard recorded beside them. Only timed runs happen here: the job
-holds every core, so that no other job disturbs the timings.
+interleaved, with the CPU and a load guard recorded beside them, and each run's slowest time and number of
+timings (``*_timing``): how far the machine's speed moved between rounds, the wall-time check's uncertainty.
+Only timed runs happen here: the job holds every core, so that no other job disturbs the timings.
 """
 
 import numpy as np
@@ -59,9 +60,13 @@ class Timed:
 
     def time(self, repeats):
         with LoadGuard() as guard:
-            seconds, results = interleaved(self.runs, repeats, guard)
+            self.timed = interleaved(self.runs, repeats, guard)
         self.guard = guard
-        self.made = [row(result, time) for row, result, time in zip(self.rows, results, seconds)]
+        self.made = [row(result, time) for row, result, time in zip(self.rows, self.timed.results, self.timed.best)]
+
+    def spread(self, indices):
+        """The slowest time of each of the runs ``indices`` and how many times it was timed (rows of an array)."""
+        return np.array([[self.timed.slowest[i] for i in indices], [self.timed.count[i] for i in indices]])
 
 
 def scalar_study(name, p, timing):
@@ -167,8 +172,12 @@ def run(system_params, cases, p, limits, references, output):
            for method in ("tspd", "exact", "upwind")},
         **{f"{case}_{key}": np.asarray(study[key]) for case, study in studies.items()
            for key in ("reference", "reference_error")},
+        **{f"{case}_{method}_timing": timing.spread(study[method]) for case, study in studies.items()
+           for method in ("tspd", "exact", "upwind")},
         **{f"{name}_spd": rows(spd) for name, (spd, _) in scalar.items()},
         **{f"{name}_godunov": rows(fv) for name, (_, fv) in scalar.items()},
+        **{f"{name}_spd_timing": timing.spread(spd) for name, (spd, _) in scalar.items()},
+        **{f"{name}_godunov_timing": timing.spread(fv) for name, (_, fv) in scalar.items()},
         **{f"{name}_spd_n": np.asarray(p["scalar"][name]["spd_n"]) for name in FLUXES},
         **{f"{name}_cells": np.asarray(p["scalar"][name]["cells"]) for name in FLUXES},
         cpu=cpu(), **timing.guard.readings(),

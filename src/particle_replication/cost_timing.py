@@ -91,9 +91,8 @@ def measure(p, ulps: int = 0, seed: int = 0) -> dict:
         for count in p["steps_values"]:
             add("steps", mspd_positions, x0, system, 0.001, count, True)
     with LoadGuard() as guard:
-        seconds, counted = interleaved([run for runs in series.values() for run in runs], repeats, guard,
-                                      repeat_below=math.inf)
-    seconds, counted = iter(seconds), iter(counted)
+        timed = interleaved([run for runs in series.values() for run in runs], repeats, guard, repeat_below=math.inf)
+    seconds, counted = iter(timed.best), iter(timed.results)
     times = {name: [next(seconds) for _ in runs] for name, runs in series.items()}
     operations = {name: [int(next(counted)) for _ in runs] for name, runs in series.items()}
     return {"times": times, "operations": operations, "readings": guard.readings(), "allocator": allocator}

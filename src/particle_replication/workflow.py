@@ -18,6 +18,7 @@ import zipfile
 import zlib
 from collections.abc import Iterable, Mapping
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -67,18 +68,28 @@ REPEAT_BELOW = 0.2
 MAX_REPEATS = 100
 
 
-def interleaved(runs, repeats: int, guard=None, repeat_below: float = REPEAT_BELOW):
-    """(best seconds, results) of the callables ``runs``, timed in ``repeats`` rounds over all of them, so that a
+class Timings(NamedTuple):
+    """What :func:`interleaved` measured of each run: its best time, its first round's result, its slowest time
+    and how many times it was timed (1 for a run timed in the first round only)."""
+
+    best: list
+    results: list
+    slowest: list
+    count: list
+
+
+def interleaved(runs, repeats: int, guard=None, repeat_below: float = REPEAT_BELOW) -> Timings:
+    """The :class:`Timings` of the callables ``runs``, timed in ``repeats`` rounds over all of them, so that a
     passing disturbance of the machine hits every size alike rather than one; a run longer than
     ``repeat_below`` seconds (:data:`REPEAT_BELOW`; ``math.inf`` times every run in every round) is timed in the
-    first round only. ``results`` are those of the first round; ``guard`` (a :class:`LoadGuard`) samples the
+    first round only. Its results are those of the first round; ``guard`` (a :class:`LoadGuard`) samples the
     load before every run. Compile and warm the kernels first: the first round is timed too. At most
     :data:`MAX_REPEATS` rounds."""
     if isinstance(repeats, bool) or not isinstance(repeats, int) or not 1 <= repeats <= MAX_REPEATS:
         raise ValueError(f"repeats must be an integer from 1 to MAX_REPEATS = {MAX_REPEATS}, got {repeats!r}")
     if isinstance(repeat_below, bool) or not isinstance(repeat_below, (int, float)) or not repeat_below > 0:
         raise ValueError(f"repeat_below must be a positive number of seconds, got {repeat_below!r}")
-    best, results = [math.inf] * len(runs), [None] * len(runs)
+    best, slowest, results, count = [math.inf] * len(runs), [0.0] * len(runs), [None] * len(runs), [0] * len(runs)
     for round_ in range(repeats):
         for i, run in enumerate(runs):
             if round_ and best[i] >= repeat_below:
@@ -87,10 +98,11 @@ def interleaved(runs, repeats: int, guard=None, repeat_below: float = REPEAT_BEL
                 guard.sample()
             start = time.perf_counter()
             result = run()
-            best[i] = min(best[i], time.perf_counter() - start)
+            seconds = time.perf_counter() - start
+            best[i], slowest[i], count[i] = min(best[i], seconds), max(slowest[i], seconds), count[i] + 1
             if not round_:
                 results[i] = result
-    return best, results
+    return Timings(best, results, slowest, count)
 
 
 #: A single-threaded timed run that got less than this share of a core's time was slowed by another process.

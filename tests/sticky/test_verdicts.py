@@ -473,10 +473,11 @@ def runs(errors, work, seconds, *extra):
 
 def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_slowdown=1.0, events_exponent=2.0,
            rarefaction_plateau=False, shock_gap=0.05, mspd_gap=1e-3, reference_gap=1e-4, hll_gap=2e-4, time_power=1.0,
-           laplace_log=True, plus_shift=0.1, spd_time_power=1.0):
+           laplace_log=True, plus_shift=0.1, spd_time_power=1.0, speed=1.02, timings=3):
     """Study results shaped as the theory predicts, with one knob per claim to make it wrong. Errors are
     (1 + log n)/n where the prediction carries a log factor; every method's three largest runs last
-    more than the time floor."""
+    more than the time floor. Every run was timed ``timings`` times, its slowest ``speed`` times its best (the
+    machine's speed moved that much between rounds)."""
     n = np.array([50.0, 100.0, 200.0, 400.0, 800.0])
     errors = (1.0 + np.log(n) * laplace_log) / n
     d = {"t": 2.0, "cases": np.array(["rarefaction", "shocks"]), "limit_n": np.array([100, 200, 400, 800]),
@@ -505,6 +506,10 @@ def beyond(spd_exponent=1.0, godunov_exponent=2.0, method_exponent=2.0, exact_sl
         d[f"{case}_tspd"] = runs(errors, n ** method_exponent, 1e-6 * n**2)
         d[f"{case}_exact"] = runs(errors, n**2, exact_slowdown * 1e-6 * n**2, n**events_exponent)
         d[f"{case}_upwind"] = runs(2.0 / n, n**2, 1e-6 * n**2)
+    series = [f"{name}_{method}" for name in v.SCALAR_NAMES for method in ("spd", "godunov")]
+    series += [f"{case}_{method}" for case in ("rarefaction", "shocks") for method in ("tspd", "exact", "upwind")]
+    for key in series:
+        d[f"{key}_timing"] = np.array([speed * d[key][2], np.full(d[key].shape[1], timings)])
     return {**d, **QUIET}
 
 
@@ -586,9 +591,52 @@ def test_runs_the_reference_cannot_resolve_never_enter_a_fit():
 def test_runs_shorter_than_the_floor_never_enter_a_time_fit():
     work = np.array([1e3, 1e4, 1e5, 1e6, 1e7, 1e8])
     overhead = 2e-3 + 1e-8 * work                                     # a fixed 2 ms per call dominates below 1e5
-    assert v.time_exponent(work, overhead, 0.01, 3) == pytest.approx(1.0, abs=0.1)
-    assert v.time_exponent(work, overhead, 0.0, 6) < 0.8
-    assert math.isnan(v.time_exponent(work, overhead, 1.0, 3))
+    steady = np.array([overhead, np.full(6, 3)])
+    assert v.time_exponent(work, overhead, steady, 0.01, 3) == pytest.approx((1.0, 0.0), abs=0.1)
+    assert v.time_exponent(work, overhead, steady, 0.0, 6)[0] < 0.8
+    assert all(map(math.isnan, v.time_exponent(work, overhead, steady, 1.0, 3)))
+
+
+def test_the_time_exponents_uncertainty_bounds_what_the_machines_speed_can_do_to_it():
+    """Each fitted time up to s times its steady value (s: the largest slowest-over-best ratio of the series'
+    repeated runs) moves the fitted slope by at most the uncertainty; the bound is reached when the larger runs
+    are all slowed; it is infinite when no run was timed twice."""
+    rng = np.random.default_rng(3)
+    work = np.array([1e5, 4e5, 1.6e6, 6.4e6])
+    steady = 1e-8 * work
+    for s in (1.05, 1.6, 2.0):
+        timing = np.array([s * steady, np.full(4, 3)])
+        slope, uncertainty = v.time_exponent(work, steady, timing, 0.0, 3)
+        assert slope == pytest.approx(1.0) and uncertainty == pytest.approx(math.log(s) / math.log(16.0))
+        for _ in range(200):
+            moved = steady * np.exp(rng.uniform(0.0, math.log(s), 4))
+            assert abs(v.time_exponent(work, moved, timing, 0.0, 3)[0] - 1.0) <= uncertainty + 1e-12
+        worst = steady * np.where(np.log(work) > np.log(work[1:]).mean(), s, 1.0)
+        assert v.time_exponent(work, worst, timing, 0.0, 3)[0] - 1.0 == pytest.approx(uncertainty)
+    assert v.time_exponent(work, steady, np.array([steady, np.ones(4)]), 0.0, 3)[1] == math.inf
+
+
+def wall_time_check(d, floor=BEYOND["time_floor"]):
+    claims = v.beyond_claims(d, quiet(), {**BEYOND, "time_floor": floor})
+    return next(claim for claim in claims if claim.id == "sticky.beyond.cost.wall_time")
+
+
+def test_the_wall_time_check_abstains_when_the_machines_speed_puts_an_exponent_across_the_band():
+    """The full run that failed the check (its exponent 0.76 for the Godunov scheme, 0.97 when its job ran
+    again): an exponent near an end of the band is decided only on a machine whose speed held between the
+    rounds; one far outside fails whatever the speed did, and an unmeasured speed decides nothing."""
+    steady = wall_time_check(beyond(time_power=0.76), floor=1e-3)
+    moving = wall_time_check(beyond(time_power=0.76, speed=1.6), floor=1e-3)
+    assert steady.status == "fail" and moving.status == "abstain"
+    assert "across an end of [0.8, 1.25]" in moving.claim and "godunov_concave_laplace 0.76 +- 0.17" in moving.claim
+    short = wall_time_check(beyond(time_power=0.76))  # its Godunov runs all under the floor: nothing to decide on
+    assert short.status == "abstain" and "fewer than two runs of godunov_burgers_two_atoms" in short.claim
+    assert wall_time_check(beyond(speed=1.6)).status == "pass"         # 1 +- 0.17 lies inside
+    assert wall_time_check(beyond(time_power=1.5, speed=1.6)).status == "fail"
+    once = wall_time_check(beyond(timings=1))
+    assert once.status == "abstain" and "inf: no run of the series was timed twice" in once.claim
+    loaded = wall_time_check({**beyond(time_power=1.5), "load": np.array(3.0)})
+    assert loaded.status == "abstain" and "runnable" in loaded.claim
 
 
 def test_values_at_an_error_are_interpolated_never_extrapolated():

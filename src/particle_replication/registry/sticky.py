@@ -315,6 +315,7 @@ RESULTS = (
             "*_cells",
             "*_reference",
             "*_reference_error",
+            "*_timing",
             "cpu",
             "cpu_share",
             "load",

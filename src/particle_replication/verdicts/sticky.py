@@ -621,14 +621,29 @@ def cost_exponent(rates: Recorder, name: str, errors, work, window: int, label: 
                          np.log(1.0 / errors), np.log(work), window, label))
 
 
-def time_exponent(work, seconds, floor: float, window: int) -> float:
+def time_exponent(work, seconds, timing, floor: float, window: int) -> tuple[float, float]:
     """Slope of log(best wall time) against log(operations) over the (at most ``window``) largest runs
-    lasting at least ``floor`` seconds; NaN with fewer than two such runs."""
+    lasting at least ``floor`` seconds, and its uncertainty from the machine's speed (NaN, NaN with fewer than
+    two such runs). ``timing`` holds each run's slowest time and how many times it was timed
+    (``beyond_data.py``). The speed moved by s, the largest ratio of a run's slowest time to its best over the
+    series' runs timed more than once and lasting at least ``floor``: each fitted time may be up to s times its
+    value at a steady speed, which moves the least-squares slope by at most
+    ln(s) sum_{x_i > mean} (x_i - mean) / sum (x_i - mean)^2 (x the log operations). No prediction is fitted:
+    the uncertainty is measured on the same kernel in the same job. Infinite when no such run was timed twice:
+    the speed's movement is then unknown."""
     work, seconds = np.asarray(work, dtype=float), np.asarray(seconds, dtype=float)
+    slowest, count = np.asarray(timing, dtype=float)
     kept = np.flatnonzero(seconds >= floor)[-window:]
     if kept.size < 2:
-        return math.nan
-    return float(np.polyfit(np.log(work[kept]), np.log(seconds[kept]), 1)[0])
+        return math.nan, math.nan
+    x = np.log(work[kept])
+    slope = float(np.polyfit(x, np.log(seconds[kept]), 1)[0])
+    repeated = (count > 1) & (seconds >= floor) & (seconds > 0)
+    if not repeated.any():
+        return slope, math.inf
+    speed = float(np.max(slowest[repeated] / seconds[repeated]))
+    centred = x - x.mean()
+    return slope, math.log(speed) * float(centred[centred > 0].sum() / (centred**2).sum())
 
 
 COST_TEXTS = {
@@ -728,7 +743,8 @@ def beyond_claims(d, rates: Recorder, p):
         spd, fv = d[f"{name}_spd"], d[f"{name}_godunov"]
         for method, runs, sizes in (("spd", spd, d[f"{name}_spd_n"]), ("godunov", fv, d[f"{name}_cells"])):
             out.append(beyond_exponent_claim(rates, p, method, name, label, runs, sizes, 0.0, "exact"))
-            slopes[f"{method}_{name}"] = time_exponent(runs[1], runs[2], p["time_floor"], window)
+            slopes[f"{method}_{name}"] = time_exponent(runs[1], runs[2], d[f"{name}_{method}_timing"],
+                                                       p["time_floor"], window)
         eps = common_error(spd[0], fv[0])
         ratio = value_at_error(fv[0], fv[2], eps) / value_at_error(spd[0], spd[2], eps)
         timings.append(claim(
@@ -747,7 +763,8 @@ def beyond_claims(d, rates: Recorder, p):
         for method in sizes:
             out.append(beyond_exponent_claim(rates, p, method, name, f"p-system, {name}", runs[method], sizes[method],
                                              reference_error, reference))
-            slopes[f"{method}_{name}"] = time_exponent(runs[method][1], runs[method][2], p["time_floor"], window)
+            slopes[f"{method}_{name}"] = time_exponent(runs[method][1], runs[method][2], d[f"{name}_{method}_timing"],
+                                                       p["time_floor"], window)
         out.append(separation_claim(p, name, runs, sizes, reference_error, reference))
         events = -rates.add(order(f"{PAPER}.beyond.exact.events_{name}", "n", d["exact_n"].astype(float),
                                   1.0 / runs["exact"][3], window, name))
@@ -827,17 +844,49 @@ def beyond_claims(d, rates: Recorder, p):
     # particle rises by half over them, so its exponent measures the memory hierarchy, not the operations
     # (config/changes.yaml); its O(n) is measured on sizes within one memory regime by sticky.cost.hull.
     deciding = {key: value for key, value in slopes.items() if not key.startswith("spd_")}
-    listed = ", ".join(f"{key} {value:.2f}" for key, value in deciding.items())
-    memory = ", ".join(f"{key} {value:.2f}" for key, value in slopes.items() if key not in deciding)
-    timings.append(claim(
+
+    def listed(keys):
+        return ", ".join(f"{key} {slopes[key][0]:.2f} +- {slopes[key][1]:.2g}" for key in keys)
+
+    memory = [key for key in slopes if key not in deciding]
+    made = claim(
         c.between, "beyond.cost.wall_time", kind="check", source="our timing", figure="all cost fits",
         text=f"the counted operations are the cost: exponent of the best wall time against them over the "
              f"(at most {window}) largest runs lasting at least {p['time_floor']:g} s, farthest from 1 of: "
-             f"{listed} (the SPD's, {memory}, are reported: its largest runs cross from the cache to "
-             f"memory); on {d['cpu']}",
-        tolerance=band, measured=c.farthest_from_centre(list(deciding.values()), band)))
+             f"{listed(deciding)} (the SPD's, {listed(memory)}, are reported: its largest runs cross from the cache "
+             f"to memory); +- the most the machine's speed, as it moved between the rounds of the series' own runs, "
+             f"can move the exponent; on {d['cpu']}",
+        tolerance=band, measured=c.farthest_from_centre([value for value, _ in deciding.values()], band))
     disturbed = disturbance(d)
-    return out + [c.abstain(made, disturbed) if disturbed else made for made in timings]
+    speed = "" if any(_decided_outside(interval, band) for interval in deciding.values()) else \
+        _speed_abstention(deciding, band)
+    why = " and ".join(reason for reason in (disturbed, speed) if reason)
+    return out + [c.abstain(ratio, disturbed) if disturbed else ratio for ratio in timings] + [
+        c.abstain(made, why) if why else made]
+
+
+def _decided_outside(interval, band) -> bool:
+    """Whether the exponent (value, uncertainty) of :func:`time_exponent` lies outside ``band`` whatever the
+    machine's speed did."""
+    value, uncertainty = interval
+    return value + uncertainty < band[0] or value - uncertainty > band[1]
+
+
+def _speed_abstention(deciding, band) -> str:
+    """Why the beyond study's wall-time check cannot decide on the speed the machine had ('' when it can): an
+    exponent (value, uncertainty) of ``deciding`` whose interval reaches across an end of ``band``, is unknown (no
+    run of its series timed twice) or was not measured (fewer than two runs lasted the time floor)."""
+    across = [f"{key} {value:.2f} +- {uncertainty:.2g}" for key, (value, uncertainty) in deciding.items()
+              if not math.isnan(value) and not band[0] <= value - uncertainty <= value + uncertainty <= band[1]]
+    unmeasured = [key for key, (value, _) in deciding.items() if math.isnan(value)]
+    reasons = []
+    if across:
+        unknown = " (inf: no run of the series was timed twice)" if any("inf" in text for text in across) else ""
+        reasons.append(f"the machine's speed moved between the rounds enough to put {', '.join(across)} across an end "
+                       f"of [{band[0]:g}, {band[1]:g}]{unknown}")
+    if unmeasured:
+        reasons.append(f"fewer than two runs of {', '.join(unmeasured)} lasted the time floor")
+    return " and ".join(reasons)
 
 
 def claims(results, cfg, recorder: Recorder) -> list:
