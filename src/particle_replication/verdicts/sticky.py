@@ -874,19 +874,27 @@ def _decided_outside(interval, band) -> bool:
 
 def _speed_abstention(deciding, band) -> str:
     """Why the beyond study's wall-time check cannot decide on the speed the machine had ('' when it can): an
-    exponent (value, uncertainty) of ``deciding`` whose interval reaches across an end of ``band``, is unknown (no
-    run of its series timed twice) or was not measured (fewer than two runs lasted the time floor)."""
-    across = [f"{key} {value:.2f} +- {uncertainty:.2g}" for key, (value, uncertainty) in deciding.items()
-              if not math.isnan(value) and not band[0] <= value - uncertainty <= value + uncertainty <= band[1]]
-    unmeasured = [key for key, (value, _) in deciding.items() if math.isnan(value)]
+    exponent (value, uncertainty) of ``deciding`` whose interval reaches across an end of ``band``, whose
+    uncertainty is unknown (no run of its series lasting the time floor was timed twice) or that was not measured
+    (fewer than two runs lasted the time floor)."""
+    across, unknown, unmeasured = [], [], []
+    for key, (value, uncertainty) in deciding.items():
+        if math.isnan(value):
+            unmeasured.append(key)
+        elif math.isinf(uncertainty):
+            unknown.append(f"{key} {value:.2f}")
+        elif not band[0] <= value - uncertainty <= value + uncertainty <= band[1]:
+            across.append(f"{key} {value:.2f} +- {uncertainty:.2g}")
     reasons = []
     if across:
-        unknown = " (inf: no run of the series was timed twice)" if any("inf" in text for text in across) else ""
         reasons.append(f"the machine's speed moved between the rounds enough to put {', '.join(across)} across an end "
-                       f"of [{band[0]:g}, {band[1]:g}]{unknown}")
+                       f"of [{band[0]:g}, {band[1]:g}]")
+    if unknown:
+        reasons.append(f"no run lasting the time floor was timed twice, so the machine's speed is unmeasured, for "
+                       f"{', '.join(unknown)}")
     if unmeasured:
         reasons.append(f"fewer than two runs of {', '.join(unmeasured)} lasted the time floor")
-    return " and ".join(reasons)
+    return "; ".join(reasons)
 
 
 def claims(results, cfg, recorder: Recorder) -> list:
