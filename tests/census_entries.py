@@ -124,6 +124,7 @@ ENTRIES = {
     PM + "threads.threads_for": E(threads.threads_for, {"size": 10, "threshold": 100},
                                     accepts={"size": [10**400], "threshold": [10**400]}),
     PM + "threads.available": E(threads.available, {}),
+    PM + "threads.pool": E(threads.pool, {"workers": 1}, accepts={"workers": [10**400]}),
     # sticky
     PM + "sticky.admissibility.Admissibility": E(admissibility.Admissibility, {"rankine_hugoniot": 0.1, "entropy": 0.0,
                                                                                 "speed_scale": 1.0, "clusters": 2},

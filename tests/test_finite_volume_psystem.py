@@ -653,3 +653,18 @@ def test_grids_beyond_max_cells_are_refused_before_any_work():
     with pytest.raises(ValueError, match="MAX_CELLS"):
         godunov(BURGERS, np.zeros(MAX_CELLS + 1), edges, 0.1)
     assert exact.cell_averages(edges[:: 1000], 0.5)[0].size == (MAX_CELLS + 1) // 1000
+
+
+@pytest.mark.parametrize("case", ["rarefaction", "shocks"])
+def test_threads_split_the_primitive_and_change_no_bit(case):
+    """The pipeline's upwind references run on the job's threads: 6000 cells give 18,003 values of the primitive a
+    step, three chunks, split among 2 threads (3 asked: clamped to the process's); the steps and every value are
+    those of one thread."""
+    from particle_methods.systems import PRIMITIVE_CHUNK
+
+    edges, w0 = study_data(case, 6000)
+    assert 3 * 6001 > 2 * PRIMITIVE_CHUNK
+    one, steps = upwind_diagonal(SYSTEM, w0, edges, 0.05, return_steps=True)
+    for threads in (2, 3):
+        split, split_steps = upwind_diagonal(SYSTEM, w0, edges, 0.05, return_steps=True, threads=threads)
+        assert split_steps == steps and np.array_equal(split, one)

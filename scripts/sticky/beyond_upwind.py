@@ -6,7 +6,8 @@ both (issue 47: the two took 56 to 71 s in one job). ``beyond_limits.py`` takes 
 run as its own error and measures the exact MSPD against it (and against the conservative HLL scheme); the cost
 study (``beyond_data.py``) takes it as one of its two candidate references. On a machine without AVX-512 NumPy
 evaluates the primitive of (5.7) by libm's sinh and arctan (20 to 25 ns a value on these data, three values per
-face and step: about 90 % of a step on an AMD EPYC with AVX2). Untimed.
+face and step: about 90 % of a step on an AMD EPYC with AVX2), so the job's threads split that evaluation (the
+same result to the last bit on any number). Untimed.
 """
 
 import numpy as np
@@ -17,17 +18,18 @@ from particle_methods.systems import PSystem
 from particle_replication.workflow import logged, progress, save_results
 
 
-def run(system_params, x0, case, part, cells, p, output):
-    """One part of the reference: ``cells`` cells (the registry's PART_DIVISORS of upwind_reference_cells)."""
+def run(system_params, x0, case, part, cells, p, threads, output):
+    """One part of the reference: ``cells`` cells (the registry's PART_DIVISORS of upwind_reference_cells), the
+    primitive evaluated by ``threads`` threads."""
     system = PSystem(nu=system_params["nu"], kappa=system_params["kappa"])
     reference_cells, cells = int(p["upwind_reference_cells"]), int(cells)
     edges = np.linspace(*p["domain"], cells + 1)
-    up = upwind_diagonal(system, psystem_initial_cells(case, x0, edges), edges, p["t"], p["cfl"])
+    up = upwind_diagonal(system, psystem_initial_cells(case, x0, edges), edges, p["t"], p["cfl"], threads=threads)
     progress(f"{case}: upwind on {cells} cells ({part} part of the reference on {reference_cells})")
     save_results(output, case=np.array(case), part=np.array(part), upwind_reference_cells=reference_cells,
                  cells=cells, upwind_w=up)
 
 
-with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge):  # noqa: F821
+with logged(snakemake.log[0], snakemake.threads, nudge=snakemake.params.nudge) as threads:  # noqa: F821
     run(snakemake.params.system, snakemake.params.x0, snakemake.params.case, snakemake.params.part,  # noqa: F821
-        snakemake.params.size, snakemake.params.cfg, snakemake.output[0])  # noqa: F821
+        snakemake.params.size, snakemake.params.cfg, threads, snakemake.output[0])  # noqa: F821

@@ -12,6 +12,8 @@ each parallel region waits for a thread that is not scheduled: on 2 cores, three
   clamped to what the process may use (``NUMBA_NUM_THREADS`` when the user set it, else the
   cores). Every pipeline script calls it with the rule's ``threads``, through
   :func:`particle_replication.workflow.logged`.
+- :func:`pool` holds the package's Python threads (the FMM beside its near field, the NumPy
+  evaluations of the p-system's primitive split among threads), one pool per size, started on first use;
 - :func:`threads_for` runs a kernel on the current threads only when its problem is at least a
   size where that pays off, and on one thread below it. Each kernel family keeps that size as
   one named constant next to its kernels (``PARALLEL_MIN_...``), measured by
@@ -21,7 +23,9 @@ each parallel region waits for a thread that is not scheduled: on 2 cores, three
 
 from __future__ import annotations
 
+import concurrent.futures
 import contextlib
+import functools
 import os
 
 import numba
@@ -69,3 +73,14 @@ def threads_for(size, threshold):
     (a context manager, :func:`numba_threads`); both are non-negative integers."""
     size, threshold = integer_at_least("size", size, 0), integer_at_least("threshold", threshold, 0)
     return numba_threads(numba.get_num_threads() if size >= threshold else 1)
+
+
+def pool(workers: int) -> concurrent.futures.ThreadPoolExecutor:
+    """``workers`` >= 1 threads for work that releases the interpreter's lock (compiled kernels, NumPy's
+    ufuncs), started on first use and kept for the process."""
+    return _pool(integer_at_least("workers", workers, 1))
+
+
+@functools.cache
+def _pool(workers: int) -> concurrent.futures.ThreadPoolExecutor:
+    return concurrent.futures.ThreadPoolExecutor(max_workers=workers, thread_name_prefix="particle-methods")

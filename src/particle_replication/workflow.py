@@ -31,7 +31,8 @@ def logged(log_path, threads: int = 1, nudge=None):
     the job's ``threads`` (:func:`particle_methods.threads.use_threads`, clamped to what the
     process may use), and report the threads and the wall time. A data job passes the configuration's
     ``nudge`` ({ulps, seed}): its initial data are then moved by that many units in the last place
-    (:mod:`particle_methods.perturbation`; 0 ulps: unchanged), as the robustness run's nudged variants ask."""
+    (:mod:`particle_methods.perturbation`; 0 ulps: unchanged), as the robustness run's nudged variants ask.
+    Yields the threads used."""
     # Imported here, not with the module: they load numba, which the workflow's start (every Snakemake run parses
     # this module) and the plot jobs do not need.
     from particle_methods import perturbation
@@ -48,7 +49,7 @@ def logged(log_path, threads: int = 1, nudge=None):
         if ulps:
             print(f"initial data nudged by up to {ulps} units in the last place (seed {seed})", flush=True)
         try:
-            yield
+            yield used
         except BaseException:
             traceback.print_exc()
             raise

@@ -26,7 +26,6 @@ cannot take) are left to the direct sums by the caller.
 
 from __future__ import annotations
 
-import concurrent.futures
 import ctypes
 import functools
 import itertools
@@ -36,6 +35,7 @@ import numba
 import numpy as np
 
 from ..jit import njit
+from ..threads import pool
 from ..validation import finite_array, finite_result, same_length
 from .tile_sums import row_share
 from .vector_exp import exp_minus_and_complement
@@ -272,7 +272,7 @@ def near_sums(arguments, threads, beside=lambda: None):
     if threads == 1:
         result = work(beside)
     else:
-        helpers = [_pool(threads - 1).submit(work, beside if k == 0 else (lambda: None)) for k in range(threads - 1)]
+        helpers = [pool(threads - 1).submit(work, beside if k == 0 else (lambda: None)) for k in range(threads - 1)]
         work(lambda: None)
         result = [helper.result() for helper in helpers][0]
     total = sums[0].copy()
@@ -292,12 +292,6 @@ def _near_pair_count(keys, columns) -> int:
         start = np.arange(1, keys.size + 1) if d == 0 else np.searchsorted(keys, row + np.maximum(column - reach, 0))
         total += np.sum(stop - start)
     return int(total)
-
-
-@functools.cache
-def _pool(workers: int) -> concurrent.futures.ThreadPoolExecutor:
-    """The threads that run the FMM and share the near field beside the calling one, started on first use."""
-    return concurrent.futures.ThreadPoolExecutor(max_workers=workers, thread_name_prefix="fmm")
 
 
 def near_field(positions, masses, coefficients, widths):
