@@ -41,7 +41,8 @@ from .workflow import load_results
 COLUMNS = ("id", "paper", "kind", "source", "figure", "claim", "published", "measured", "tolerance", "status", "value",
            "windows", "distance", "margin")
 #: ``status`` of a claim: decided (pass, fail), or a wall-time check that did not decide because the machine was
-#: loaded (:func:`abstain`), which ``verify`` reports but never counts as a difference.
+#: loaded or its speed moved more than the check can tell (:func:`abstain`), which ``verify`` reports but never
+#: counts as a difference.
 STATUSES = ("pass", "fail", "abstain")
 KINDS = ("paper", "derived", "check")
 KIND_NAMES = {"paper": "paper claims", "derived": "derived claims", "check": "checks"}
@@ -170,7 +171,8 @@ def between(id, paper, figure, claim, lower: float, upper: float, measured: floa
 
 def abstain(made: Claim, why: str) -> Claim:
     """``made``, a check decided on wall time, turned into an abstention: the machine was loaded while it was
-    timed, so its value says nothing (``why`` is appended to the claim's text)."""
+    timed, or its speed moved more than the check can tell, so its value decides nothing (``why`` is appended to
+    the claim's text)."""
     return dataclasses.replace(made, status="abstain", claim=f"{made.claim}; abstains: {why}")
 
 
@@ -388,8 +390,8 @@ def summary_line(claims) -> str:
         line = f"Paper claims reproduced: {passed} of {total}." + (f" Also {others}." if others else "")
     else:
         line = "No claim of a paper." + (f" {others[0].upper()}{others[1:]}." if others else "")
-    return line + (f" {abstained} wall-time checks abstained (a loaded machine, or timing processes that "
-                   f"disagreed)." if abstained else "")
+    return line + (f" {abstained} wall-time checks abstained (a loaded machine, or its speed moving more than "
+                   f"the check can tell)." if abstained else "")
 
 
 class Spread(NamedTuple):
@@ -615,8 +617,8 @@ def verify(claims_path, verdicts_path, run: str | None = "full", margin_min: flo
     every difference from the expected verdicts; return the exit code.
 
     Non-zero when a verdict differs from the expected one (a claim the file does not list is expected to pass)
-    or when a listed claim is missing. A check that abstained (a loaded machine, or timing processes that
-    disagreed) is listed, never a difference.
+    or when a listed claim is missing. A check that abstained (a loaded machine, or a speed that moved more than
+    the check can tell) is listed, never a difference.
     ``run`` None: the configuration is none of the repository's runs (``differing``: the keys in which it
     differs), so no verdict is expected of it: the summary is printed and nothing compared.
     """

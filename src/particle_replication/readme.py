@@ -74,7 +74,8 @@ def results_block(claims, expected, versions: str, margin_min: float, robustness
     lines = [
         f"{run}, {paper[0]} of the papers' {paper[1]} claims are reproduced; {derived[0]} of {derived[1]} claims we "
         f"derive from their theory and {check[0]} of our {check[1]} checks pass"
-        + (f" ({abstained} wall-time check{'s' if abstained > 1 else ''} abstained: the machine was loaded)"
+        + (f" ({abstained} wall-time check{'s' if abstained > 1 else ''} abstained: the machine was loaded or its "
+           f"speed moved more than the check can tell)"
            if abstained else "") + ". "
         "Every verdict is compared with the expected one in `config/verdicts.yaml`, at the end of the run and by "
         "`snakemake verify`; each expected failure carries its cause and reason (a pre-asymptotic one: the paper's "
