@@ -683,3 +683,19 @@ def test_an_order_0_8_method_falls_outside_the_log_factor_ranges_from_n_200(meth
                                      0.0, "exact")
     assert (log_factor.status, slower.status) == ("pass", "fail"), (log_factor.measured, slower.measured)
     assert v.predicted_exponents(2, 1.0, 100.0, BEYOND["exponent_tolerance"])[1] > 2.5
+
+
+def test_a_ratio_of_wall_times_abstains_when_the_machines_speed_puts_it_across_its_bound():
+    """The ratio checks compare two best wall times at a common error: each is within its series' speed factor of
+    its value at a steady speed. The exact MSPD 12 times dearer than the TSPD, against [0.1, 10]: decided (fails) on
+    a steady machine, undecided when the speed moved by 1.6 (7.5 to 19); 100 times dearer fails even then; timed
+    once, the speed is unmeasured."""
+    name = "ratio.same_cost_rarefaction"
+    assert beyond_status(beyond(exact_slowdown=12.0), name) == "fail"
+    moved = next(claim for claim in v.beyond_claims(beyond(exact_slowdown=12.0, speed=1.6), quiet(), BEYOND)
+                 if claim.id == f"sticky.beyond.{name}")
+    assert moved.status == "abstain" and "anywhere from 7.5 to 19.2" in moved.claim
+    assert beyond_status(beyond(speed=1.6), name) == "pass"                # 1 (0.62 to 1.6) inside
+    assert beyond_status(beyond(exact_slowdown=100.0, speed=1.6), name) == "fail"
+    assert beyond_status(beyond(timings=1), name) == "abstain"
+    assert beyond_status(beyond(timings=1), "ratio.scalar_burgers_two_atoms") == "abstain"

@@ -632,18 +632,25 @@ def time_exponent(work, seconds, timing, floor: float, window: int) -> tuple[flo
     the uncertainty is measured on the same kernel in the same job. Infinite when no such run was timed twice:
     the speed's movement is then unknown."""
     work, seconds = np.asarray(work, dtype=float), np.asarray(seconds, dtype=float)
-    slowest, count = np.asarray(timing, dtype=float)
     kept = np.flatnonzero(seconds >= floor)[-window:]
     if kept.size < 2:
         return math.nan, math.nan
     x = np.log(work[kept])
     slope = float(np.polyfit(x, np.log(seconds[kept]), 1)[0])
-    repeated = (count > 1) & (seconds >= floor) & (seconds > 0)
-    if not repeated.any():
-        return slope, math.inf
-    speed = float(np.max(slowest[repeated] / seconds[repeated]))
     centred = x - x.mean()
-    return slope, math.log(speed) * float(centred[centred > 0].sum() / (centred**2).sum())
+    return slope, math.log(speed_factor(seconds, timing, floor)) * float(centred[centred > 0].sum()
+                                                                       / (centred**2).sum())
+
+
+def speed_factor(seconds, timing, floor: float) -> float:
+    """s, how far the machine's speed moved while a series was timed: the largest ratio of a run's slowest time
+    to its best (``seconds``; ``timing``: each run's slowest time and how many times it was timed) over its runs
+    timed more than once and lasting at least ``floor`` seconds; a best time is then within a factor s of the
+    time at the machine's steady speed. Infinite when no such run was timed twice."""
+    seconds = np.asarray(seconds, dtype=float)
+    slowest, count = np.asarray(timing, dtype=float)
+    repeated = (count > 1) & (seconds >= floor) & (seconds > 0)
+    return float(np.max(slowest[repeated] / seconds[repeated])) if repeated.any() else math.inf
 
 
 COST_TEXTS = {
@@ -738,7 +745,7 @@ def beyond_claims(d, rates: Recorder, p):
     not measure; ``check`` for our references, our timings and the shock-case question)."""
     window = p["window"]
     limit_n = d["limit_n"].astype(float)
-    out, slopes, timings = [], {}, []
+    out, slopes, timings = [], {}, []  # timings: (why the speed leaves it undecided, a ratio's check)
     for name, label in SCALAR_NAMES.items():
         spd, fv = d[f"{name}_spd"], d[f"{name}_godunov"]
         for method, runs, sizes in (("spd", spd, d[f"{name}_spd_n"]), ("godunov", fv, d[f"{name}_cells"])):
@@ -747,14 +754,16 @@ def beyond_claims(d, rates: Recorder, p):
                                                        p["time_floor"], window)
         eps = common_error(spd[0], fv[0])
         ratio = value_at_error(fv[0], fv[2], eps) / value_at_error(spd[0], spd[2], eps)
-        timings.append(claim(
+        moved = _ratio_abstention(ratio, speed_factor(fv[2], d[f"{name}_godunov_timing"], p["time_floor"]),
+                                  speed_factor(spd[2], d[f"{name}_spd_timing"], p["time_floor"]), p["scalar_ratio_min"])
+        timings.append((moved, claim(
             c.at_least, f"beyond.ratio.scalar_{name}", kind="check",
             source="our timing (sections 5.1.1 and "
                    "5.2: the exponents 1 and 2 are the claims beyond.exponent.*)",
             figure=label,
             text=f"{label}: wall time of the Godunov scheme over that of the SPD at the common error "
                  f"eps* = {eps:.3g} (interpolated, never extrapolated); on {d['cpu']}",
-            tolerance=p["scalar_ratio_min"], measured=ratio, published="SPD cheaper (exponent 1 against 2)"))
+            tolerance=p["scalar_ratio_min"], measured=ratio, published="SPD cheaper (exponent 1 against 2)")))
     sizes = {"tspd": d["tspd_n"], "exact": d["exact_n"], "upwind": d["upwind_cells"]}
     for name in d["cases"]:
         to_hll, gap_mspd, gap_hll = d[f"{name}_limit_to_hll"], float(d[f"{name}_mspd_gap"]), float(d[f"{name}_hll_gap"])
@@ -771,14 +780,16 @@ def beyond_claims(d, rates: Recorder, p):
         tspd, exact = runs["tspd"], runs["exact"]
         eps = common_error(tspd[0], exact[0])
         same_cost = value_at_error(exact[0], exact[2], eps) / value_at_error(tspd[0], tspd[2], eps)
-        timings.append(claim(
+        moved = _ratio_abstention(same_cost, speed_factor(exact[2], d[f"{name}_exact_timing"], p["time_floor"]),
+                                  speed_factor(tspd[2], d[f"{name}_tspd_timing"], p["time_floor"]), p["same_cost_band"])
+        timings.append((moved, claim(
             c.between, f"beyond.ratio.same_cost_{name}", kind="check",
             source="our timing (section 5.2: same "
                    "cost as the exact simulation; the exponents are the claims beyond.exponent.*)",
             figure=f"p-system, {name}",
             text=f"{name} case: wall time of the exact MSPD over that of the "
                  f"iterated TSPD at the common error eps* = {eps:.3g}; on {d['cpu']}",
-            tolerance=p["same_cost_band"], measured=same_cost, published="same cost, O(n^2)"))
+            tolerance=p["same_cost_band"], measured=same_cost, published="same cost, O(n^2)")))
         out += [
             claim(
                 c.between, f"beyond.exact.events_{name}", kind="derived",
@@ -861,8 +872,29 @@ def beyond_claims(d, rates: Recorder, p):
     speed = "" if any(_decided_outside(interval, band) for interval in deciding.values()) else \
         _speed_abstention(deciding, band)
     why = " and ".join(reason for reason in (disturbed, speed) if reason)
-    return out + [c.abstain(ratio, disturbed) if disturbed else ratio for ratio in timings] + [
-        c.abstain(made, why) if why else made]
+    ratios = []
+    for moved, ratio in timings:
+        reason = " and ".join(reason for reason in (disturbed, moved) if reason)
+        ratios.append(c.abstain(ratio, reason) if reason else ratio)
+    return out + ratios + [c.abstain(made, why) if why else made]
+
+
+def _ratio_abstention(ratio: float, numerator: float, denominator: float, tolerance) -> str:
+    """Why a ratio of two best wall times cannot decide on the speed the machine had ('' when it can): each time is
+    within a factor of its series' :func:`speed_factor` (``numerator``, ``denominator``) of its value at a steady
+    speed, so the ratio lies between ratio / numerator and ratio x denominator; the check abstains when that
+    interval reaches across its bound (``tolerance``: a lower bound, or a band). A ratio not measured (NaN) is
+    decided: it fails."""
+    if math.isnan(ratio):
+        return ""
+    low, high = ratio / numerator, ratio * denominator
+    lower, upper = (tolerance, math.inf) if np.ndim(tolerance) == 0 else tolerance
+    if lower <= low and high <= upper or high < lower or low > upper:
+        return ""
+    if math.isinf(numerator) or math.isinf(denominator):
+        return "no run of one of its series lasting the time floor was timed twice: the machine's speed is unmeasured"
+    return (f"the machine's speed moved between the rounds by up to {numerator:.2g} and {denominator:.2g} times, "
+            f"which puts the ratio anywhere from {low:.3g} to {high:.3g}, across its bound")
 
 
 def _decided_outside(interval, band) -> bool:
