@@ -6,8 +6,9 @@ both (issue 47: the two took 56 to 71 s in one job). ``beyond_limits.py`` takes 
 run as its own error and measures the exact MSPD against it (and against the conservative HLL scheme); the cost
 study (``beyond_data.py``) takes it as one of its two candidate references. On a machine without AVX-512 NumPy
 evaluates the primitive of (5.7) by libm's sinh and arctan (20 to 25 ns a value on these data, three values per
-face and step: about 90 % of a step on an AMD EPYC with AVX2), so the job's threads split that evaluation (the
-same result to the last bit on any number). Untimed.
+face and step: most of a step on an AMD EPYC with AVX2), so the job's threads split that evaluation (the same
+result to the last bit on any number; 64,000 cells: 1.13 to 1.35 times faster on 2 threads of the repository's
+virtual machine, benchmarks/README.md). Untimed.
 """
 
 import numpy as np

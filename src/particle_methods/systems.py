@@ -90,6 +90,13 @@ def speed_primitive_formula(spread, a, coefficient):
 PRIMITIVE_CHUNK = 8192
 
 
+#: Fewest values of the primitive that :func:`speed_primitives_into` splits among threads: below, dispatching to the
+#: threads costs about what they save. On an AMD EPYC virtual machine (AVX2, 2 cores; benchmarks/bench_upwind.py, the
+#: upwind scheme's 3 (cells + 1) values a step) two threads made a run 0.56 to 0.64 times as fast as one at 4000 cells
+#: (12,003 values), 0.96 to 1.24 times at 16,000 (48,003) and 1.13 to 1.35 times at 64,000 (192,003).
+PARALLEL_MIN_PRIMITIVES = 8 * PRIMITIVE_CHUNK
+
+
 def speed_primitives_into(spreads, a, coefficient, primitives, workers=1):
     """primitives = coefficient atan(sinh(a spreads)), the p-system's primitive of (5.7), by
     :func:`speed_primitive_formula` on NumPy arrays as :meth:`PSystem.speed_primitive`
@@ -97,8 +104,10 @@ def speed_primitives_into(spreads, a, coefficient, primitives, workers=1):
     bit (NumPy's vectorised sinh and arctan give an element the same result at any place in any array). With
     ``workers`` > 1 the elements are split into that many contiguous parts, whole chunks each, evaluated by the
     threads of :func:`~particle_methods.threads.pool` (NumPy's ufuncs release the interpreter's lock): the same
-    values again, in about 1 / workers of the time on as many free cores. The compiled loops of the upwind scheme
-    and of the iterated TSPD call it in object mode once per step. It trusts its caller's checks."""
+    values again, sooner on as many free cores from :data:`PARALLEL_MIN_PRIMITIVES` values on (one thread
+    below; :func:`~particle_methods.finite_volume.psystem.upwind_diagonal` gives the times). The compiled loops
+    of the upwind scheme and of the iterated TSPD call it in object mode once per step. It trusts its caller's
+    checks."""
     spreads, primitives = spreads.reshape(-1), primitives.reshape(-1)
     chunks = -(-spreads.size // PRIMITIVE_CHUNK)
     part = -(-chunks // workers) * PRIMITIVE_CHUNK  # elements of each worker's part
@@ -109,7 +118,7 @@ def speed_primitives_into(spreads, a, coefficient, primitives, workers=1):
             stop = min(start + PRIMITIVE_CHUNK, last)
             primitives[start:stop] = speed_primitive_formula(spreads[start:stop], a, coefficient)
 
-    if workers > 1 and chunks > 1:
+    if workers > 1 and spreads.size >= PARALLEL_MIN_PRIMITIVES:
         list(pool(workers).map(evaluate, range(0, spreads.size, part)))
     else:
         evaluate(0)

@@ -508,9 +508,10 @@ def upwind_diagonal(system, w0, x_edges, t, cfl: float = 0.9, return_steps: bool
     step as :meth:`PSystem.speed_primitive` does, the rest of the step compiled, and the result is that
     of the Python path to the last bit, on any number of ``threads`` (at most the process's,
     :func:`~particle_methods.threads.available`): they split the primitive's evaluation,
-    which takes most of a step where NumPy's sinh is libm's (about 90 % on an AMD EPYC with AVX2, where the
-    rarefaction case on 16,000 cells took 3.7 s on one thread and 1.8 s on two). Other systems take the
-    Python path, on one thread. The primitive is not evaluated in compiled code: libm's sinh and
+    which takes most of a step where NumPy's sinh is libm's. On the repository's AMD EPYC virtual
+    machine (AVX2, 2 cores) the p-system cases on 64,000 cells took 44.4 and 37.5 s on one thread,
+    33.0 and 33.2 s on two (benchmarks/bench_upwind.py). Other systems take the Python path, on one
+    thread. The primitive is not evaluated in compiled code: libm's sinh and
     atan there cost 26 ns a value against NumPy's 2.4 (AVX-512), and differ from NumPy's in the last bit
     for one value in six, which the time step amplifies: s_max is set by averaged speeds in the tails of
     the data, where the fluctuations are near :data:`SPEED_RESOLUTION` and carry relative errors up to
