@@ -665,6 +665,8 @@ def test_threads_split_the_primitive_and_change_no_bit(case, monkeypatch):
     assert 3 * 32001 >= systems.PARALLEL_MIN_PRIMITIVES > 3 * 6001
     edges, w0 = study_data(case, 6000)
     one, steps = upwind_diagonal(SYSTEM, w0, edges, 0.05, return_steps=True)
+    below = upwind_diagonal(SYSTEM, w0, edges, 0.05, threads=2)  # under the threshold: every value on one thread
+    assert np.array_equal(below, one)
     monkeypatch.setattr(systems, "PARALLEL_MIN_PRIMITIVES", 2 * systems.PRIMITIVE_CHUNK)
     calls = []
     real_pool = systems.pool

@@ -109,19 +109,18 @@ def speed_primitives_into(spreads, a, coefficient, primitives, workers=1):
     of the upwind scheme and of the iterated TSPD call it in object mode once per step. It trusts its caller's
     checks."""
     spreads, primitives = spreads.reshape(-1), primitives.reshape(-1)
-    chunks = -(-spreads.size // PRIMITIVE_CHUNK)
-    part = -(-chunks // workers) * PRIMITIVE_CHUNK  # elements of each worker's part
 
-    def evaluate(first):
-        last = min(first + part, spreads.size)
+    def evaluate(first, last):
         for start in range(first, last, PRIMITIVE_CHUNK):
             stop = min(start + PRIMITIVE_CHUNK, last)
             primitives[start:stop] = speed_primitive_formula(spreads[start:stop], a, coefficient)
 
     if workers > 1 and spreads.size >= PARALLEL_MIN_PRIMITIVES:
-        list(pool(workers).map(evaluate, range(0, spreads.size, part)))
+        part = -(-spreads.size // (workers * PRIMITIVE_CHUNK)) * PRIMITIVE_CHUNK  # whole chunks to each worker
+        firsts = range(0, spreads.size, part)
+        list(pool(workers).map(lambda first: evaluate(first, min(first + part, spreads.size)), firsts))
     else:
-        evaluate(0)
+        evaluate(0, spreads.size)
 
 
 def _same_shape(name_a: str, a: np.ndarray, name_b: str, b: np.ndarray) -> None:
