@@ -869,8 +869,9 @@ def beyond_claims(d, rates: Recorder, p):
              f"can move the exponent; on {d['cpu']}",
         tolerance=band, measured=c.farthest_from_centre([value for value, _ in deciding.values()], band))
     disturbed = disturbance(d)
-    speed = "" if any(_decided_outside(interval, band) for interval in deciding.values()) else \
-        _speed_abstention(deciding, band)
+    outside = any(_placed(value - uncertainty, value + uncertainty, band) == "outside"
+                  for value, uncertainty in deciding.values())
+    speed = "" if outside else _speed_abstention(deciding, band)
     why = " and ".join(reason for reason in (disturbed, speed) if reason)
     ratios = []
     for moved, ratio in timings:
@@ -888,8 +889,7 @@ def _ratio_abstention(ratio: float, numerator: float, denominator: float, tolera
     if math.isnan(ratio):
         return ""
     low, high = ratio / numerator, ratio * denominator
-    lower, upper = (tolerance, math.inf) if np.ndim(tolerance) == 0 else tolerance
-    if lower <= low and high <= upper or high < lower or low > upper:
+    if _placed(low, high, (tolerance, math.inf) if np.ndim(tolerance) == 0 else tolerance) != "across":
         return ""
     if math.isinf(numerator) or math.isinf(denominator):
         return "no run of one of its series lasting the time floor was timed twice: the machine's speed is unmeasured"
@@ -897,11 +897,12 @@ def _ratio_abstention(ratio: float, numerator: float, denominator: float, tolera
             f"which puts the ratio anywhere from {low:.3g} to {high:.3g}, across its bound")
 
 
-def _decided_outside(interval, band) -> bool:
-    """Whether the exponent (value, uncertainty) of :func:`time_exponent` lies outside ``band`` whatever the
-    machine's speed did."""
-    value, uncertainty = interval
-    return value + uncertainty < band[0] or value - uncertainty > band[1]
+def _placed(low: float, high: float, band) -> str:
+    """Where the interval [low, high] of a timing check's value lies against ``band`` (lower, upper): "inside",
+    "outside" (a verdict either way, whatever the machine's speed did) or "across" an end (none)."""
+    if band[0] <= low and high <= band[1]:
+        return "inside"
+    return "outside" if high < band[0] or low > band[1] else "across"
 
 
 def _speed_abstention(deciding, band) -> str:
@@ -915,7 +916,7 @@ def _speed_abstention(deciding, band) -> str:
             unmeasured.append(key)
         elif math.isinf(uncertainty):
             unknown.append(f"{key} {value:.2f}")
-        elif not band[0] <= value - uncertainty <= value + uncertainty <= band[1]:
+        elif _placed(value - uncertainty, value + uncertainty, band) != "inside":
             across.append(f"{key} {value:.2f} +- {uncertainty:.2g}")
     reasons = []
     if across:
