@@ -505,7 +505,8 @@ def cost_claims(d, rates: Recorder, window: int, band):
     median over the processes of each series' exponent, the series farthest from the band's centre deciding. It
     abstains when the machine was loaded while they were timed, or when one series' processes put its exponent
     on both sides of an end of the band (the machine's speed varied between them more than the check can tell:
-    only a verdict every process gives is one)."""
+    only a verdict every process gives is one), or when one process timed them (nothing tells that verdict from
+    one a drift of the machine's speed gave: the quick run)."""
     lower, upper = band
     out, times = [], {}
     for name, sizes, key, resolution, source, text in COST_SERIES:
@@ -535,7 +536,8 @@ def cost_claims(d, rates: Recorder, window: int, band):
     split = [name for name, side in sides.items() if len(side) > 1]
     disturbed = disturbance(d) or (
         f"the processes put the exponent of {', '.join(split)} on both sides of an end of the band: the machine's "
-        f"speed varied between them more than the check can tell" if split else "")
+        f"speed varied between them more than the check can tell" if split else "") or (
+        "timed in one process: no second process tells whether the machine's speed held" if processes < 2 else "")
     out.append(c.abstain(made, disturbed) if disturbed else made)
     return out
 
