@@ -109,6 +109,24 @@ def test_a_figure_within_its_bounding_box_is_laid_out_once(monkeypatch):
     plt.close(fig)
 
 
+def test_saving_draws_the_laid_out_figure_once_per_format(monkeypatch, tmp_path):
+    """save_figure keeps the layout legible's draw solved: the PDF and the PNG are each drawn once, not once more
+    before printing (as savefig does for a figure with a layout engine, even matplotlib's "none" placeholder)."""
+    from matplotlib.figure import Figure
+
+    fig, ax = new_figure(1, 2, width=PRINTED_WIDTH, height=3.0)
+    ax[0].plot([0, 1], [1, 0])
+    ax[0].set_title("a panel")
+    renderers = []
+    draw = Figure.draw
+    monkeypatch.setattr(Figure, "draw", lambda self, renderer: (renderers.append(type(renderer).__name__),
+                                                                draw(self, renderer))[1])
+    save_figure(fig, tmp_path / "f.pdf")
+    # legible's one layout (a figure at the printed width), then the PDF's and the PNG's prints: five draws before
+    assert renderers == ["RendererAgg", "MixedModeRenderer", "RendererAgg"]
+    assert fig.get_layout_engine() is None
+
+
 def test_text_above_the_floor_keeps_its_size():
     fig, ax = new_figure(1, 1, width=PRINTED_WIDTH, height=3.0)
     ax.set_xlabel("plain", fontsize=12)

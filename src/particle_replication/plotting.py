@@ -159,9 +159,11 @@ def save_figure(fig, pdf_path, png_path=None) -> None:
     legible(fig)
     # legible's last draw solved the layout at the final sizes: both saves keep it and crop to the bounding box it
     # gives (with savefig.pad_inches, as savefig's "tight" pads it), so neither draws the figure once more to solve
-    # the layout and measure the box (two of a plot job's six draws).
+    # the layout and measure the box. No layout engine at all, not matplotlib's "none" (a placeholder engine, for
+    # which savefig still draws the figure once before it prints it): two more of a plot job's draws.
     box = fig.get_tightbbox().padded(plt.rcParams["savefig.pad_inches"])
-    fig.set_layout_engine("none")
+    with plt.rc_context({"figure.autolayout": False, "figure.constrained_layout.use": False}):
+        fig.set_layout_engine(None)
     fig.savefig(pdf_path, bbox_inches=box)
     fig.savefig(png_path, bbox_inches=box)
     plt.close(fig)
