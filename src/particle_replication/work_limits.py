@@ -16,13 +16,14 @@ time of ``config/config.yaml`` covered by it.
 from __future__ import annotations
 
 import ast
+import fnmatch
 import functools
 import importlib.util
 import math
 import operator
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from fnmatch import fnmatchcase
 from numbers import Real
 from pathlib import Path
 
@@ -77,15 +78,27 @@ def solver_limit(constant: str) -> float:
     path = _source(module)
     if not path.is_file():
         raise ValueError(f"constant {constant!r}: no module file {path}")
+    value = _top_level_assignments(path).get(name)
+    if value is None:
+        raise ValueError(f"constant {constant!r}: {path} assigns no {name} at its top level")
+    return _literal(value)
+
+
+@functools.cache
+def _top_level_assignments(path: Path) -> dict[str, ast.expr]:
+    """The values a module's source assigns to names at its top level, the first assignment of each (cached: a module
+    holds several limits, and its parse took most of a check's time)."""
+    found = {}
     for node in ast.parse(path.read_text()).body:
         targets = node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(node, ast.AnnAssign) \
             else []
-        if any(isinstance(target, ast.Name) and target.id == name for target in targets) and node.value is not None:
-            return _literal(node.value)
-    raise ValueError(f"constant {constant!r}: {path} assigns no {name} at its top level")
+        for target in targets:
+            if isinstance(target, ast.Name) and node.value is not None:
+                found.setdefault(target.id, node.value)
+    return found
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Limit:
     """Keys of the configuration (``fnmatch`` patterns of dotted keys, ``*`` matching dots too; a list's key
     stands for each of its values) and the work limit of the code they feed: ``work(value, section)`` is what
@@ -99,14 +112,29 @@ class Limit:
     up: int = 1
 
     def matches(self, key: str) -> bool:
-        return any(fnmatchcase(key, pattern) for pattern in self.keys)
+        return _patterns(self.keys).fullmatch(key) is not None
+
+
+@functools.cache
+def _patterns(keys: tuple[str, ...]) -> re.Pattern:
+    """One regular expression for ``fnmatch`` patterns (matched as ``fnmatchcase`` matches them, ``*`` matching dots
+    too): a configuration's check matches each of its keys against every limit."""
+    return re.compile("|".join(f"(?:{fnmatch.translate(pattern)})" for pattern in keys))
 
 
 @functools.cache
 def _holding(key: str, limits: tuple[Limit, ...]) -> tuple[Limit, ...]:
     """The limits of ``limits`` whose patterns match a dotted key (cached: every check of a configuration, at every
     job's start, asks it of every key)."""
+    if _any_of(limits).fullmatch(key) is None:
+        return ()  # most keys: held to no limit, found by one match
     return tuple(limit for limit in limits if limit.matches(key))
+
+
+@functools.cache
+def _any_of(limits: tuple[Limit, ...]) -> re.Pattern:
+    """One regular expression for the patterns of every limit of ``limits``."""
+    return _patterns(tuple(pattern for limit in limits for pattern in limit.keys))
 
 
 def _largest(values) -> float:
