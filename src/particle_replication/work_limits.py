@@ -176,7 +176,7 @@ WORKFLOW = "particle_replication.workflow"
 
 def _ltp_particles(h: float, s=None) -> float:
     """Particles of an LTP or SP run at step h: every initial density of the paper lies on [-1, 1]
-    (:data:`particle_methods.ltp.initial.DENSITIES`)."""
+    (:func:`particle_methods.ltp.initial.density_named`)."""
     return 2.0 / h
 
 

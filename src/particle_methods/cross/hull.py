@@ -38,7 +38,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..blob.initial import Data1D, power_mass_kernel
 from ..jit import njit
@@ -509,6 +508,8 @@ class HullSolution:
 
             # (Where two pieces meet at one level, the difference is 0 over an interval of x and Brent's method
             # may not settle: any x of it finds no jump.)
+            from scipy.optimize import brentq
+
             x = brentq(overtaking, *bracket, xtol=1e-300, rtol=4.0 * np.finfo(float).eps, maxiter=POSITION_STEPS,
                        disp=False)
             point = np.array([x])

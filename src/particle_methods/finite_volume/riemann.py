@@ -23,7 +23,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize
 
 from ..systems import PSystem
 from ..validation import ParameterTypeError, finite_number, finite_values, instance, positive
@@ -86,6 +85,8 @@ class PSystemRiemann:
         if gap[0] > 0.0 or gap[1] < 0.0:
             raise ValueError(f"the middle state of left = {self.left} and right = {self.right} leaves the half "
                              f"[{bracket[0]}, {bracket[1]}] of u where the system is genuinely nonlinear")
+        from scipy import optimize
+
         u_star = optimize.brentq(lambda u: self._first_curve(u) - self._second_curve(u), *bracket,
                                  xtol=np.finfo(np.float64).tiny, rtol=4.0 * np.finfo(np.float64).eps, maxiter=400)
         self.middle = (u_star, self._first_curve(u_star))

@@ -6,12 +6,12 @@ for (6.3)), so that cell integrals of rho^0 are exact differences of the CDF.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import integrate, special
 
 from ..perturbation import nudged
 from ..validation import (
@@ -75,6 +75,8 @@ class InitialDensity:
     @property
     def mean(self) -> float:
         """Centre of mass lambda of (6.4): int x rho^0(x) dx divided by the mass cdf(upper) - cdf(lower)."""
+        from scipy import integrate
+
         moment = float(integrate.quad(lambda x: x * float(self.pdf(x)), self.lower, self.upper,
                                       epsabs=1e-14, limit=200)[0])
         mass = float(self.cdf(self.upper) - self.cdf(self.lower))
@@ -88,6 +90,8 @@ def _gaussian_bumps():
     bumps = ((1.0, 30.0, 0.5), (2.0, 50.0, -0.3))
 
     def primitive(x):
+        from scipy import special
+
         x = np.clip(finite_values("x", x), -1.0, 1.0)
         return sum(amp * 0.5 * np.sqrt(np.pi / a) * special.erf(np.sqrt(a) * (x - c)) for amp, a, c in bumps)
 
@@ -120,6 +124,8 @@ def _bump():
         inside = np.abs(x) < 1.0
         return np.where(inside, np.exp(1.0 / np.where(inside, x**2 - 1.0, -1.0)), 0.0)
 
+    from scipy import integrate
+
     total = integrate.quad(lambda x: float(raw(x)), -1.0, 1.0, epsabs=1e-15, epsrel=1e-13)[0]
 
     def cdf(x):
@@ -131,7 +137,10 @@ def _bump():
     return InitialDensity("rho3", lambda x: raw(finite_values("x", x)) / total, cdf, -1.0, 1.0)
 
 
-DENSITIES = {"rho1": _gaussian_bumps(), "rho2": _indicator(), "rho3": _bump()}
+#: The makers of the initial densities (6.1) to (6.3) by name. Each is made when first asked for
+#: (:func:`density_named`): (6.1)'s and (6.3)'s normalisations need scipy, whose import (0.3 to 0.7 s) most of
+#: the jobs that import this package never need.
+DENSITIES = {"rho1": _gaussian_bumps, "rho2": _indicator, "rho3": _bump}
 
 
 def golden_atoms(count: int, lower: float, upper: float):
@@ -174,8 +183,13 @@ def atomic(positions, masses) -> InitialDensity:
 
 
 def density_named(name: str) -> InitialDensity:
-    """Initial density (6.1) 'rho1', (6.2) 'rho2' or (6.3) 'rho3'."""
-    return one_of("initial density", name, DENSITIES)
+    """Initial density (6.1) 'rho1', (6.2) 'rho2' or (6.3) 'rho3' (made once, then the same object)."""
+    return _made(one_of("initial density", name, DENSITIES))
+
+
+@functools.cache
+def _made(maker: Callable[[], InitialDensity]) -> InitialDensity:
+    return maker()
 
 
 def grid_particles(density: InitialDensity, h: float, shape: Shape, weights: str = "cell", offset: float = 0.0):

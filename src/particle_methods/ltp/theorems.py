@@ -20,7 +20,6 @@ from __future__ import annotations
 import inspect
 
 import numpy as np
-from scipy import integrate
 
 from ..norms import grid_errors
 from ..validation import (
@@ -126,6 +125,8 @@ def atom_flow(positions, masses, w: Potential, times, rtol: float = 1e-12) -> np
 
     finite_result("the atoms' initial velocities", velocity(0.0, positions), "the masses or positions overflow")
     try:
+        from scipy import integrate
+
         solution = integrate.solve_ivp(velocity, (0.0, float(times[-1])), positions, method="DOP853",
                                        t_eval=times, rtol=rtol, atol=rtol * 1e-2)
     except ValueError as error:  # W' overflowed on the way (refused by finite_values)

@@ -13,7 +13,6 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 
 import numpy as np
-from scipy import special
 
 from ..perturbation import nudged
 from ..validation import (
@@ -141,6 +140,8 @@ class Laplace(QuantileMeasure):
             return self.loc + np.where(w < 0.5, np.log(2.0 * w), -np.log(2.0 * (1.0 - w)))
 
     def _quantile_integral(self, w):
+        from scipy import special
+
         left = special.xlogy(w, 2.0 * w) - w
         right = special.xlogy(1.0 - w, 2.0 * (1.0 - w)) - (1.0 - w)
         return self.loc * w + np.where(w <= 0.5, left, right)
@@ -188,6 +189,8 @@ class TruncatedExponential(QuantileMeasure):
         return -np.log1p(-self._mass * w)
 
     def _quantile_integral(self, w):
+        from scipy import special
+
         s = 1.0 - self._mass * w
         return (special.xlogy(s, s) - s + 1.0) / self._mass
 
@@ -273,6 +276,8 @@ class Weibull(QuantileMeasure):
         shape = 1.0 + 1.0 / self.alpha
         with np.errstate(divide="ignore"):
             level = -np.log1p(-w)
+        from scipy import special
+
         return special.gamma(shape) * special.gammainc(shape, level)
 
 
