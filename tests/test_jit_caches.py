@@ -37,18 +37,23 @@ def test_an_edit_in_another_module_clears_every_cache(tmp_path):
 
 
 #: A process that compiles the kernel of ``kernel.py`` in ``sys.argv[1]``: it says it is ready (a file), starts once
-#: ``go`` exists there, each compilation made to last half a second, and prints whether it compiled (cache misses)
-#: or loaded the other's cache (hits).
+#: ``go`` exists there, and prints whether it compiled (cache misses) or loaded the other's cache (hits). A
+#: compilation (after a cache miss) first waits, up to ``sys.argv[2]`` seconds, until the other process misses the
+#: cache too: without a lock both then compile, however late the other started (on a loaded machine it can start
+#: after the first has written its cache); with the lock the other never gets there, and the wait runs out.
 COMPILER = """
 import os, sys, time
 from pathlib import Path
-folder = Path(sys.argv[1])
+folder, wait = Path(sys.argv[1]), float(sys.argv[2])
 sys.path.insert(0, str(folder))
 import kernel
 dispatcher = kernel.twice
 slow = dispatcher._compiler.compile
 def compile_slowly(*arguments):
-    time.sleep(0.5)
+    (folder / f"compiling-{os.getpid()}").touch()
+    deadline = time.monotonic() + wait
+    while len(list(folder.glob("compiling-*"))) < 2 and time.monotonic() < deadline:
+        time.sleep(0.005)
     return slow(*arguments)
 dispatcher._compiler.compile = compile_slowly
 (folder / f"ready-{os.getpid()}").touch()
@@ -60,24 +65,25 @@ print(sum(dispatcher.stats.cache_misses.values()), sum(dispatcher.stats.cache_hi
 
 
 def test_two_processes_asking_for_a_kernel_at_once_compile_it_once(tmp_path):
-    """Two processes start together on an empty cache: one compiles (made to take half a second), the other waits
-    for its lock and loads its cache. Without the lock (numba's own njit) both compile."""
+    """Two processes start together on an empty cache: one compiles (made to wait 2 s for the other to miss the
+    cache too), the other waits for its lock and loads its cache. Without the lock (numba's own njit) both compile,
+    whatever the machine's load (each waits until the other has missed the cache)."""
     import subprocess
     import sys
     import time
 
-    for jit, expected in (("particle_methods.jit", [(1, 0), (0, 1)]), ("numba", [(1, 0), (1, 0)])):
+    for jit, expected, wait in (("particle_methods.jit", [(1, 0), (0, 1)], 2.0), ("numba", [(1, 0), (1, 0)], 120.0)):
         folder = tmp_path / jit
         folder.mkdir()
         (folder / "kernel.py").write_text(f"from {jit} import njit\n\n@njit(cache=True)\ndef twice(x):\n"
                                           "    return 2.0 * x\n")
-        processes = [subprocess.Popen([sys.executable, "-c", COMPILER, str(folder)], stdout=subprocess.PIPE,
-                                      text=True) for _ in range(2)]
+        processes = [subprocess.Popen([sys.executable, "-c", COMPILER, str(folder), str(wait)],
+                                      stdout=subprocess.PIPE, text=True) for _ in range(2)]
         deadline = time.monotonic() + 120
         while len(list(folder.glob("ready-*"))) < 2 and time.monotonic() < deadline:
             time.sleep(0.005)
         (folder / "go").touch()
-        counts = sorted((tuple(map(int, process.communicate(timeout=120)[0].split())) for process in processes),
+        counts = sorted((tuple(map(int, process.communicate(timeout=300)[0].split())) for process in processes),
                         reverse=True)
         assert all(process.returncode == 0 for process in processes)
         assert counts == expected, jit
