@@ -76,6 +76,12 @@ def plot_inputs(paper, plots):
     return {**inputs, "code": sorted(code | set(imports("plot_batch.py")))}
 
 
+def job_threads(job, section):
+    """A data job's threads under its paper's section: every core of the run for "all"."""
+    threads = job.threads_in(section)
+    return workflow.cores if threads == "all" else threads
+
+
 for paper in registry.PAPERS.values():
     for entry in paper.results:
         if entry.job is None:
@@ -95,7 +101,7 @@ for paper in registry.PAPERS.values():
                 f"logs/benchmarks/{entry.rule}.tsv"
             conda:
                 ENVIRONMENT
-            threads: workflow.cores if entry.job.threads == "all" else entry.job.threads
+            threads: job_threads(entry.job, config[paper.id])
             params:
                 **entry.job.params(config[paper.id]),
                 nudge=config["nudge"],

@@ -129,7 +129,7 @@ def test_scripts_captions_and_titles_exist_for_every_figure():
             if entry.job is None:  # computed by a rule written by hand, which the README's figure map names
                 assert f"\nrule {entry.rule}:\n" in (ROOT / "rules" / f"{paper.id}.smk").read_text(), entry.rule
             else:
-                assert entry.job.about and entry.job.threads in (1, "all")
+                assert entry.job.about and entry.job.threads_in(CONFIG[paper.id]) in (1, "all")
                 assert set(entry.job.inputs.values()) <= produced, entry.path
                 assert "script" not in entry.job.params(CONFIG[paper.id])
     for paper in registry.PAPERS.values():  # the claims read every result file, by its stem
@@ -142,6 +142,32 @@ def test_scripts_captions_and_titles_exist_for_every_figure():
     for paper in registry.PAPERS.values():  # each plot job in one batch, named apart from the others of its paper
         batched = [plot.key for plots in paper.plot_batches.values() for plot in plots]
         assert sorted(batched) == sorted(plot.key for plot in paper.plots) and len(set(batched)) == len(batched)
+
+
+def test_the_upwind_references_hold_every_core_only_where_their_grid_splits_the_primitive():
+    """The full run's grids (3 (cells + 1) primitive values a step from systems.PARALLEL_MIN_PRIMITIVES on) use
+    every core; the quick run's, under it, one: held on two cores they ran on one. A job's threads are refused
+    unless a positive integer or "all"."""
+    from particle_methods.systems import PARALLEL_MIN_PRIMITIVES
+
+    quick = read_yaml(ROOT / "config" / "quick.yaml")["sticky"]["beyond"]["upwind_reference_cells"]
+    jobs = {entry.path: entry.job for entry in registry.PAPERS["sticky"].results if "beyond_upwind_" in entry.path}
+    assert len(jobs) == 4
+    def with_cells(reference_cells):
+        return {**CONFIG["sticky"], "beyond": {**CONFIG["sticky"]["beyond"], "upwind_reference_cells": reference_cells}}
+
+    for path, job in jobs.items():
+        divisor = 2 if path.endswith("_half.npz") else 1
+        cells = CONFIG["sticky"]["beyond"]["upwind_reference_cells"] // divisor
+        assert 3 * (cells + 1) >= PARALLEL_MIN_PRIMITIVES and job.threads_in(CONFIG["sticky"]) == "all", path
+        assert job.threads_in(with_cells(quick)) == 1, path
+        # 21,845 cells: 65,538 values a step, at the threshold (65,536); 21,844 cells: 65,535, one short
+        edge = PARALLEL_MIN_PRIMITIVES // 3
+        assert job.threads_in(with_cells(edge * divisor)) == "all", path
+        assert job.threads_in(with_cells((edge - 1) * divisor)) == 1, path
+    for bad in (0, -1, True, 1.5, "some"):
+        with pytest.raises(ValueError, match="threads must be"):
+            registry.records.Job("a job", lambda s: {}, threads=bad).threads_in({})
 
 
 def test_the_registry_is_not_a_code_input_of_the_jobs():

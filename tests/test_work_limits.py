@@ -217,6 +217,22 @@ def test_solver_limit_refuses_what_is_no_constant():
         solver_limit("particle_methods.ltp.solver.NO_SUCH_LIMIT")
 
 
+def test_a_constant_of_other_constants_is_read_through_their_names(tmp_path, monkeypatch):
+    """``8 * PRIMITIVE_CHUNK`` (particle_methods.systems.PARALLEL_MIN_PRIMITIVES) is the module's own value; a name
+    the module does not assign, or one that names itself, is no constant."""
+    assert solver_limit("particle_methods.systems.PARALLEL_MIN_PRIMITIVES") == importlib.import_module(
+        "particle_methods.systems").PARALLEL_MIN_PRIMITIVES
+    package = tmp_path / "limits_of_names"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "values.py").write_text("A = 2\nB = 3 * A + 1\nC = D * 2\nE = E + 1\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    assert solver_limit("limits_of_names.values.B") == 7
+    for name in ("C", "E"):
+        with pytest.raises(ValueError, match="not a constant expression"):
+            solver_limit(f"limits_of_names.values.{name}")
+
+
 def test_quick_overlay_file_is_laid_over_the_full_configuration():
     quick = read_yaml(importlib.import_module("particle_replication.paths").REPOSITORY / "config" / "quick.yaml")
     check_work_limits(overlay(FULL, quick))

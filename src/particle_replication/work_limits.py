@@ -44,14 +44,17 @@ def walk(node, path=()):
         yield ".".join(path), node
 
 
-def _literal(node: ast.AST) -> float:
-    """The value of a constant expression of numbers and + - * / ** (``2 * 10**9``, ``2.0**500``)."""
+def _literal(node: ast.AST, names: Mapping[str, ast.expr] | None = None) -> float:
+    """The value of a constant expression of numbers and + - * / ** (``2 * 10**9``, ``2.0**500``), and of the module's
+    other constants by name (``8 * PRIMITIVE_CHUNK``), whose values ``names`` holds."""
     if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) and not isinstance(node.value, bool):
         return node.value
     if isinstance(node, ast.BinOp) and type(node.op) in _OPERATORS:
-        return _OPERATORS[type(node.op)](_literal(node.left), _literal(node.right))
+        return _OPERATORS[type(node.op)](_literal(node.left, names), _literal(node.right, names))
     if isinstance(node, ast.UnaryOp) and type(node.op) in _OPERATORS:
-        return _OPERATORS[type(node.op)](_literal(node.operand))
+        return _OPERATORS[type(node.op)](_literal(node.operand, names))
+    if isinstance(node, ast.Name) and names and node.id in names:
+        return _literal(names[node.id], {key: value for key, value in names.items() if key != node.id})
     raise ValueError(f"not a constant expression of numbers: {ast.unparse(node)}")
 
 
@@ -78,10 +81,10 @@ def solver_limit(constant: str) -> float:
     path = _source(module)
     if not path.is_file():
         raise ValueError(f"constant {constant!r}: no module file {path}")
-    value = _top_level_assignments(path).get(name)
-    if value is None:
+    assignments = _top_level_assignments(path)
+    if name not in assignments:
         raise ValueError(f"constant {constant!r}: {path} assigns no {name} at its top level")
-    return _literal(value)
+    return _literal(assignments[name], {key: value for key, value in assignments.items() if key != name})
 
 
 @functools.cache

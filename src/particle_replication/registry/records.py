@@ -76,12 +76,20 @@ class Plot:
 class Job:
     """How a result file is computed: its data rule runs the result's writer with ``params`` from
     the paper's section, reading the result files ``inputs`` (input names to paths), on one thread
-    or, for a timing study that must not share the cores, on ``threads="all"``."""
+    or, for a timing study that must not share the cores, on ``threads="all"``; or on what a function of the
+    paper's section gives, for a job whose size decides whether it can use more threads than one."""
 
     about: str
     params: Callable[[Section], dict]
     inputs: Mapping[str, str] = field(default_factory=dict)
-    threads: int | str = 1
+    threads: int | str | Callable[[Section], int | str] = 1
+
+    def threads_in(self, section: Section) -> int | str:
+        """The job's threads under the paper's ``section``: 1, another count, or "all" (every core of the run)."""
+        threads = self.threads(section) if callable(self.threads) else self.threads
+        if threads != "all" and not (isinstance(threads, int) and not isinstance(threads, bool) and threads >= 1):
+            raise ValueError(f"{self.about}: threads must be a positive integer or 'all', got {threads!r}")
+        return threads
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,6 @@
 """Jourdain and Reygner, sticky particle dynamics: Figures 1-7 and the study beyond the paper."""
 
+from ..work_limits import solver_limit
 from .records import Figure, Job, Paper, Plot, Result, listing
 
 
@@ -113,6 +114,21 @@ def reference_path(study: str, case: str, part: str) -> str:
 
 def _beyond(s, keys):
     return {key: s["beyond"][key] for key in keys}
+
+
+def _upwind_cells(s, part: str) -> int:
+    """The cells of one part of the upwind reference."""
+    return s["beyond"]["upwind_reference_cells"] // PART_DIVISORS[part]
+
+
+def _upwind_threads(s, part: str) -> int | str:
+    """Every core for a part of the upwind reference whose grid splits the p-system's primitive among threads, one
+    otherwise: the upwind scheme evaluates 3 (cells + 1) values of it a step
+    (:func:`particle_methods.finite_volume.psystem.upwind_diagonal`), split only from
+    :data:`particle_methods.systems.PARALLEL_MIN_PRIMITIVES` on (read from its source: the workflow starts without
+    numba). The quick run's grids stay below: their jobs held two cores and ran on one."""
+    threshold = solver_limit("particle_methods.systems.PARALLEL_MIN_PRIMITIVES")
+    return "all" if 3 * (_upwind_cells(s, part) + 1) >= threshold else 1
 
 
 def _system(s):
@@ -281,10 +297,10 @@ RESULTS = (
         Job(
             f"beyond the paper: the upwind reference of the limits study, {case} case, {about} (untimed)",
             lambda s, case=case, part=part: {"system": _system(s), "x0": s["psystem"][case]["x0"], "case": case,
-                                             "part": part,
-                                             "size": s["beyond"]["upwind_reference_cells"] // PART_DIVISORS[part],
+                                             "part": part, "size": _upwind_cells(s, part),
                                              "cfg": _beyond(s, ("t", "domain", "cfl", "upwind_reference_cells"))},
-            threads="all",  # the primitive's evaluation, most of its time, split among them (bit for bit the same)
+            # the primitive's evaluation, most of its time, split among the threads (bit for bit the same)
+            threads=lambda s, part=part: _upwind_threads(s, part),
         ),
     ) for case in PSYSTEM_CASES for part, about in REFERENCE_PARTS["upwind"].items()),
     *(Result(
