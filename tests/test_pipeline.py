@@ -81,6 +81,13 @@ def planned_rules(result):
     return set(re.findall(r"^rule (\w+):", result.stdout + result.stderr, flags=re.MULTILINE))
 
 
+def latex_installed():
+    """Whether the LaTeX toolchain of the report's PDFs is installed: asked by each test, since under CI it is
+    installed while the quick run is made (tests/ci_tools.py). Without it the run builds neither the PDFs nor
+    what only they read."""
+    return bool(shutil.which("latexmk") and shutil.which("pdflatex"))
+
+
 @pytest.fixture(scope="module")
 def repository(tmp_path_factory):
     """A scratch copy of the repository where the quick run is made as the README says: from its root. Where CI
@@ -155,6 +162,8 @@ def test_every_figure_is_built(workdir):
 def test_figure5_orders_name_the_finest_grid_of_the_overlay_not_run(repository, workdir):
     """Without the overlay's results, the report's table of Figure 5's orders says so, naming the finest h that
     config/fig5-extended.yaml would reach (a rule parameter read from that file, not a number in the script)."""
+    if not latex_installed():
+        pytest.skip("no LaTeX toolchain: the table of Figure 5's orders is made for the report's PDF alone")
     finest = max(read_yaml(repository / "config" / "fig5-extended.yaml")["blob"]["fig5"]["inverse_h"])
     text = (workdir / "results" / "blob" / "fig5_orders.tex").read_text()
     assert f"(to $h = 1/{finest}$) has not been run in this clone" in text
@@ -411,11 +420,9 @@ def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
     override.write_text("sticky:\n  lemma21:\n    n_values: [16, 64, 256, 1024, 2048]\n")
     result = snakemake(workdir, "--dry-run", configs=[override])
     assert result.returncode == 0, result.stderr[-2000:]
-    import shutil
-
     expected = {"data_sticky_lemma21", "sticky_claims", "claims_table", "notebook", "verdicts", "report_page",
                 "notebook_page", "all"}
-    if shutil.which("latexmk") and shutil.which("pdflatex"):  # the snippets are made for the report alone
+    if latex_installed():  # the snippets are made for the report alone
         expected |= {"report_snippets", "manuscript"}
     assert planned_rules(result) == expected
 
@@ -547,9 +554,7 @@ def test_slurm_profile_parses(workdir):
 
 
 def test_report_pdf_is_built_where_latex_is_installed(workdir):
-    import shutil
-
-    if not (shutil.which("latexmk") and shutil.which("pdflatex")):
+    if not latex_installed():
         pytest.skip("no LaTeX toolchain: the pipeline skips paper/ms.pdf and says how to install it")
     for pdf in (workdir / "paper" / "ms.pdf", workdir / "paper" / "supplement.pdf"):
         assert pdf.read_bytes()[:5] == b"%PDF-" and pdf.stat().st_size > 100_000, pdf.name
@@ -560,9 +565,7 @@ def test_report_pdf_is_built_where_latex_is_installed(workdir):
 def test_no_figure_of_the_built_pdfs_prints_text_below_the_legible_size(workdir):
     """The figure-size check of tests/test_built_report.py on the PDFs this run built (the quick run's figures
     have the full run's layouts): every registered figure is found, none with text below 7 pt as printed."""
-    import shutil
-
-    if not (shutil.which("latexmk") and shutil.which("pdflatex")):
+    if not latex_installed():
         pytest.skip("no LaTeX toolchain: no PDF was built")
     from test_built_report import figure_text_sizes
 
@@ -579,9 +582,7 @@ def test_no_figure_of_the_built_pdfs_prints_text_below_the_legible_size(workdir)
 
 
 def test_two_builds_of_the_pdf_are_byte_identical(workdir):
-    import shutil
-
-    if not (shutil.which("latexmk") and shutil.which("pdflatex")):
+    if not latex_installed():
         pytest.skip("no LaTeX toolchain")
     # up to date first: an earlier test may have rerun the claims (whose timing values change) without the report
     result = snakemake(workdir, "--", "paper/ms.pdf")
@@ -658,7 +659,7 @@ def test_browsable_report_shows_the_claims_table_and_a_figure_in_chromium(workdi
     archive, folder = report
     with zipfile.ZipFile(archive) as opened:
         names = opened.namelist()
-    latex = shutil.which("latexmk") and shutil.which("pdflatex")
+    latex = latex_installed()
     for shipped in ("claims.html", "versions.html", "sticky.html", *(["ms.pdf"] if latex else [])):
         assert any(name.endswith(shipped) for name in names), shipped
     page = (folder / "report" / "report.html").as_uri()
