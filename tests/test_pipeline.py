@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 import ci_tools
+import forked_snakemake
 import pytest
 import yaml
 
@@ -67,14 +68,25 @@ def snakefile_of(workdir):
     return candidate if candidate.is_file() else ROOT / "Snakefile"
 
 
-def snakemake_command(workdir, *args, configs=()):
-    return [sys.executable, "-m", "snakemake", "-s", str(snakefile_of(workdir)), "--directory", str(workdir),
-            "--cores", "2", "--configfile", str(QUICK), *map(str, configs), *args]
+def snakemake_arguments(workdir, *args, configs=()):
+    """Snakemake's arguments for a run in ``workdir`` of the quick configuration with overlays ``configs``."""
+    return ["-s", str(snakefile_of(workdir)), "--directory", str(workdir), "--cores", "2", "--configfile", str(QUICK),
+            *map(str, configs), *args]
 
 
 def snakemake(workdir, *args, configs=()):
-    return subprocess.run(snakemake_command(workdir, *args, configs=configs), capture_output=True, text=True,
-                          timeout=900, env=checkout_environment(snakefile_of(workdir).parent))
+    """A run in ``workdir`` (:func:`snakemake_arguments`) in its repository's environment, its output captured; run
+    by a forked Snakemake that has its imports done (tests/forked_snakemake.py)."""
+    return forked_snakemake.run(snakemake_arguments(workdir, *args, configs=configs), timeout=900,
+                                env=checkout_environment(snakefile_of(workdir).parent))
+
+
+def verify(workdir, *args, configs=()):
+    """`snakemake verify` of the quick configuration with overlays ``configs``, as the README writes it: from the
+    root of the repository that ``workdir`` (runs/quick) belongs to."""
+    repository = workdir.parents[1]
+    return forked_snakemake.run(["verify", *args, "--configfile", "config/quick.yaml", *map(str, configs)],
+                                cwd=repository, env=checkout_environment(repository), timeout=600)
 
 
 def planned_rules(result):
@@ -125,14 +137,12 @@ def test_a_copied_repository_with_its_run_has_nothing_to_do(repository, tmp_path
     copy = tmp_path / "elsewhere" / "deeper" / "copy"
     # without the caches, which the unit tests may be writing meanwhile (see copy_repository)
     shutil.copytree(repository, copy, ignore=shutil.ignore_patterns("__pycache__"))
-    command = [sys.executable, "-m", "snakemake", "--dry-run", "--configfile", "config/quick.yaml"]
-    result = subprocess.run(command, cwd=copy, capture_output=True, text=True, timeout=300,
-                            env=checkout_environment(copy))
+    command = ["--dry-run", "--configfile", "config/quick.yaml"]
+    result = forked_snakemake.run(command, cwd=copy, timeout=300, env=checkout_environment(copy))
     assert result.returncode == 0, result.stderr[-2000:]
     assert "Nothing to be done" in result.stdout + result.stderr, result.stdout[-2000:]
     # Run in the environment of the repository it was copied from, it would run that one's code: it stops.
-    result = subprocess.run(command, cwd=copy, capture_output=True, text=True, timeout=300,
-                            env=checkout_environment(repository))
+    result = forked_snakemake.run(command, cwd=copy, timeout=300, env=checkout_environment(repository))
     output = result.stdout + result.stderr
     assert result.returncode != 0
     assert f"particle_methods from {(repository / 'src').resolve()}" in output, output[-2000:]
@@ -302,7 +312,8 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     start = time.time()
     # Ctrl-C's default action restored in the run: pytest started in the background (`pytest &`) ignores SIGINT,
     # and so would the run it starts, which would then finish.
-    process = subprocess.Popen(snakemake_command(workdir), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+    command = [sys.executable, "-m", "snakemake", *snakemake_arguments(workdir)]
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                start_new_session=True, env=checkout_environment(workdir.parents[1]),
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     log = workdir / "logs" / "blob" / "repulsive_data.log"
@@ -358,7 +369,7 @@ def test_a_killed_run_resumes_by_running_the_same_command_again(workdir):
     times = result_times(workdir)
     target.unlink()
     start = time.time()
-    command = snakemake_command(workdir, "--", "results/sticky/lemma21.npz")
+    command = [sys.executable, "-m", "snakemake", *snakemake_arguments(workdir, "--", "results/sticky/lemma21.npz")]
     process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                start_new_session=True, env=checkout_environment(workdir.parents[1]))
     log = workdir / "logs" / "sticky" / "lemma21_data.log"
@@ -398,11 +409,9 @@ def test_a_damaged_result_is_rebuilt_and_verify_refuses_until_it_is(workdir):
         handle.truncate(1000)
     os.utime(result, ns=times[result])
     table.unlink()  # as a run that failed on the damaged file leaves it
-    verify = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml"],
-                            cwd=workdir.parents[1], env=checkout_environment(workdir.parents[1]),
-                            capture_output=True, text=True, timeout=600)
-    output = verify.stdout + verify.stderr
-    assert verify.returncode != 0 and "0 differences" not in output
+    refused = verify(workdir)
+    output = refused.stdout + refused.stderr
+    assert refused.returncode != 0 and "0 differences" not in output
     assert "results/sticky/claims.csv is missing" in output and "results/sticky/lemma21.npz is damaged" in output
     plan = snakemake(workdir, "--dry-run", "--", "results/sticky/claims.csv")
     assert "results/sticky/lemma21.npz is damaged" in plan.stderr
@@ -430,9 +439,7 @@ def test_changing_one_parameter_reruns_only_its_dependents(workdir, tmp_path):
 def test_verify_works_as_the_readme_writes_it(workdir):
     """`snakemake verify`, with no --cores (the default profile gives them), passes when every verdict
     is the expected one and prints the paper claims."""
-    result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml"],
-                            cwd=workdir.parents[1], env=checkout_environment(workdir.parents[1]),
-                            capture_output=True, text=True, timeout=600)
+    result = verify(workdir)
     assert result.returncode == 0, (result.stdout + result.stderr)[-3000:]
     assert not (workdir / "runs").exists()
     assert "Paper claims reproduced:" in result.stdout and "0 differences from the expected verdicts" in result.stdout
@@ -453,9 +460,7 @@ def changed_verdicts(tmp_path):
 
 def test_verify_fails_when_a_verdict_changes(workdir, tmp_path):
     expected, changed_id = changed_verdicts(tmp_path)
-    result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--configfile", "config/quick.yaml",
-                             "--config", f"verdicts={expected}"], cwd=workdir.parents[1],
-                            env=checkout_environment(workdir.parents[1]), capture_output=True, text=True, timeout=600)
+    result = verify(workdir, "--config", f"verdicts={expected}")
     assert result.returncode != 0
     assert f"CHANGED {changed_id}: expected fail" in result.stdout + result.stderr
 
@@ -482,9 +487,7 @@ def test_a_configuration_of_ones_own_is_compared_with_nothing(workdir, tmp_path)
     override = tmp_path / "mine.yaml"
     override.write_text("sticky:\n  lemma21:\n    n_values: [16, 64, 256, 1024, 2048]\n")
     # mtime triggers only: the quick run's table stands in for the overlay's, which is not recomputed here
-    result = subprocess.run([sys.executable, "-m", "snakemake", "verify", "--rerun-triggers", "mtime", "--configfile",
-                             "config/quick.yaml", str(override)], cwd=workdir.parents[1],
-                            env=checkout_environment(workdir.parents[1]), capture_output=True, text=True, timeout=600)
+    result = verify(workdir, "--rerun-triggers", "mtime", configs=[override])
     assert result.returncode == 0, (result.stdout + result.stderr)[-2000:]
     assert "Nothing compared" in result.stdout and "sticky.lemma21.n_values" in result.stdout
 
@@ -518,9 +521,8 @@ def test_a_configuration_file_is_laid_over_the_full_one(tmp_path):
     del quick["sticky"]
     path = tmp_path / "overlay.yaml"
     path.write_text(yaml.safe_dump(quick))
-    result = subprocess.run([sys.executable, "-m", "snakemake", "-s", str(ROOT / "Snakefile"), "--directory",
-                             str(tmp_path), "--dry-run", "--configfile", str(path)], capture_output=True, text=True,
-                            timeout=300)
+    arguments = ["-s", ROOT / "Snakefile", "--directory", tmp_path, "--dry-run", "--configfile", path]
+    result = forked_snakemake.run(arguments, timeout=300)
     assert result.returncode == 0, result.stdout + result.stderr
     assert "data_sticky_cost" in planned_rules(result)
 
