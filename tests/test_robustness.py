@@ -106,6 +106,22 @@ def test_every_configured_variant_changes_something_a_machine_could():
         assert set(variant) <= {"env", "nudge", "load"} and variant, name
 
 
+def test_a_variants_environment_is_exported_for_a_shell(tmp_path):
+    """The export lines a shell evaluates to run the tests under a variant: its variables, quoted, in a shell that
+    sees them as the variant's run does; unknown variants refused naming the variants there are."""
+    import subprocess
+
+    lines = robustness.environment_exports("combined", ROOT / "config" / "config.yaml")
+    expected = robustness.variant_environment(CONFIG["robustness"]["variants"]["combined"], {})
+    script = tmp_path / "show.sh"
+    script.write_text(lines + "\n" + "".join(f'printf "%s\\n" "${key}"\n' for key in expected))
+    shown = subprocess.run(["sh", str(script)], capture_output=True, text=True, check=True).stdout.splitlines()
+    assert shown == list(expected.values()) and expected["NUMBA_NUM_THREADS"] == "1"
+    assert robustness.environment_exports("nudged-1", ROOT / "config" / "config.yaml") == ""  # a nudge is no variable
+    with pytest.raises(ValueError, match="variant must be one of threads-1"):
+        robustness.environment_exports("two-threads", ROOT / "config" / "config.yaml")
+
+
 # The configuration whose verdicts apply
 
 

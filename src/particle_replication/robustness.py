@@ -26,6 +26,7 @@ import contextlib
 import json
 import math
 import os
+import shlex
 import subprocess
 import sys
 import time
@@ -74,6 +75,18 @@ def variant_environment(variant: dict, base: dict | None = None) -> dict:
             value = " ".join(name for name in value.split() if name in known)
         environment[key] = value
     return environment
+
+
+def environment_exports(name: str, config_path="config/config.yaml") -> str:
+    """Shell lines exporting the environment of the variant ``name`` of the configuration at ``config_path``
+    (:func:`variant_environment`), so that a shell runs anything under it, the tests included:
+    ``eval "$(python -m particle_replication.robustness environment combined)"``. A variant's nudge and load are
+    the pipeline's, not an environment's: they are left out."""
+    variants = read_yaml(config_path)["robustness"]["variants"]
+    if not isinstance(name, str) or name not in variants:
+        raise ValueError(f"variant must be one of {', '.join(variants)}, got {name!r}")
+    environment = variant_environment(variants[name], {})
+    return "\n".join(f"export {key}={shlex.quote(value)}" for key, value in environment.items())
 
 
 def variant_configuration(config: dict, variant: dict) -> dict:
@@ -245,7 +258,13 @@ def main(argv=None) -> int:
     recorder = sub.add_parser("record", help="copy a robustness run's spreads into the committed spreads file")
     recorder.add_argument("source")
     recorder.add_argument("--into", default="config/spreads.yaml")
+    exports = sub.add_parser("environment", help="print shell lines exporting a variant's environment variables")
+    exports.add_argument("variant")
+    exports.add_argument("--config", default="config/config.yaml")
     args = parser.parse_args(argv)
+    if args.command == "environment":
+        print(environment_exports(args.variant, args.config))
+        return 0
     if args.command == "record":
         record(args.source, args.into)
         return 0
