@@ -74,6 +74,11 @@ def snakemake_arguments(workdir, *args, configs=()):
             *map(str, configs), *args]
 
 
+def snakemake_command(workdir, *args, configs=()):
+    """The command of that run as a process of its own (the tests that signal it)."""
+    return [sys.executable, "-m", "snakemake", *snakemake_arguments(workdir, *args, configs=configs)]
+
+
 def snakemake(workdir, *args, configs=()):
     """A run in ``workdir`` (:func:`snakemake_arguments`) in its repository's environment, its output captured; run
     by a forked Snakemake that has its imports done (tests/forked_snakemake.py)."""
@@ -312,8 +317,7 @@ def test_an_interrupted_run_resumes_without_redoing_finished_work(workdir):
     start = time.time()
     # Ctrl-C's default action restored in the run: pytest started in the background (`pytest &`) ignores SIGINT,
     # and so would the run it starts, which would then finish.
-    command = [sys.executable, "-m", "snakemake", *snakemake_arguments(workdir)]
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+    process = subprocess.Popen(snakemake_command(workdir), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                start_new_session=True, env=checkout_environment(workdir.parents[1]),
                                preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     log = workdir / "logs" / "blob" / "repulsive_data.log"
@@ -369,7 +373,7 @@ def test_a_killed_run_resumes_by_running_the_same_command_again(workdir):
     times = result_times(workdir)
     target.unlink()
     start = time.time()
-    command = [sys.executable, "-m", "snakemake", *snakemake_arguments(workdir, "--", "results/sticky/lemma21.npz")]
+    command = snakemake_command(workdir, "--", "results/sticky/lemma21.npz")
     process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                start_new_session=True, env=checkout_environment(workdir.parents[1]))
     log = workdir / "logs" / "sticky" / "lemma21_data.log"
