@@ -17,6 +17,7 @@ The server is started on first use, one per test process, and ends with it. Wher
 from __future__ import annotations
 
 import atexit
+import contextlib
 import json
 import os
 import select
@@ -24,6 +25,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import time
 import traceback
 from pathlib import Path
 
@@ -54,13 +56,31 @@ def run(args, *, cwd=None, env=None, timeout: float = 900) -> subprocess.Complet
                    "env": dict(os.environ if env is None else env), "stdout": str(stdout), "stderr": str(stderr)}
         server.stdin.write(json.dumps(request) + "\n")
         server.stdin.flush()
-        pid = int(server.stdout.readline())
-        if not select.select([server.stdout], [], [], timeout)[0]:
-            os.killpg(pid, signal.SIGKILL)
-            server.stdout.readline()
+        pid = int(read_line(server))
+        returncode = read_line(server, timeout)
+        if returncode is None:
+            with contextlib.suppress(ProcessLookupError):  # it may have ended meanwhile
+                os.killpg(pid, signal.SIGKILL)
+            read_line(server)
             raise subprocess.TimeoutExpired(command, timeout, stdout.read_text(), stderr.read_text())
-        returncode = int(server.stdout.readline())
+        returncode = int(returncode)
         return subprocess.CompletedProcess(command, returncode, stdout.read_text(), stderr.read_text())
+
+
+def read_line(server, timeout: float | None = None) -> str | None:
+    """The next line the server wrote, or None when none has come within ``timeout`` seconds. Read a byte at a time
+    from the pipe itself: a buffered read could take the next line too, which ``select`` would then never see."""
+    deadline = None if timeout is None else time.monotonic() + timeout
+    line = b""
+    while not line.endswith(b"\n"):
+        left = None if deadline is None else max(0.0, deadline - time.monotonic())
+        if left is not None and not select.select([server.stdout], [], [], left)[0]:
+            return None
+        byte = os.read(server.stdout.fileno(), 1)
+        if not byte:
+            raise RuntimeError(f"the forked Snakemake's server ended (status {server.wait()})")
+        line += byte
+    return line.decode()
 
 
 def _child(request) -> int:

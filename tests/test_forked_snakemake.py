@@ -53,3 +53,18 @@ def test_a_forked_run_past_its_timeout_is_killed(tmp_path):
     # the next run is served: the killed one has been waited for
     assert forked_snakemake.run(["--version"], timeout=120).returncode == 0
     assert not (tmp_path / "done").exists()
+
+
+def test_a_line_already_in_the_pipe_is_not_waited_for():
+    """Two lines the server wrote at once (a run that ended before its id was read): the second is read at once, not
+    after the timeout, which a buffered read of the first would have swallowed from under select."""
+    import time
+
+    writer = subprocess.Popen(["printf", "17\\n0\\n"], stdout=subprocess.PIPE, text=True)
+    writer.wait()
+    started = time.monotonic()
+    assert forked_snakemake.read_line(writer) == "17\n"
+    assert forked_snakemake.read_line(writer, timeout=30) == "0\n"
+    assert time.monotonic() - started < 10
+    with pytest.raises(RuntimeError, match="server ended"):
+        forked_snakemake.read_line(writer)
