@@ -168,6 +168,22 @@ def test_an_abstention_is_no_difference_but_a_changed_verdict_is():
     assert robustness.compare(baseline, {"a": []}) == ["a: MISSING demo.x"]
 
 
+def test_the_report_names_every_change_of_a_variant_and_its_moved_verdicts():
+    """A variant that sets variables and nudges the data (the combined one) is described by both; a moved verdict
+    is counted in its variant's row and listed, and a claim within the margin is listed as fragile."""
+    baseline = [made(1.5, kind="check")]
+    variants = {"combined": [made(0.5, kind="check")], "nudged-1": [made(1.5, kind="check")]}
+    environments = {"combined": {"env": {"NUMBA_NUM_THREADS": "1"}, "nudge": {"ulps": 4, "seed": 3}},
+                    "nudged-1": {"nudge": {"ulps": 4, "seed": 1}}}
+    problems = robustness.compare(baseline, variants)
+    text = robustness.report(variants, environments, problems, robustness.spreads({"run": baseline, **variants}),
+                             10.0, "quick")
+    rows = {line.split(" | ")[0].lstrip("| "): line for line in text.splitlines() if line.startswith("| ")}
+    assert "NUMBA_NUM_THREADS=1; initial data nudged by up to 4 ulps (seed 3)" in rows["combined"]
+    assert rows["combined"].endswith("| 1 | 0 |") and rows["nudged-1"].endswith("| 0 | 0 |")
+    assert "1 verdicts differ" in text and "- combined: CHANGED demo.x" in text and "| `demo.x` | check |" in text
+
+
 def test_margins_in_the_table_and_the_fragile_list():
     spreads = {"demo.x": c.Spread(0.1, 0.1)}
     near, far = made(1.5), made(3.0, name="demo.y")

@@ -201,11 +201,12 @@ def report(variants: dict, environments: dict, problems: list[str], spread: dict
              "abstained |", "|---|---|---|---|---|---|---|"]
     for name, claims in variants.items():
         info = environments.get(name, {})
-        change = "; ".join(f"{k}={v}" for k, v in (info.get("env") or {}).items())
+        changes = [f"{k}={v}" for k, v in (info.get("env") or {}).items()]  # every change the variant makes
         if info.get("nudge"):
-            change = f"initial data nudged by up to {info['nudge']['ulps']} ulps (seed {info['nudge']['seed']})"
+            changes.append(f"initial data nudged by up to {info['nudge']['ulps']} ulps (seed {info['nudge']['seed']})")
         if info.get("load"):
-            change = "a spinning process on every core"
+            changes.append("a spinning process on every core")
+        change = "; ".join(changes)
         effective = info.get("effective", {})
         changed = sum(problem.startswith(f"{name}: ") for problem in problems)
         lines.append(f"| {name} | {change} | {effective.get('blas', '?')} | {effective.get('numpy_dispatch', '?')} | "
