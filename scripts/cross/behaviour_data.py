@@ -2,7 +2,7 @@
 past it, the LTP method as the density blows up."""
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import DOP853
 
 from particle_methods.blob.solver import CollisionError
 from particle_methods.cross import methods
@@ -19,29 +19,29 @@ def first_collision(x, v):
 
 def stall(data, h, window, evaluations):
     """Integrate the particle method's ODE past its first collision without stopping there (DOP853
-    at the blob package's tolerances, at most ``evaluations`` right-hand sides): (collision time,
-    right-hand sides before it, right-hand sides after it, time reached)."""
+    at the blob package's tolerances), step by accepted step, until the end of the window or until
+    ``evaluations`` right-hand sides are spent (the last step may spend up to one step's stages more):
+    (collision time, right-hand sides until the first accepted step that reaches the collision, right-hand
+    sides after it, time the accepted steps reached). The time reached is that of the accepted steps: the
+    stages of a rejected step look ahead up to the end of the window, where the solver never got."""
     x, _, masses = methods.grid_particles(data, h)
     collision = first_collision(x, methods.weighted_velocities(masses))
-    calls, before, reached = 0, 0, 0.0
-
-    class Stalled(Exception):
-        pass
+    calls = 0
 
     def rhs(t, y):
-        nonlocal calls, before, reached
-        if calls >= evaluations:
-            raise Stalled
+        nonlocal calls
         calls += 1
-        before += t < collision
-        reached = max(reached, t)
         return methods.particle_velocities(y, masses)
 
-    try:
-        solve_ivp(rhs, (0.0, collision + window), x, method="DOP853", rtol=1e-12, atol=1e-14)
-    except Stalled:
-        pass
-    return collision, before, calls - before, reached
+    solver = DOP853(rhs, 0.0, x, collision + window, rtol=1e-12, atol=1e-14)
+    before = None
+    while solver.status == "running" and calls < evaluations:
+        solver.step()
+        if before is None and solver.t >= collision:
+            before = calls
+    if before is None:  # never reached the collision within the budget
+        before = calls
+    return collision, before, calls - before, solver.t
 
 
 def densest_particle(data, h, dt, t):

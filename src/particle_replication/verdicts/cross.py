@@ -349,7 +349,7 @@ def behaviour_claims(b, p):
     """The particle method against the weighted SPD, its first collision, the stall of the ODE solver
     past it, the LTP refusal before the blow-up and the blob clusters after it."""
     # Past the collision the solver may stop at its budget before the end of the window: rates use
-    # the time it reached.
+    # the time its accepted steps reached.
     rates = (b["stall_after"] / np.maximum(b["stall_reached"] - b["stall_collision"], 1e-300)) / (
         b["stall_before"] / b["stall_collision"]
     )
@@ -370,9 +370,9 @@ def behaviour_claims(b, p):
             measured=float(np.max(np.abs(b["collision_measured"] - b["collision_predicted"])))),
         claim(
             c.at_least, "particle.stall", kind="check", source=SOURCE_IDENTITY, figure="cross",
-            text="without the collision event DOP853 chatters past the collision (the "
-                 "velocities jump as particles cross and recross): right-hand sides per unit time after it over before "
-                 "it, smallest over data",
+            text="without the collision event DOP853 chatters past the collision (the velocities jump as "
+                 "particles cross and recross): right-hand sides per unit of the time its accepted steps advance, "
+                 "after it over before it, smallest over data",
             tolerance=rules["stall_rate_min"], measured=float(np.min(rates))),
         claim(
             c.at_most, "ltp.refusal", kind="derived",
