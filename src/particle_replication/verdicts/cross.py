@@ -371,9 +371,12 @@ def behaviour_claims(b, p):
         claim(
             c.at_least, "particle.stall", kind="check", source=SOURCE_IDENTITY, figure="cross",
             text="without the collision event DOP853 chatters past the collision (the velocities jump as "
-                 "particles cross and recross): right-hand sides per unit of the time its accepted steps advance, "
-                 "after it over before it, smallest over data",
-            tolerance=rules["stall_rate_min"], measured=float(np.min(rates))),
+                 "particles cross and recross): decades (log10) of the ratio of its right-hand sides per unit of the "
+                 "time its accepted steps advance, after it over before it, smallest over data; at least "
+                 f"log10({rules['stall_rate_min']:g})",
+            # decades: the steps past the collision shrink to a scale that rounding sets, so the ratio moves by a
+            # factor (0.97e9 over the quick run's robustness variants, at 2.5e9), not by an amount
+            tolerance=float(np.log10(rules["stall_rate_min"])), measured=float(np.log10(np.min(rates)))),
         claim(
             c.at_most, "ltp.refusal", kind="derived",
             source="LTP paper (2.31)-(2.32); blob paper section 4.1 (blow-up)", figure="cross",
